@@ -1,0 +1,103 @@
+#include "cli/Commands.h"
+
+#include "base/Paths.h"
+#include "build/RigBuilder.h"
+#include "io/GltfExport.h"
+#include "io/GuideFile.h"
+#include "io/RigDump.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace rs::cli {
+
+namespace {
+
+void print(const Diagnostics& diagnostics)
+{
+    for (const auto& d : diagnostics)
+        std::cerr << d.format() << '\n';
+}
+
+} // namespace
+
+std::string usage()
+{
+    return "usage: rigsmith-cli build GUIDE [--dump RIG.yml] [-o OUT.glb|OUT.gltf]\n"
+           "       rigsmith-cli check-templates [DIR...]\n";
+}
+
+int runBuild(const std::vector<std::string>& args)
+{
+    std::string guidePath, dumpPath, outPath;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if ((a == "--dump" || a == "-o") && i + 1 < args.size())
+            (a == "--dump" ? dumpPath : outPath) = args[++i];
+        else if (!a.empty() && a[0] != '-' && guidePath.empty())
+            guidePath = a;
+        else {
+            std::cerr << "rigsmith-cli: unexpected argument '" << a << "'\n" << usage();
+            return 2;
+        }
+    }
+    if (guidePath.empty()) {
+        std::cerr << usage();
+        return 2;
+    }
+    Diagnostics templateDiagnostics;
+    auto templates = templates::TemplateRegistry::loadDefault(templateDiagnostics);
+    print(templateDiagnostics);
+    auto guide = io::readGuideFile(guidePath);
+    print(guide.diagnostics());
+    if (!guide)
+        return 1;
+    const auto start = std::chrono::steady_clock::now();
+    const model::Rig rig = build::buildRig(*guide, *templates);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    print(rig.diagnostics);
+    std::cerr << "built " << rig.nodes.size() << " nodes (" << rig.count(model::RigNodeKind::Controller)
+              << " controllers, " << rig.count(model::RigNodeKind::Joint) << " skin joints) in " << ms << " ms\n";
+    int status = hasErrors(rig.diagnostics) ? 1 : 0;
+    if (!dumpPath.empty()) {
+        const std::string text = io::writeRigDump(rig);
+        if (dumpPath == "-")
+            std::cout << text;
+        else if (auto d = io::writeFileAtomically(dumpPath, text); !d.empty()) {
+            print(d);
+            status = 1;
+        }
+    }
+    if (!outPath.empty()) {
+        if (auto d = io::exportGltf(rig, outPath); !d.empty()) {
+            print(d);
+            status = 1;
+        } else {
+            std::cerr << "exported " << outPath << '\n';
+        }
+    }
+    return status;
+}
+
+int runCheckTemplates(const std::vector<std::string>& args)
+{
+    std::vector<std::string> folders = args.empty() ? templateSearchPath() : args;
+    templates::TemplateRegistry registry;
+    const Diagnostics diagnostics = registry.scan(folders, iconsDirectory());
+    for (const auto* m : registry.all()) {
+        std::cout << m->id << ": structure [";
+        for (std::size_t i = 0; i < m->structure.size(); ++i)
+            std::cout << (i ? ", " : "") << m->structure[i].first;
+        std::cout << "] hooks [";
+        for (std::size_t i = 0; i < m->hooks.size(); ++i)
+            std::cout << (i ? ", " : "") << m->hooks[i].label;
+        std::cout << "] opts " << m->opts.size() << '\n';
+    }
+    std::cout << registry.shapes().size() << " shapes\n";
+    for (const auto& d : diagnostics)
+        std::cout << d.format() << '\n';
+    return hasErrors(diagnostics) ? 1 : 0;
+}
+
+} // namespace rs::cli

@@ -1,0 +1,13 @@
+#pragma once
+// rigsmith-cli sub-commands. Each returns the process exit code: 0 success,
+// 1 the input had errors, 2 bad usage.
+#include <string>
+#include <vector>
+
+namespace rs::cli {
+
+int runBuild(const std::vector<std::string>& args);
+int runCheckTemplates(const std::vector<std::string>& args);
+std::string usage();
+
+} // namespace rs::cli

@@ -1,0 +1,23 @@
+// rigsmith-cli: builds and exports rigs without a display (pipelines, CI).
+#include "cli/Commands.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+        std::cout << rs::cli::usage();
+        return args.empty() ? 2 : 0;
+    }
+    const std::string command = args.front();
+    args.erase(args.begin());
+    if (command == "build")
+        return rs::cli::runBuild(args);
+    if (command == "check-templates")
+        return rs::cli::runCheckTemplates(args);
+    std::cerr << "rigsmith-cli: unknown command '" << command << "'\n" << rs::cli::usage();
+    return 2;
+}

@@ -1,0 +1,36 @@
+#pragma once
+// A compiler-style message about an input: "file:line:col: error: message".
+// Lines and columns are 1-based; 0 means "unknown" and is left out of the text.
+#include <string>
+#include <vector>
+
+namespace rs {
+
+enum class Severity { Note, Warning, Error };
+
+struct SourceLocation {
+    std::string file;
+    int line = 0;
+    int column = 0;
+};
+
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    SourceLocation where;
+    std::string message;
+    // What the message is about inside a document (an instance id, a node id...),
+    // so a log view can select the cause. Empty when the cause is a file position.
+    std::string subject;
+
+    std::string format() const;
+};
+
+using Diagnostics = std::vector<Diagnostic>;
+
+Diagnostic makeError(SourceLocation where, std::string message);
+Diagnostic makeWarning(SourceLocation where, std::string message);
+bool hasErrors(const Diagnostics& diagnostics);
+std::string formatAll(const Diagnostics& diagnostics);
+const char* severityName(Severity severity);
+
+} // namespace rs

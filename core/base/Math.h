@@ -1,0 +1,34 @@
+#pragma once
+// Core maths types. Core works in double precision, metres, Y-up, right-handed;
+// angles in the document are degrees (rigger-facing), radians everywhere else.
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace rs {
+
+using Vec3 = glm::dvec3;
+using Vec4 = glm::dvec4;
+using Mat4 = glm::dmat4;
+using Quat = glm::dquat;
+
+// Local transform as a rigger edits it: translate, then rotate (Euler XYZ order,
+// degrees: X applied first), then scale. Matrix = T * Rz * Ry * Rx * S.
+struct Transform {
+    Vec3 translate{0.0};
+    Vec3 rotateDegrees{0.0};
+    Vec3 scale{1.0};
+
+    Mat4 matrix() const;
+    bool operator==(const Transform&) const = default;
+};
+
+Mat4 translationMatrix(const Vec3& t);
+Vec3 translationOf(const Mat4& m);
+// Rotation about the given unit axis by angleRadians.
+Mat4 rotationMatrix(const Vec3& axis, double angleRadians);
+// Splits an affine matrix into translation, rotation and (positive) scale.
+void decompose(const Mat4& m, Vec3& translate, Quat& rotate, Vec3& scale);
+// Largest absolute difference between two matrices' elements.
+double maxAbsDifference(const Mat4& a, const Mat4& b);
+
+} // namespace rs

@@ -1,0 +1,127 @@
+#include "build/BuildContext.h"
+
+#include "build/RigAssembly.h"
+#include "templates/Structure.h"
+
+#include <cctype>
+
+namespace rs::build {
+
+BuildContext::BuildContext(RigAssembly& assembly, const templates::TemplateManifest& manifest,
+                           const model::TemplateInstance& instance, std::map<std::string, Value> options)
+    : m_assembly(assembly), m_manifest(manifest), m_instance(instance), m_options(std::move(options))
+{
+}
+
+const model::GuideDocument& BuildContext::guide() const { return m_assembly.guide; }
+
+const Value& BuildContext::option(const std::string& name) const
+{
+    static const Value kMissing = false;
+    auto it = m_options.find(name);
+    if (it == m_options.end()) {
+        error("builder asked for option '" + name + "' that the manifest does not declare", name);
+        return kMissing;
+    }
+    return it->second;
+}
+
+bool BuildContext::optionBool(const std::string& name) const
+{
+    const Value& v = option(name);
+    return std::holds_alternative<bool>(v) && std::get<bool>(v);
+}
+
+long long BuildContext::optionInt(const std::string& name) const
+{
+    const Value& v = option(name);
+    if (auto* i = std::get_if<long long>(&v)) return *i;
+    if (auto* d = std::get_if<double>(&v)) return static_cast<long long>(*d);
+    return 0;
+}
+
+double BuildContext::optionFloat(const std::string& name) const
+{
+    const Value& v = option(name);
+    if (auto* d = std::get_if<double>(&v)) return *d;
+    if (auto* i = std::get_if<long long>(&v)) return static_cast<double>(*i);
+    return 0.0;
+}
+
+std::string BuildContext::optionString(const std::string& name) const
+{
+    return formatValue(option(name));
+}
+
+std::optional<std::vector<model::JointId>> BuildContext::structure(const std::string& tag) const
+{
+    std::string message;
+    auto joints = templates::StructureResolver(m_manifest, m_instance).tag(tag, &message);
+    if (!joints)
+        error("structure '" + tag + "': " + message);
+    else if (joints->empty())
+        error("structure '" + tag + "' resolves to no guide joint");
+    if (joints && joints->empty())
+        return std::nullopt;
+    return joints;
+}
+
+Mat4 BuildContext::guideWorldMatrix(model::JointId joint) const
+{
+    return m_assembly.guide.jointWorldMatrix(joint);
+}
+
+std::string BuildContext::name(const std::string& token, std::optional<int> index) const
+{
+    std::string out = m_instance.name;
+    const std::string core = token.empty() ? std::string() : m_manifest.defaultName(token);
+    if (!core.empty() && core != out)
+        out += "_" + core;
+    if (index) {
+        if (std::isdigit(static_cast<unsigned char>(out.back())))
+            out += "_";
+        out += std::to_string(*index);
+    }
+    return out;
+}
+
+model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std::string& tag, const std::string& name,
+                                             model::RigNodeIndex parent, const Mat4& worldMatrix)
+{
+    model::RigNode node;
+    node.id = m_instance.name + "::" + tag;
+    node.name = name;
+    node.kind = kind;
+    node.parent = parent == model::kNoNode ? m_hookNode : parent;
+    node.owner = m_instance.id;
+    node.worldMatrix = worldMatrix;
+    if (m_assembly.rig.find(node.id)) {
+        error("rig node id '" + node.id + "' is created twice");
+        return *m_assembly.rig.find(node.id);
+    }
+    return m_assembly.addNode(std::move(node));
+}
+
+void BuildContext::setHook(model::JointId joint, model::RigNodeIndex node)
+{
+    if (!m_instance.joint(joint)) {
+        error("hook for joint " + std::to_string(joint) + " which is not a joint of this instance");
+        return;
+    }
+    m_assembly.hooks[joint] = node;
+}
+
+void BuildContext::report(Severity severity, const std::string& message, const std::string& option) const
+{
+    std::string text = message;
+    if (!option.empty())
+        text += " (option '" + option + "')";
+    m_assembly.report(severity, &m_instance, text);
+    if (severity == Severity::Error)
+        m_failed = true;
+}
+
+void BuildContext::error(const std::string& message, const std::string& option) const { report(Severity::Error, message, option); }
+void BuildContext::warning(const std::string& message, const std::string& option) const { report(Severity::Warning, message, option); }
+
+} // namespace rs::build

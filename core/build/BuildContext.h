@@ -1,0 +1,65 @@
+#pragma once
+// What one template instance's builder sees of the build: its manifest, guide,
+// typed options, structure lookups, naming, and the calls that create rig nodes
+// and register hooks. Diagnostics name the instance (and option) they are about.
+#include "model/Rig.h"
+#include "templates/Manifest.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::build {
+
+class RigAssembly;
+
+class BuildContext {
+public:
+    BuildContext(RigAssembly& assembly, const templates::TemplateManifest& manifest,
+                 const model::TemplateInstance& instance, std::map<std::string, Value> options);
+
+    const templates::TemplateManifest& manifest() const { return m_manifest; }
+    const model::TemplateInstance& instance() const { return m_instance; }
+    const model::GuideDocument& guide() const;
+
+    // Options and guide parameters with defaults merged, typed as the manifest says.
+    const Value& option(const std::string& name) const;
+    bool optionBool(const std::string& name) const;
+    long long optionInt(const std::string& name) const;
+    double optionFloat(const std::string& name) const;
+    std::string optionString(const std::string& name) const;
+
+    // Joints of a structure tag; reports an error and returns nullopt when it fails.
+    std::optional<std::vector<model::JointId>> structure(const std::string& tag) const;
+    Mat4 guideWorldMatrix(model::JointId joint) const;
+
+    // The rig node this instance attaches to (its parent's hook, else the rig root).
+    model::RigNodeIndex hookNode() const { return m_hookNode; }
+    void setHookNode(model::RigNodeIndex node) { m_hookNode = node; }
+
+    // Naming engine: core name of a token ("spine", "spine_cog"), optionally indexed.
+    std::string name(const std::string& token = {}, std::optional<int> index = std::nullopt) const;
+
+    // Creates a node "<instance>::<tag>" at a rest world matrix under `parent`.
+    model::RigNodeIndex createNode(model::RigNodeKind kind, const std::string& tag, const std::string& name,
+                                   model::RigNodeIndex parent, const Mat4& worldMatrix);
+    // Children templates hanging under `joint` attach to `node`.
+    void setHook(model::JointId joint, model::RigNodeIndex node);
+
+    void error(const std::string& message, const std::string& option = {}) const;
+    void warning(const std::string& message, const std::string& option = {}) const;
+    bool failed() const { return m_failed; }
+
+private:
+    void report(Severity severity, const std::string& message, const std::string& option) const;
+
+    RigAssembly& m_assembly;
+    const templates::TemplateManifest& m_manifest;
+    const model::TemplateInstance& m_instance;
+    std::map<std::string, Value> m_options;
+    model::RigNodeIndex m_hookNode = model::kNoNode;
+    mutable bool m_failed = false;
+};
+
+} // namespace rs::build

@@ -1,0 +1,47 @@
+#include "build/TemplateBuilder.h"
+
+#include "build/builders/Builders.h"
+
+namespace rs::build {
+
+namespace {
+constexpr const char* kFallbackBuilder = "core.joints";
+}
+
+void BuilderRegistry::add(const std::string& templateId, std::unique_ptr<TemplateBuilder> builder)
+{
+    m_builders[templateId] = std::move(builder);
+}
+
+const TemplateBuilder* BuilderRegistry::find(const std::string& templateId) const
+{
+    auto it = m_builders.find(templateId);
+    return it == m_builders.end() ? nullptr : it->second.get();
+}
+
+const TemplateBuilder& BuilderRegistry::resolve(const templates::TemplateManifest& manifest, Diagnostics& diagnostics) const
+{
+    if (const TemplateBuilder* own = find(manifest.id))
+        return *own;
+    if (!manifest.base.empty()) {
+        if (const TemplateBuilder* base = find(manifest.base))
+            return *base;
+        diagnostics.push_back(makeWarning({manifest.file, 0, 0}, "base '" + manifest.base + "' has no builder; using the generic joint-chain builder"));
+    } else {
+        diagnostics.push_back(makeWarning({manifest.file, 0, 0}, "no builder for " + manifest.id + "; using the generic joint-chain builder"));
+    }
+    return *find(kFallbackBuilder);
+}
+
+const BuilderRegistry& BuilderRegistry::builtin()
+{
+    static const BuilderRegistry registry = [] {
+        BuilderRegistry r;
+        r.add("world.character", makeWorldBuilder());
+        r.add(kFallbackBuilder, makeJointChainBuilder());
+        return r;
+    }();
+    return registry;
+}
+
+} // namespace rs::build

@@ -1,0 +1,38 @@
+#pragma once
+// Internal to rs::build: the rig under construction plus the lookup tables the
+// stages share (physical hooks per guide joint, virtual hooks per domain).
+#include "model/Rig.h"
+#include "templates/TemplateRegistry.h"
+
+#include <map>
+#include <string>
+
+namespace rs::build {
+
+struct InstanceRecord {
+    const templates::TemplateManifest* manifest = nullptr;
+    const model::TemplateInstance* instance = nullptr;
+    std::map<std::string, Value> options;
+    bool built = false;
+};
+
+struct RigAssembly {
+    const model::GuideDocument& guide;
+    const templates::TemplateRegistry& templates;
+    model::Rig rig;
+    std::map<model::JointId, model::RigNodeIndex> hooks;                          // physical
+    std::map<std::string, std::map<model::JointId, model::RigNodeIndex>> virtualHooks; // domain -> joint -> node
+    std::vector<InstanceRecord> records;                                            // document order
+
+    model::RigNodeIndex addNode(model::RigNode node);
+    // The hook node a child hanging under `joint` attaches to, walking up the guide.
+    model::RigNodeIndex physicalHookFor(model::JointId joint) const;
+    model::RigNodeIndex virtualHookFor(const std::string& domain, model::JointId joint) const;
+    void report(Severity severity, const model::TemplateInstance* instance, const std::string& message);
+};
+
+// Stages run by buildRig after generation.
+void applyShapes(RigAssembly& assembly);
+void buildVirtualHierarchy(RigAssembly& assembly);
+
+} // namespace rs::build

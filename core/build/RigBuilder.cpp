@@ -1,0 +1,293 @@
+#include "build/RigBuilder.h"
+
+#include "build/RigAssembly.h"
+#include "templates/Structure.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace rs::build {
+
+using model::JointId;
+using model::kNoNode;
+using model::RigNodeIndex;
+
+model::RigNodeIndex RigAssembly::addNode(model::RigNode node)
+{
+    const auto index = static_cast<RigNodeIndex>(rig.nodes.size());
+    rig.byId[node.id] = index;
+    rig.nodes.push_back(std::move(node));
+    return index;
+}
+
+RigNodeIndex RigAssembly::physicalHookFor(JointId joint) const
+{
+    for (std::size_t guard = 0; joint != model::kNoId && guard < 100000; ++guard) {
+        if (auto it = hooks.find(joint); it != hooks.end())
+            return it->second;
+        const model::TemplateInstance* owner = guide.ownerOf(joint);
+        if (!owner)
+            break;
+        const model::GuideJoint* j = owner->joint(joint);
+        joint = j->parent != model::kNoId ? j->parent : owner->parentJoint;
+    }
+    return 0; // the rig root
+}
+
+RigNodeIndex RigAssembly::virtualHookFor(const std::string& domain, JointId joint) const
+{
+    auto table = virtualHooks.find(domain);
+    if (table == virtualHooks.end())
+        return kNoNode;
+    for (std::size_t guard = 0; joint != model::kNoId && guard < 100000; ++guard) {
+        if (auto it = table->second.find(joint); it != table->second.end())
+            return it->second;
+        const model::TemplateInstance* owner = guide.ownerOf(joint);
+        if (!owner)
+            break;
+        const model::GuideJoint* j = owner->joint(joint);
+        joint = j->parent != model::kNoId ? j->parent : owner->parentJoint;
+    }
+    return kNoNode;
+}
+
+void RigAssembly::report(Severity severity, const model::TemplateInstance* instance, const std::string& message)
+{
+    Diagnostic d;
+    d.severity = severity;
+    if (instance) {
+        d.message = "instance '" + instance->name + "' (" + instance->templateId + "): " + message;
+        d.subject = instance->name;
+    } else {
+        d.message = message;
+    }
+    rig.diagnostics.push_back(std::move(d));
+}
+
+namespace {
+
+std::optional<Value> coerce(const Value& given, const Value& defaultValue)
+{
+    if (typeOf(given) == typeOf(defaultValue))
+        return given;
+    if (auto* i = std::get_if<long long>(&given); i && std::holds_alternative<double>(defaultValue))
+        return Value(static_cast<double>(*i));
+    if (std::holds_alternative<std::string>(defaultValue))
+        return Value(formatValue(given)); // e.g. an enum label written as a number
+    return std::nullopt;
+}
+
+void clampToRange(const templates::Parameter& p, Value& v)
+{
+    if (auto* i = std::get_if<long long>(&v)) {
+        if (p.min) *i = std::max(*i, static_cast<long long>(*p.min));
+        if (p.max) *i = std::min(*i, static_cast<long long>(*p.max));
+    } else if (auto* d = std::get_if<double>(&v)) {
+        if (p.min) *d = std::max(*d, *p.min);
+        if (p.max) *d = std::min(*d, *p.max);
+    }
+}
+
+void resolveList(const std::vector<templates::Parameter>& params, const model::TemplateInstance& instance,
+                 std::map<std::string, Value>& out, Diagnostics& diagnostics)
+{
+    for (const templates::Parameter& p : params) {
+        Value v = p.value;
+        if (auto it = instance.options.find(p.name); it != instance.options.end()) {
+            if (auto c = coerce(it->second, p.value)) {
+                Value clamped = *c;
+                clampToRange(p, clamped);
+                if (clamped != *c)
+                    diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + p.name + "' = " +
+                                                              formatValue(*c) + " is out of range, using " + formatValue(clamped)));
+                v = clamped;
+                if (p.isEnum() && std::none_of(p.enumLabels.begin(), p.enumLabels.end(),
+                                               [&](auto& e) { return e.second == formatValue(v); })) {
+                    diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + p.name + "' = '" +
+                                                              formatValue(v) + "' is not one of its labels, using the default"));
+                    v = p.value;
+                }
+            } else {
+                diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + p.name + "' expects " +
+                                                          typeName(typeOf(p.value)) + ", got '" + formatValue(it->second) +
+                                                          "'; using the default"));
+            }
+        }
+        out[p.name] = v;
+    }
+}
+
+// Instances come parents-first in the document; this keeps that order explicit.
+std::vector<const model::TemplateInstance*> rootToLeaf(const model::GuideDocument& guide)
+{
+    std::vector<const model::TemplateInstance*> order;
+    std::set<model::InstanceId> placed;
+    for (const auto& i : guide.instances())
+        if (i.parent == model::kNoId)
+            for (model::InstanceId id : guide.subtree(i.id))
+                if (placed.insert(id).second)
+                    order.push_back(guide.instance(id));
+    return order;
+}
+
+void computeLocalMatrices(model::Rig& rig)
+{
+    for (auto& node : rig.nodes)
+        node.localMatrix = node.parent == kNoNode ? node.worldMatrix
+                                                  : glm::inverse(rig.nodes[node.parent].worldMatrix) * node.worldMatrix;
+}
+
+void checkNames(RigAssembly& a)
+{
+    std::map<std::string, std::vector<std::string>> ids;
+    for (const auto& n : a.rig.nodes)
+        ids[n.name].push_back(n.id);
+    for (const auto& [name, owners] : ids)
+        if (owners.size() > 1) {
+            std::string list;
+            for (const auto& id : owners)
+                list += (list.empty() ? "" : ", ") + id;
+            a.report(Severity::Error, nullptr, "name clash: '" + name + "' is used by " + list);
+        }
+}
+
+} // namespace
+
+std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& manifest,
+                                            const model::TemplateInstance& instance, Diagnostics& diagnostics)
+{
+    std::map<std::string, Value> out;
+    resolveList(manifest.guides, instance, out, diagnostics);
+    resolveList(manifest.opts, instance, out, diagnostics);
+    for (const auto& [name, value] : instance.options)
+        if (!out.count(name))
+            diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + name +
+                                                      "' is not declared by " + manifest.id + " (ignored)"));
+    return out;
+}
+
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders)
+{
+    RigAssembly a{guide, templates, {}, {}, {}, {}};
+    model::RigNode root;
+    root.id = "::rig";
+    root.name = guide.name.empty() ? "rig" : guide.name;
+    a.addNode(root);
+
+    // Stage 1: gather. Nothing is created; every instance is resolved and checked.
+    std::vector<std::pair<InstanceRecord, const TemplateBuilder*>> plan;
+    for (const model::TemplateInstance* instance : rootToLeaf(guide)) {
+        InstanceRecord record;
+        record.instance = instance;
+        record.manifest = templates.find(instance->templateId);
+        if (!record.manifest) {
+            a.report(Severity::Error, instance, "unknown template '" + instance->templateId +
+                                                    "'; the instance is skipped and its children attach above it");
+            continue;
+        }
+        Diagnostics optionDiagnostics;
+        record.options = resolveOptions(*record.manifest, *instance, optionDiagnostics);
+        for (auto& d : optionDiagnostics) {
+            d.subject = instance->name;
+            a.rig.diagnostics.push_back(d);
+        }
+        Diagnostics builderDiagnostics;
+        const TemplateBuilder& builder = builders.resolve(*record.manifest, builderDiagnostics);
+        for (const auto& d : builderDiagnostics)
+            a.report(d.severity, instance, d.message);
+        BuildContext check(a, *record.manifest, *instance, record.options);
+        if (!builder.gather(check) || check.failed())
+            continue;
+        plan.emplace_back(std::move(record), &builder);
+    }
+
+    // Stage 2: generate, root to leaf. A failing instance is rolled back whole.
+    for (auto& [record, builder] : plan) {
+        BuildContext ctx(a, *record.manifest, *record.instance, record.options);
+        ctx.setHookNode(record.instance->parentJoint != model::kNoId ? a.physicalHookFor(record.instance->parentJoint) : 0);
+        const std::size_t nodesBefore = a.rig.nodes.size();
+        const auto hooksBefore = a.hooks;
+        builder->generate(ctx);
+        if (ctx.failed()) {
+            for (std::size_t i = nodesBefore; i < a.rig.nodes.size(); ++i)
+                a.rig.byId.erase(a.rig.nodes[i].id);
+            a.rig.nodes.resize(nodesBefore);
+            a.hooks = hooksBefore;
+            continue;
+        }
+        record.built = true;
+        a.records.push_back(record);
+    }
+
+    // Stage 3: finalize. Shapes, virtual hierarchy, orphans, matrices, names.
+    for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
+        if (a.rig.nodes[i].parent == kNoNode)
+            a.rig.nodes[i].parent = 0;
+    applyShapes(a);
+    buildVirtualHierarchy(a);
+    computeLocalMatrices(a.rig);
+    checkNames(a);
+    return std::move(a.rig);
+}
+
+Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                                             const std::string& templateId, JointId parentJoint,
+                                             const BuilderRegistry& builders)
+{
+    const templates::TemplateManifest* manifest = templates.find(templateId);
+    if (!manifest)
+        return Result<model::TemplateInstance>::failure(makeError({}, "unknown template '" + templateId + "'"));
+    model::TemplateInstance instance;
+    instance.id = guide.nextInstanceId();
+    instance.templateId = templateId;
+    instance.name = guide.uniqueName(manifest->name.empty() ? manifest->module : manifest->name);
+    if (parentJoint != model::kNoId) {
+        const model::TemplateInstance* parent = guide.ownerOf(parentJoint);
+        if (!parent)
+            return Result<model::TemplateInstance>::failure(makeError({}, "the hook joint does not exist"));
+        instance.parent = parent->id;
+        instance.parentJoint = parentJoint;
+    }
+    Diagnostics diagnostics;
+    const auto values = resolveOptions(*manifest, instance, diagnostics);
+    std::map<std::string, Value> guideValues;
+    for (const auto& p : manifest->guides)
+        guideValues[p.name] = values.at(p.name);
+    const auto specs = builders.resolve(*manifest, diagnostics).createGuide(*manifest, guideValues);
+    if (specs.empty())
+        return Result<model::TemplateInstance>::failure(makeError({}, templateId + " proposed no guide joints"));
+    JointId next = guide.nextJointId();
+    const JointId first = next;
+    for (const GuideJointSpec& spec : specs) {
+        model::GuideJoint joint;
+        joint.id = next++;
+        joint.parent = spec.parent < 0 ? model::kNoId : first + JointId(spec.parent);
+        joint.local = spec.local;
+        joint.tags = spec.tags;
+        instance.joints.push_back(std::move(joint));
+    }
+    return Result<model::TemplateInstance>(std::move(instance), std::move(diagnostics));
+}
+
+std::vector<HookPoint> hookPoints(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance)
+{
+    std::vector<HookPoint> out;
+    templates::StructureResolver resolver(manifest, instance);
+    for (const templates::UiHook& hook : manifest.hooks) {
+        auto joints = resolver.address(hook.structure);
+        if (!joints)
+            continue;
+        if (joints->size() == 1)
+            out.push_back({hook.label, joints->front()});
+        else
+            for (std::size_t i = 0; i < joints->size(); ++i)
+                out.push_back({hook.label + "[" + std::to_string(i) + "]", (*joints)[i]});
+    }
+    if (out.empty() && !instance.joints.empty()) // every joint is a hook; offer the root at least
+        out.push_back({"default", instance.joints.front().id});
+    return out;
+}
+
+} // namespace rs::build

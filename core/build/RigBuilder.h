@@ -1,0 +1,43 @@
+#pragma once
+// Turns a guide into a rig. Stages: resolve every instance (manifest, builder,
+// typed options) and let builders gather without creating anything; generate
+// root to leaf (an instance that fails is rolled back, never half-built); apply
+// controller shapes; build the virtual hierarchy per domain; check names.
+// Deterministic: the same guide gives the same rig, node for node.
+#include "base/Result.h"
+#include "build/TemplateBuilder.h"
+#include "model/Rig.h"
+#include "templates/TemplateRegistry.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rs::build {
+
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders = BuilderRegistry::builtin());
+
+// Defaults of `guides` and `opts` with the instance's overrides, coerced to the
+// manifest types (an int given for a float is accepted). Mismatches are reported
+// and fall back to the default.
+std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& manifest,
+                                            const model::TemplateInstance& instance, Diagnostics& diagnostics);
+
+// Guide phase: a new instance of `templateId` hanging under `parentJoint` (or at
+// the top level with kNoId), with fresh ids and a unique name, ready for
+// rs::edit::addInstance.
+Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide,
+                                             const templates::TemplateRegistry& templates,
+                                             const std::string& templateId, model::JointId parentJoint,
+                                             const BuilderRegistry& builders = BuilderRegistry::builtin());
+
+// An attach point offered to child templates (manifest `ui.hooks`); a hook whose
+// address spans several joints expands to "label[i]".
+struct HookPoint {
+    std::string label;
+    model::JointId joint = model::kNoId;
+};
+std::vector<HookPoint> hookPoints(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance);
+
+} // namespace rs::build

@@ -1,0 +1,92 @@
+#include "build/builders/Builders.h"
+
+#include "templates/Structure.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace rs::build {
+
+Mat4 rigidFrame(const Mat4& world)
+{
+    Vec3 t, s;
+    Quat r;
+    decompose(world, t, r, s);
+    Mat4 m = glm::mat4_cast(r);
+    if (s.x < 0.0) // keep mirrored frames mirrored, but unit-sized
+        m[0] = -m[0];
+    m[3] = Vec4(t, 1.0);
+    return m;
+}
+
+namespace {
+
+std::optional<std::vector<model::JointId>> chainOf(const BuildContext& ctx)
+{
+    if (ctx.manifest().structureAddress("chain"))
+        return ctx.structure("chain");
+    return templates::StructureResolver(ctx.manifest(), ctx.instance()).chain();
+}
+
+class JointChainBuilder final : public TemplateBuilder {
+public:
+    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
+                                            const std::map<std::string, Value>& guides) const override
+    {
+        long long count = 3;
+        double length = 0.2;
+        if (auto it = guides.find("number"); it != guides.end() && std::holds_alternative<long long>(it->second))
+            count = std::max(1LL, std::get<long long>(it->second));
+        if (auto it = guides.find("length"); it != guides.end() && std::holds_alternative<double>(it->second))
+            length = std::get<double>(it->second);
+        std::vector<GuideJointSpec> joints;
+        for (long long i = 0; i < count; ++i) {
+            GuideJointSpec j;
+            j.parent = static_cast<int>(i) - 1;
+            j.local.translate = Vec3(0.0, length, 0.0);
+            joints.push_back(j);
+        }
+        return joints;
+    }
+
+    bool gather(const BuildContext& ctx) const override
+    {
+        auto chain = chainOf(ctx);
+        if (!chain)
+            return false;
+        for (std::size_t i = 1; i < chain->size(); ++i) {
+            const double length = glm::length(translationOf(ctx.guideWorldMatrix((*chain)[i])) -
+                                              translationOf(ctx.guideWorldMatrix((*chain)[i - 1])));
+            if (length < 1e-6)
+                ctx.warning("guide joints " + std::to_string(i - 1) + " and " + std::to_string(i) +
+                            " of the chain overlap (zero-length segment)");
+        }
+        return true;
+    }
+
+    void generate(BuildContext& ctx) const override
+    {
+        const auto chain = *chainOf(ctx);
+        const bool controllers = ctx.optionBool("do_ctrl");
+        const bool skin = ctx.optionBool("do_skin");
+        model::RigNodeIndex parent = ctx.hookNode();
+        for (std::size_t i = 0; i < chain.size(); ++i) {
+            const std::string index = std::to_string(i);
+            const std::string core = ctx.name("", static_cast<int>(i) + 1);
+            const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(chain[i]));
+            const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, "root_" + core, parent, frame);
+            model::RigNodeIndex driver = offset;
+            if (controllers)
+                driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, "c_" + core, offset, frame);
+            if (skin)
+                ctx.createNode(model::RigNodeKind::Joint, "skin." + index, "sk_" + core, driver, frame);
+            ctx.setHook(chain[i], driver);
+            parent = driver;
+        }
+    }
+};
+
+} // namespace
+
+std::unique_ptr<TemplateBuilder> makeJointChainBuilder() { return std::make_unique<JointChainBuilder>(); }
+
+} // namespace rs::build

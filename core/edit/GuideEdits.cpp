@@ -1,0 +1,184 @@
+#include "edit/GuideEdits.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace rs::edit {
+
+using model::GuideDocument;
+using model::InstanceId;
+using model::TemplateInstance;
+
+namespace {
+
+class AddInstance final : public Command {
+public:
+    explicit AddInstance(TemplateInstance instance) : m_instance(std::move(instance)) {}
+    std::string text() const override { return "Add " + m_instance.templateId + " '" + m_instance.name + "'"; }
+    void redo(GuideDocument& d) override { d.insertInstance(m_instance, d.instances().size()); }
+    void undo(GuideDocument& d) override { m_instance = d.takeInstance(m_instance.id); }
+
+private:
+    TemplateInstance m_instance;
+};
+
+class RemoveInstance final : public Command {
+public:
+    RemoveInstance(InstanceId id, std::string name) : m_id(id), m_name(std::move(name)) {}
+    std::string text() const override { return "Remove '" + m_name + "'"; }
+    void redo(GuideDocument& d) override
+    {
+        m_removed.clear();
+        for (InstanceId id : d.subtree(m_id)) {
+            const std::size_t index = *d.indexOf(id);
+            m_removed.emplace_back(index, d.takeInstance(id));
+        }
+    }
+    void undo(GuideDocument& d) override
+    {
+        // Re-insert in reverse removal order so every index is the original one.
+        for (auto it = m_removed.rbegin(); it != m_removed.rend(); ++it)
+            d.insertInstance(it->second, it->first);
+        m_removed.clear();
+    }
+
+private:
+    InstanceId m_id;
+    std::string m_name;
+    std::vector<std::pair<std::size_t, TemplateInstance>> m_removed;
+};
+
+class RenameInstance final : public Command {
+public:
+    RenameInstance(InstanceId id, std::string from, std::string to) : m_id(id), m_from(std::move(from)), m_to(std::move(to)) {}
+    std::string text() const override { return "Rename '" + m_from + "' to '" + m_to + "'"; }
+    void redo(GuideDocument& d) override { d.instance(m_id)->name = m_to; }
+    void undo(GuideDocument& d) override { d.instance(m_id)->name = m_from; }
+
+private:
+    InstanceId m_id;
+    std::string m_from, m_to;
+};
+
+class SetJointTransform final : public Command {
+public:
+    SetJointTransform(InstanceId owner, model::JointId joint, Transform from, Transform to)
+        : m_owner(owner), m_joint(joint), m_from(from), m_to(to) {}
+    std::string text() const override { return "Move joint " + std::to_string(m_joint); }
+    void redo(GuideDocument& d) override { d.instance(m_owner)->joint(m_joint)->local = m_to; }
+    void undo(GuideDocument& d) override { d.instance(m_owner)->joint(m_joint)->local = m_from; }
+
+private:
+    InstanceId m_owner;
+    model::JointId m_joint;
+    Transform m_from, m_to;
+};
+
+class SetOption final : public Command {
+public:
+    SetOption(InstanceId id, std::string option, std::optional<Value> from, std::optional<Value> to)
+        : m_id(id), m_option(std::move(option)), m_from(std::move(from)), m_to(std::move(to)) {}
+    std::string text() const override { return "Set option " + m_option; }
+    void redo(GuideDocument& d) override { apply(d, m_to); }
+    void undo(GuideDocument& d) override { apply(d, m_from); }
+
+private:
+    void apply(GuideDocument& d, const std::optional<Value>& v)
+    {
+        auto& options = d.instance(m_id)->options;
+        if (v) options[m_option] = *v;
+        else options.erase(m_option);
+    }
+    InstanceId m_id;
+    std::string m_option;
+    std::optional<Value> m_from, m_to;
+};
+
+} // namespace
+
+bool isValidInstanceName(const std::string& name)
+{
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name.front())))
+        return false;
+    return std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+}
+
+Error addInstance(History& history, TemplateInstance instance)
+{
+    const GuideDocument& d = history.document();
+    if (instance.id == model::kNoId || d.instance(instance.id))
+        return "instance id " + std::to_string(instance.id) + " is not free";
+    if (!isValidInstanceName(instance.name))
+        return "'" + instance.name + "' is not a valid name (letters, digits and _, not starting with a digit)";
+    if (d.instanceNamed(instance.name))
+        return "an instance named '" + instance.name + "' already exists";
+    if (instance.joints.empty())
+        return "an instance needs at least one guide joint";
+    if (instance.parent != model::kNoId) {
+        const TemplateInstance* parent = d.instance(instance.parent);
+        if (!parent || !parent->joint(instance.parentJoint))
+            return "the hook joint does not belong to the parent instance";
+    }
+    for (const auto& joint : instance.joints)
+        if (d.joint(joint.id))
+            return "joint id " + std::to_string(joint.id) + " is not free";
+    history.push(std::make_unique<AddInstance>(std::move(instance)));
+    return std::nullopt;
+}
+
+Error removeInstance(History& history, InstanceId id)
+{
+    const TemplateInstance* instance = history.document().instance(id);
+    if (!instance)
+        return "no instance with id " + std::to_string(id);
+    history.push(std::make_unique<RemoveInstance>(id, instance->name));
+    return std::nullopt;
+}
+
+Error renameInstance(History& history, InstanceId id, const std::string& newName)
+{
+    const TemplateInstance* instance = history.document().instance(id);
+    if (!instance)
+        return "no instance with id " + std::to_string(id);
+    if (instance->name == newName)
+        return std::nullopt;
+    if (!isValidInstanceName(newName))
+        return "'" + newName + "' is not a valid name (letters, digits and _, not starting with a digit)";
+    if (history.document().instanceNamed(newName))
+        return "an instance named '" + newName + "' already exists";
+    history.push(std::make_unique<RenameInstance>(id, instance->name, newName));
+    return std::nullopt;
+}
+
+Error setJointTransform(History& history, model::JointId joint, const Transform& local)
+{
+    const TemplateInstance* owner = history.document().ownerOf(joint);
+    if (!owner)
+        return "no joint with id " + std::to_string(joint);
+    const Transform before = owner->joint(joint)->local;
+    if (before == local)
+        return std::nullopt;
+    history.push(std::make_unique<SetJointTransform>(owner->id, joint, before, local));
+    return std::nullopt;
+}
+
+Error setOption(History& history, InstanceId id, const std::string& option, const Value& value, const Value& defaultValue)
+{
+    const TemplateInstance* instance = history.document().instance(id);
+    if (!instance)
+        return "no instance with id " + std::to_string(id);
+    if (typeOf(value) != typeOf(defaultValue))
+        return "option '" + option + "' takes a " + typeName(typeOf(defaultValue)) + ", not a " + typeName(typeOf(value));
+    std::optional<Value> before;
+    if (auto it = instance->options.find(option); it != instance->options.end())
+        before = it->second;
+    std::optional<Value> after;
+    if (value != defaultValue)
+        after = value;
+    if (before == after)
+        return std::nullopt;
+    history.push(std::make_unique<SetOption>(id, option, before, after));
+    return std::nullopt;
+}
+
+} // namespace rs::edit

@@ -1,0 +1,27 @@
+#pragma once
+// The edits a rigger makes to a guide, each validated and then pushed as one
+// undoable command ("AddInstance", "RenameInstance"...). A refused edit returns
+// an error message and changes nothing.
+#include "edit/History.h"
+
+#include <optional>
+#include <string>
+
+namespace rs::edit {
+
+using Error = std::optional<std::string>; // nullopt on success
+
+// Adds a fully formed instance (ids and joints prepared by rs::build::makeInstance).
+Error addInstance(History& history, model::TemplateInstance instance);
+// Removes the instance and everything hanging below it.
+Error removeInstance(History& history, model::InstanceId id);
+Error renameInstance(History& history, model::InstanceId id, const std::string& newName);
+Error setJointTransform(History& history, model::JointId joint, const Transform& local);
+// `value` equal to `defaultValue` removes the stored option (instances keep only
+// values that differ from the defaults).
+Error setOption(History& history, model::InstanceId id, const std::string& option, const Value& value,
+                const Value& defaultValue);
+
+bool isValidInstanceName(const std::string& name);
+
+} // namespace rs::edit

@@ -1,0 +1,250 @@
+#include "io/GuideFile.h"
+
+#include "io/YamlSupport.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace rs::io {
+
+using model::GuideDocument;
+using model::GuideJoint;
+using model::TemplateInstance;
+
+namespace {
+
+constexpr const char* kFormatKey = "rigsmith_guide";
+
+std::string vec3Text(const Vec3& v)
+{
+    return formatValue(Value(v));
+}
+
+void readJoint(YamlReader& r, const YAML::Node& node, TemplateInstance& instance, bool& ok)
+{
+    const std::string what = "joint of instance '" + instance.name + "'";
+    if (!r.expectMap(node, what)) { ok = false; return; }
+    GuideJoint joint;
+    for (const auto& kv : node) {
+        const std::string key = kv.first.Scalar();
+        const YAML::Node& v = kv.second;
+        if (key == "id") { if (auto i = r.integer(v, "joint id"); i && *i > 0) joint.id = model::JointId(*i); else { if (i) r.error(v, "joint id must be positive"); ok = false; } }
+        else if (key == "parent") { if (auto i = r.integer(v, "joint parent")) joint.parent = model::JointId(*i); else ok = false; }
+        else if (key == "t") { if (auto x = r.vec3(v, "joint translate 't'")) joint.local.translate = *x; else ok = false; }
+        else if (key == "r") { if (auto x = r.vec3(v, "joint rotate 'r'")) joint.local.rotateDegrees = *x; else ok = false; }
+        else if (key == "s") { if (auto x = r.vec3(v, "joint scale 's'")) joint.local.scale = *x; else ok = false; }
+        else if (key == "tags") {
+            if (!r.expectSequence(v, "joint tags")) { ok = false; continue; }
+            for (const auto& t : v)
+                if (auto s = r.string(t, "joint tag")) joint.tags.push_back(*s); else ok = false;
+        } else r.warning(kv.first, "unknown key '" + key + "' in " + what);
+    }
+    if (joint.id == model::kNoId && ok) { r.error(node, what + " has no 'id'"); ok = false; }
+    instance.joints.push_back(std::move(joint));
+}
+
+bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std::map<model::InstanceId, YAML::Node>& nodes)
+{
+    if (!r.expectMap(node, "an instance"))
+        return false;
+    bool ok = true;
+    TemplateInstance instance;
+    YAML::Node jointsNode;
+    for (const auto& kv : node) {
+        const std::string key = kv.first.Scalar();
+        const YAML::Node& v = kv.second;
+        if (key == "id") { if (auto i = r.integer(v, "instance id"); i && *i > 0) instance.id = model::InstanceId(*i); else { if (i) r.error(v, "instance id must be positive"); ok = false; } }
+        else if (key == "template") { if (auto s = r.string(v, "template")) instance.templateId = *s; else ok = false; }
+        else if (key == "name") { if (auto s = r.string(v, "name")) instance.name = *s; else ok = false; }
+        else if (key == "parent") { if (auto i = r.integer(v, "parent instance id")) instance.parent = model::InstanceId(*i); else ok = false; }
+        else if (key == "hook") { if (auto i = r.integer(v, "hook joint id")) instance.parentJoint = model::JointId(*i); else ok = false; }
+        else if (key == "options") {
+            if (!r.expectMap(v, "options")) { ok = false; continue; }
+            for (const auto& o : v)
+                if (auto value = readValue(r, o.second, "option " + o.first.Scalar())) instance.options[o.first.Scalar()] = *value;
+                else ok = false;
+        } else if (key == "joints") jointsNode = v;
+        else r.warning(kv.first, "unknown key '" + key + "' in an instance");
+    }
+    if (instance.id == model::kNoId) { if (ok) r.error(node, "instance has no 'id'"); return false; }
+    if (instance.templateId.empty()) { r.error(node, "instance " + std::to_string(instance.id) + " has no 'template'"); ok = false; }
+    if (instance.name.empty()) { r.error(node, "instance " + std::to_string(instance.id) + " has no 'name'"); ok = false; }
+    if (!jointsNode || !r.expectSequence(jointsNode, "joints") || jointsNode.size() == 0) {
+        if (!jointsNode || jointsNode.IsSequence()) r.error(node, "instance '" + instance.name + "' has no joints");
+        return false;
+    }
+    for (const auto& j : jointsNode)
+        readJoint(r, j, instance, ok);
+    nodes[instance.id] = node;
+    doc.insertInstance(std::move(instance), doc.instances().size());
+    return ok;
+}
+
+// Checks references between instances and joints; collects every problem.
+void validate(YamlReader& r, const GuideDocument& doc, std::map<model::InstanceId, YAML::Node>& nodes)
+{
+    std::set<model::InstanceId> seenInstances;
+    std::set<model::JointId> seenJoints;
+    std::set<std::string> names;
+    for (const TemplateInstance& i : doc.instances()) {
+        const YAML::Node node = nodes[i.id];
+        if (!seenInstances.insert(i.id).second)
+            r.error(node, "duplicate instance id " + std::to_string(i.id));
+        if (!names.insert(i.name).second)
+            r.error(node, "duplicate instance name '" + i.name + "'");
+        if (i.parent != model::kNoId) {
+            if (!seenInstances.count(i.parent))
+                r.error(node, "instance '" + i.name + "': parent " + std::to_string(i.parent) +
+                                  " is not an instance listed before it");
+            else if (!doc.instance(i.parent)->joint(i.parentJoint))
+                r.error(node, "instance '" + i.name + "': hook " + std::to_string(i.parentJoint) +
+                                  " is not a joint of its parent '" + doc.instance(i.parent)->name + "'");
+        } else if (i.parentJoint != model::kNoId) {
+            r.error(node, "instance '" + i.name + "' has a hook but no parent");
+        }
+        std::set<model::JointId> local;
+        for (std::size_t k = 0; k < i.joints.size(); ++k) {
+            const GuideJoint& j = i.joints[k];
+            if (!seenJoints.insert(j.id).second)
+                r.error(node, "duplicate joint id " + std::to_string(j.id));
+            if (k == 0 && j.parent != model::kNoId)
+                r.error(node, "instance '" + i.name + "': the first joint is the root and has no parent");
+            if (k > 0 && (j.parent == model::kNoId || !local.count(j.parent)))
+                r.error(node, "instance '" + i.name + "': joint " + std::to_string(j.id) +
+                                  " must name a parent joint listed before it");
+            local.insert(j.id);
+        }
+    }
+}
+
+} // namespace
+
+Result<GuideDocument> readGuideText(const std::string& text, const std::string& displayName)
+{
+    auto yaml = loadYamlText(text, displayName);
+    if (!yaml)
+        return Result<GuideDocument>::failure(yaml.takeDiagnostics());
+    Diagnostics diagnostics;
+    YamlReader r(displayName, diagnostics);
+    const YAML::Node root = *yaml;
+    if (!root.IsMap() || !root[kFormatKey]) {
+        r.error(root, std::string("not a Rigsmith guide: the file must start with '") + kFormatKey + ": <version>'");
+        return Result<GuideDocument>::failure(diagnostics);
+    }
+    auto version = r.integer(root[kFormatKey], "schema version");
+    if (version && *version > GuideDocument::kSchemaVersion)
+        r.error(root[kFormatKey], "schema version " + std::to_string(*version) + " is newer than this Rigsmith (" +
+                                      std::to_string(GuideDocument::kSchemaVersion) + ")");
+    GuideDocument doc;
+    std::map<model::InstanceId, YAML::Node> nodes;
+    for (const auto& kv : root) {
+        const std::string key = kv.first.Scalar();
+        if (key == kFormatKey) continue;
+        if (key == "name") { if (auto s = r.string(kv.second, "name")) doc.name = *s; }
+        else if (key == "instances") {
+            if (kv.second.IsNull()) continue;
+            if (!r.expectSequence(kv.second, "instances")) continue;
+            for (const auto& node : kv.second)
+                readInstance(r, node, doc, nodes);
+        } else r.warning(kv.first, "unknown key '" + key + "' (ignored)");
+    }
+    if (!hasErrors(diagnostics))
+        validate(r, doc, nodes);
+    if (hasErrors(diagnostics))
+        return Result<GuideDocument>::failure(diagnostics);
+    return Result<GuideDocument>(std::move(doc), std::move(diagnostics));
+}
+
+Result<GuideDocument> readGuideFile(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return Result<GuideDocument>::failure(makeError({path, 0, 0}, "cannot open file"));
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return readGuideText(buffer.str(), path);
+}
+
+std::string writeGuideText(const GuideDocument& doc)
+{
+    std::ostringstream out;
+    out << "# Rigsmith guide: template instances and their guide joints (metres, degrees).\n";
+    out << kFormatKey << ": " << GuideDocument::kSchemaVersion << "\n";
+    if (!doc.name.empty())
+        out << "name: " << quoteIfNeeded(doc.name) << "\n";
+    out << "instances:" << (doc.instances().empty() ? " []\n" : "\n");
+    for (const TemplateInstance& i : doc.instances()) {
+        out << "  - id: " << i.id << "\n";
+        out << "    template: " << quoteIfNeeded(i.templateId) << "\n";
+        out << "    name: " << quoteIfNeeded(i.name) << "\n";
+        if (i.parent != model::kNoId) {
+            const TemplateInstance* parent = doc.instance(i.parent);
+            out << "    parent: " << i.parent;
+            if (parent)
+                out << "  # " << parent->name;
+            out << "\n    hook: " << i.parentJoint << "\n";
+        }
+        if (!i.options.empty()) {
+            out << "    options:\n";
+            for (const auto& [name, value] : i.options) {
+                const std::string text = formatValue(value);
+                out << "      " << quoteIfNeeded(name) << ": "
+                    << (std::holds_alternative<std::string>(value) ? quoteIfNeeded(text) : text) << "\n";
+            }
+        }
+        out << "    joints:\n";
+        for (const GuideJoint& j : i.joints) {
+            out << "      - {id: " << j.id;
+            if (j.parent != model::kNoId)
+                out << ", parent: " << j.parent;
+            out << ", t: " << vec3Text(j.local.translate);
+            if (j.local.rotateDegrees != Vec3(0.0))
+                out << ", r: " << vec3Text(j.local.rotateDegrees);
+            if (j.local.scale != Vec3(1.0))
+                out << ", s: " << vec3Text(j.local.scale);
+            if (!j.tags.empty()) {
+                out << ", tags: [";
+                for (std::size_t k = 0; k < j.tags.size(); ++k)
+                    out << (k ? ", " : "") << quoteIfNeeded(j.tags[k]);
+                out << "]";
+            }
+            out << "}\n";
+        }
+    }
+    return out.str();
+}
+
+Diagnostics writeFileAtomically(const std::string& path, const std::string& bytes)
+{
+    const std::string temporary = path + ".saving~";
+    FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file)
+        return {makeError({path, 0, 0}, "cannot write: " + std::string(std::strerror(errno)))};
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size() && std::fflush(file) == 0 &&
+                         fsync(fileno(file)) == 0;
+    const int error = errno;
+    const bool closed = std::fclose(file) == 0;
+    if (!written || !closed) {
+        std::remove(temporary.c_str());
+        return {makeError({path, 0, 0}, "cannot write (the previous file is untouched): " + std::string(std::strerror(error)))};
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const int renameError = errno;
+        std::remove(temporary.c_str());
+        return {makeError({path, 0, 0}, "cannot replace the file: " + std::string(std::strerror(renameError)))};
+    }
+    return {};
+}
+
+Diagnostics saveGuideFile(const GuideDocument& document, const std::string& path)
+{
+    return writeFileAtomically(path, writeGuideText(document));
+}
+
+} // namespace rs::io

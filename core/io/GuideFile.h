@@ -1,0 +1,21 @@
+#pragma once
+// The guide document on disk: a readable, diffable YAML file with a schema version.
+// Writing is deterministic (fixed key order, shortest round-trip numbers), so a
+// file written by Rigsmith loads and saves back byte-identical.
+#include "base/Result.h"
+#include "model/GuideDocument.h"
+
+#include <string>
+
+namespace rs::io {
+
+Result<model::GuideDocument> readGuideFile(const std::string& path);
+Result<model::GuideDocument> readGuideText(const std::string& text, const std::string& displayName);
+std::string writeGuideText(const model::GuideDocument& document);
+
+// Atomic: writes a temporary file next to `path`, flushes it, then renames it over
+// `path`, so a crash or a full disk never damages the previous file.
+Diagnostics saveGuideFile(const model::GuideDocument& document, const std::string& path);
+Diagnostics writeFileAtomically(const std::string& path, const std::string& bytes);
+
+} // namespace rs::io

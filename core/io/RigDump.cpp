@@ -1,0 +1,86 @@
+#include "io/RigDump.h"
+
+#include "io/YamlSupport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace rs::io {
+
+namespace {
+
+std::string fixed(double v)
+{
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.6f", v);
+    std::string text = buffer;
+    if (text == "-0.000000")
+        text = "0.000000";
+    return text;
+}
+
+std::string list(std::initializer_list<double> values)
+{
+    std::string out = "[";
+    bool first = true;
+    for (double v : values) {
+        out += (first ? "" : ", ") + fixed(v);
+        first = false;
+    }
+    return out + "]";
+}
+
+std::string colorText(const Vec3& c)
+{
+    char buffer[8];
+    auto byte = [](double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+    std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", byte(c.x), byte(c.y), byte(c.z));
+    return buffer;
+}
+
+} // namespace
+
+std::string writeRigDump(const model::Rig& rig)
+{
+    std::ostringstream out;
+    out << "# Rigsmith rig dump: rest pose, metres, quaternions as [x, y, z, w].\n";
+    out << "rigsmith_rig: 1\n";
+    out << "nodes:\n";
+    for (const auto& n : rig.nodes) {
+        out << "  - id: " << quoteIfNeeded(n.id) << "\n";
+        out << "    name: " << quoteIfNeeded(n.name) << "\n";
+        out << "    kind: " << model::kindName(n.kind) << "\n";
+        if (n.parent != model::kNoNode)
+            out << "    parent: " << quoteIfNeeded(rig.nodes[n.parent].id) << "\n";
+        if (n.isInVirtualHierarchy())
+            out << "    virtual_parent: "
+                << (n.virtualParent == model::kNoNode ? std::string("~") : quoteIfNeeded(rig.nodes[n.virtualParent].id)) << "\n";
+        Vec3 t, s;
+        Quat r;
+        decompose(n.worldMatrix, t, r, s);
+        if (r.w < 0.0)
+            r = -r;
+        out << "    t: " << list({t.x, t.y, t.z}) << "\n";
+        out << "    r: " << list({r.x, r.y, r.z, r.w}) << "\n";
+        if (glm::length(s - Vec3(1.0)) > 1e-9)
+            out << "    s: " << list({s.x, s.y, s.z}) << "\n";
+        if (!n.shape.empty()) {
+            out << "    shape: " << quoteIfNeeded(n.shape) << "\n";
+            out << "    curves:\n";
+            for (const auto& c : n.curves) {
+                Vec3 lo(1e300), hi(-1e300);
+                for (const Vec3& p : c.points) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+                out << "      - {points: " << c.points.size() << ", color: \"" << colorText(c.color)
+                    << "\", min: " << list({lo.x, lo.y, lo.z}) << ", max: " << list({hi.x, hi.y, hi.z}) << "}\n";
+            }
+        }
+    }
+    out << "diagnostics:" << (rig.diagnostics.empty() ? " []\n" : "\n");
+    for (const auto& d : rig.diagnostics)
+        out << "  - " << quoteIfNeeded(d.format()) << "\n";
+    return out.str();
+}
+
+} // namespace rs::io

@@ -1,0 +1,84 @@
+#pragma once
+// The guide: what a rigger authors. A forest of template instances; each instance
+// owns a small tree of guide joints whose root hangs under a joint of its parent
+// instance (any joint: every joint is a hook). Identity is by id; names are for
+// people and files. Joint transforms are local to the parent joint (for an
+// instance root: local to the joint it hangs under, or to the world).
+//
+// The document is plain data; edits go through rs::edit so undo stays in step.
+#include "base/Math.h"
+#include "model/Value.h"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::model {
+
+using InstanceId = std::uint32_t;
+using JointId = std::uint32_t;
+constexpr std::uint32_t kNoId = 0;
+
+struct GuideJoint {
+    JointId id = kNoId;
+    JointId parent = kNoId;          // kNoId for the instance root
+    Transform local;
+    std::vector<std::string> tags;   // explicit structure tags (heel, hips...)
+
+    bool hasTag(const std::string& tag) const;
+    bool operator==(const GuideJoint&) const = default;
+};
+
+struct TemplateInstance {
+    InstanceId id = kNoId;
+    std::string templateId;          // "core.joints"
+    std::string name;                // unique in the document, e.g. "arm_L"
+    InstanceId parent = kNoId;       // kNoId: top-level instance
+    JointId parentJoint = kNoId;     // the parent's joint this instance hangs under
+    std::map<std::string, Value> options; // only values that differ from the defaults
+    std::vector<GuideJoint> joints;  // joints[0] is the root; parents come before children
+
+    const GuideJoint* joint(JointId id) const;
+    GuideJoint* joint(JointId id);
+    std::vector<JointId> childJoints(JointId id) const;
+    bool operator==(const TemplateInstance&) const = default;
+};
+
+class GuideDocument {
+public:
+    static constexpr int kSchemaVersion = 1;
+
+    const std::vector<TemplateInstance>& instances() const { return m_instances; }
+    const TemplateInstance* instance(InstanceId id) const;
+    TemplateInstance* instance(InstanceId id);
+    const TemplateInstance* instanceNamed(const std::string& name) const;
+    const TemplateInstance* ownerOf(JointId joint) const;
+    const GuideJoint* joint(JointId id) const;
+    std::vector<InstanceId> childInstances(InstanceId id) const; // in document order
+    // The instance and every instance hanging below it, parents first.
+    std::vector<InstanceId> subtree(InstanceId id) const;
+
+    Mat4 jointWorldMatrix(JointId id) const;
+    // The world matrix a joint's parent provides (the hook joint for roots).
+    Mat4 parentWorldMatrix(JointId id) const;
+
+    // Low-level mutators for rs::edit and readers. Insert keeps `index` order.
+    void insertInstance(TemplateInstance instance, std::size_t index);
+    std::optional<std::size_t> indexOf(InstanceId id) const;
+    TemplateInstance takeInstance(InstanceId id);
+
+    InstanceId nextInstanceId() const;
+    JointId nextJointId() const;
+    // "base" if free, else "base1", "base2"...
+    std::string uniqueName(const std::string& base) const;
+
+    std::string name;                // asset name
+    bool operator==(const GuideDocument&) const = default;
+
+private:
+    std::vector<TemplateInstance> m_instances; // parents before children
+};
+
+} // namespace rs::model

@@ -1,0 +1,64 @@
+#include "model/Rig.h"
+
+#include <algorithm>
+
+namespace rs::model {
+
+const char* kindName(RigNodeKind kind)
+{
+    switch (kind) {
+    case RigNodeKind::Group: return "group";
+    case RigNodeKind::Controller: return "controller";
+    case RigNodeKind::Joint: return "joint";
+    }
+    return "group";
+}
+
+std::string RigNode::domain() const
+{
+    const auto sep = id.find("::");
+    const std::string tag = sep == std::string::npos ? id : id.substr(sep + 2);
+    return tag.substr(0, tag.find('.'));
+}
+
+std::optional<RigNodeIndex> Rig::find(const std::string& id) const
+{
+    auto it = byId.find(id);
+    if (it == byId.end())
+        return std::nullopt;
+    return it->second;
+}
+
+std::vector<RigNodeIndex> Rig::virtualRoots(const std::string& domain) const
+{
+    std::vector<RigNodeIndex> out;
+    for (RigNodeIndex i = 0; i < nodes.size(); ++i)
+        if (nodes[i].isInVirtualHierarchy() && nodes[i].virtualParent == kNoNode && nodes[i].domain() == domain)
+            out.push_back(i);
+    return out;
+}
+
+std::vector<RigNodeIndex> Rig::virtualChildren(RigNodeIndex node) const
+{
+    std::vector<RigNodeIndex> out;
+    for (RigNodeIndex i = 0; i < nodes.size(); ++i)
+        if (nodes[i].virtualParent == node)
+            out.push_back(i);
+    return out;
+}
+
+std::vector<RigNodeIndex> Rig::children(RigNodeIndex node) const
+{
+    std::vector<RigNodeIndex> out;
+    for (RigNodeIndex i = 0; i < nodes.size(); ++i)
+        if (nodes[i].parent == node)
+            out.push_back(i);
+    return out;
+}
+
+std::size_t Rig::count(RigNodeKind kind) const
+{
+    return static_cast<std::size_t>(std::count_if(nodes.begin(), nodes.end(), [&](const RigNode& n) { return n.kind == kind; }));
+}
+
+} // namespace rs::model

@@ -1,0 +1,41 @@
+#include "templates/Manifest.h"
+
+#include <algorithm>
+
+namespace rs::templates {
+
+namespace {
+template <class List>
+auto findByName(const List& list, const std::string& name) -> decltype(&list.front())
+{
+    auto it = std::find_if(list.begin(), list.end(), [&](const auto& p) { return p.name == name; });
+    return it == list.end() ? nullptr : &*it;
+}
+} // namespace
+
+const Parameter* TemplateManifest::findOpt(const std::string& n) const { return findByName(opts, n); }
+const Parameter* TemplateManifest::findGuide(const std::string& n) const { return findByName(guides, n); }
+
+const ShapeSpec* TemplateManifest::findShape(const std::string& key) const
+{
+    auto it = std::find_if(shapes.begin(), shapes.end(), [&](const ShapeSpec& s) { return s.key == key; });
+    return it == shapes.end() ? nullptr : &*it;
+}
+
+std::string TemplateManifest::defaultName(const std::string& token) const
+{
+    for (const auto& [t, n] : names)
+        if (t == token)
+            return n;
+    return token;
+}
+
+std::optional<std::string> TemplateManifest::structureAddress(const std::string& tag) const
+{
+    for (const auto& [t, address] : structure)
+        if (t == tag)
+            return address;
+    return std::nullopt;
+}
+
+} // namespace rs::templates

@@ -1,0 +1,159 @@
+#include "templates/ShapeLibrary.h"
+
+#include "io/YamlSupport.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace rs::templates {
+
+namespace fs = std::filesystem;
+
+std::optional<Shape> readShapeFile(const std::string& file, Diagnostics& diagnostics)
+{
+    auto yaml = io::loadYamlFile(file);
+    if (!yaml) {
+        auto d = yaml.takeDiagnostics();
+        diagnostics.insert(diagnostics.end(), d.begin(), d.end());
+        return std::nullopt;
+    }
+    const std::size_t before = diagnostics.size();
+    io::YamlReader r(file, diagnostics);
+    Shape shape;
+    shape.name = fs::path(file).stem().string();
+    shape.file = file;
+    if (!r.expectSequence(*yaml, "a shape file") || yaml->size() == 0) {
+        if (yaml->IsSequence()) r.error(*yaml, "a shape needs at least one curve");
+        return std::nullopt;
+    }
+    int index = 0;
+    for (const auto& node : *yaml) {
+        const std::string what = "curve " + std::to_string(index++);
+        if (!r.expectMap(node, what))
+            continue;
+        ShapeCurve curve;
+        bool havePoints = false;
+        for (const auto& kv : node) {
+            const std::string key = kv.first.Scalar();
+            if (key == "degree") {
+                if (auto d = r.integer(kv.second, what + ".degree")) {
+                    if (*d < 1 || *d > 3) r.error(kv.second, what + ".degree must be 1, 2 or 3");
+                    curve.degree = static_cast<int>(*d);
+                }
+            } else if (key == "periodic") {
+                if (auto b = r.boolean(kv.second, what + ".periodic")) curve.periodic = *b;
+            } else if (key == "points") {
+                havePoints = r.expectSequence(kv.second, what + ".points");
+                if (havePoints)
+                    for (const auto& p : kv.second)
+                        if (auto v = r.vec3(p, what + " point")) curve.points.push_back(*v);
+            } else if (key == "color") {
+                if (auto text = r.string(kv.second, what + ".color")) {
+                    curve.color = parseColor(*text);
+                    if (!curve.color) r.error(kv.second, "unknown colour '" + *text + "'");
+                }
+            } else if (key == "ghost") {
+                r.boolean(kv.second, what + ".ghost");
+            } else {
+                r.warning(kv.first, "unknown key '" + key + "' in " + what);
+            }
+        }
+        if (!havePoints) {
+            r.error(node, what + " has no 'points'");
+            continue;
+        }
+        const std::size_t minimum = curve.periodic ? std::size_t(curve.degree) + 1 : std::size_t(curve.degree) + 1;
+        if (curve.points.size() < minimum) {
+            r.error(node, what + " of degree " + std::to_string(curve.degree) + " needs at least " +
+                              std::to_string(minimum) + " points, has " + std::to_string(curve.points.size()));
+            continue;
+        }
+        shape.curves.push_back(std::move(curve));
+    }
+    if (hasErrors(Diagnostics(diagnostics.begin() + before, diagnostics.end())))
+        return std::nullopt;
+    return shape;
+}
+
+void ShapeLibrary::loadDirectory(const std::string& directory, Diagnostics& diagnostics)
+{
+    std::error_code ec;
+    if (!fs::is_directory(directory, ec))
+        return;
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(directory, ec))
+        if (entry.is_regular_file() && entry.path().extension() == ".yml")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& file : files)
+        if (auto shape = readShapeFile(file.string(), diagnostics))
+            m_shapes[shape->name] = std::move(*shape);
+}
+
+const Shape* ShapeLibrary::find(const std::string& name) const
+{
+    auto it = m_shapes.find(name);
+    return it == m_shapes.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> ShapeLibrary::names() const
+{
+    std::vector<std::string> out;
+    for (const auto& [name, shape] : m_shapes)
+        out.push_back(name);
+    return out;
+}
+
+namespace {
+
+// de Boor's algorithm for one parameter value; `span` is the knot span index.
+Vec3 deBoor(int degree, const std::vector<double>& knots, const std::vector<Vec3>& cvs, int span, double t)
+{
+    std::vector<Vec3> d(cvs.begin() + (span - degree), cvs.begin() + span + 1);
+    for (int r = 1; r <= degree; ++r)
+        for (int j = degree; j >= r; --j) {
+            const int i = span - degree + j;
+            const double denom = knots[i + degree - r + 1] - knots[i];
+            const double alpha = denom == 0.0 ? 0.0 : (t - knots[i]) / denom;
+            d[j] = (1.0 - alpha) * d[j - 1] + alpha * d[j];
+        }
+    return d[degree];
+}
+
+} // namespace
+
+std::vector<Vec3> evaluateCurve(const ShapeCurve& curve, int samplesPerSpan)
+{
+    const int p = curve.degree;
+    std::vector<Vec3> cvs = curve.points;
+    if (p == 1) {
+        if (curve.periodic && !cvs.empty())
+            cvs.push_back(cvs.front());
+        return cvs;
+    }
+    std::vector<double> knots;
+    if (curve.periodic) {
+        for (int i = 0; i < p; ++i)
+            cvs.push_back(curve.points[i]);
+        for (int i = 0; i < int(cvs.size()) + p + 1; ++i)
+            knots.push_back(i);
+    } else {
+        const int n = int(cvs.size());
+        for (int i = 0; i <= p; ++i) knots.push_back(0.0);
+        for (int i = 1; i < n - p; ++i) knots.push_back(i);
+        for (int i = 0; i <= p; ++i) knots.push_back(n - p);
+    }
+    const int n = int(cvs.size());
+    std::vector<Vec3> out;
+    for (int span = p; span < n; ++span) {
+        const double t0 = knots[span], t1 = knots[span + 1];
+        if (t1 <= t0)
+            continue;
+        for (int s = 0; s < samplesPerSpan; ++s)
+            out.push_back(deBoor(p, knots, cvs, span, t0 + (t1 - t0) * s / samplesPerSpan));
+    }
+    out.push_back(curve.periodic ? out.front() : deBoor(p, knots, cvs, n - 1, knots[n]));
+    return out;
+}
+
+} // namespace rs::templates

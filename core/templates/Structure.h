@@ -1,0 +1,37 @@
+#pragma once
+// Resolves manifest `structure` addresses to an instance's guide joints.
+//   .        the root          /N, /-N  node N of the root's single-child chain
+//   /*       the whole chain   (empty)  joints explicitly tagged with the tag
+//   tag      another tag       tag[i], tag[a:b], tag[*]  index, slice, all
+//   a+b      concatenation
+// The chain follows the only untagged child and stops at forks; it never relies
+// on sibling order. Unknown tags, bad syntax and cycles are reported.
+#include "base/Diagnostic.h"
+#include "model/GuideDocument.h"
+#include "templates/Manifest.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::templates {
+
+class StructureResolver {
+public:
+    StructureResolver(const TemplateManifest& manifest, const model::TemplateInstance& instance)
+        : m_manifest(manifest), m_instance(instance) {}
+
+    // Joints of a structure tag; nullopt (with an error message) when it cannot resolve.
+    std::optional<std::vector<model::JointId>> tag(const std::string& tagName, std::string* error = nullptr) const;
+    // Joints of an address expression as written in `ui.hooks` or `structure`.
+    std::optional<std::vector<model::JointId>> address(const std::string& expression, std::string* error = nullptr) const;
+    std::vector<model::JointId> chain() const;
+
+private:
+    std::optional<std::vector<model::JointId>> evaluate(const std::string& expression, const std::string& ownTag,
+                                                        int depth, std::string& error) const;
+    const TemplateManifest& m_manifest;
+    const model::TemplateInstance& m_instance;
+};
+
+} // namespace rs::templates

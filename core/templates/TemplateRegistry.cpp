@@ -1,0 +1,116 @@
+#include "templates/TemplateRegistry.h"
+
+#include "base/Paths.h"
+#include "templates/ManifestReader.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace rs::templates {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<fs::path> sortedSubdirectories(const fs::path& folder)
+{
+    std::vector<fs::path> out;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+        if (entry.is_directory())
+            out.push_back(entry.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+const char* kFallbackIcon = "template";
+
+} // namespace
+
+Diagnostics TemplateRegistry::scan(const std::vector<std::string>& folders, const std::string& iconsDirectory)
+{
+    Diagnostics diagnostics;
+    m_manifests.clear();
+    m_shapes.clear();
+    m_iconsDirectory = iconsDirectory;
+    for (const std::string& folder : folders) {
+        std::error_code ec;
+        if (!fs::is_directory(folder, ec)) {
+            diagnostics.push_back(makeWarning({folder, 0, 0}, "template folder does not exist"));
+            continue;
+        }
+        for (const fs::path& category : sortedSubdirectories(folder)) {
+            const std::string categoryName = category.filename().string();
+            if (categoryName == "shapes") {
+                m_shapes.loadDirectory(category.string(), diagnostics);
+                continue;
+            }
+            for (const fs::path& module : sortedSubdirectories(category)) {
+                const fs::path file = module / "template.yml";
+                if (!fs::exists(file, ec))
+                    continue;
+                auto manifest = readManifest(file.string(), categoryName, module.filename().string());
+                auto d = manifest.takeDiagnostics();
+                diagnostics.insert(diagnostics.end(), d.begin(), d.end());
+                if (manifest) {
+                    TemplateManifest loaded = manifest.take();
+                    const std::string id = loaded.id;
+                    m_manifests[id] = std::move(loaded);
+                }
+            }
+        }
+    }
+    // Cross-checks that need the whole library.
+    std::error_code ec;
+    for (const auto& [id, m] : m_manifests) {
+        for (const ShapeSpec& s : m.shapes)
+            if (!s.shape.empty() && !m_shapes.find(s.shape))
+                diagnostics.push_back(makeWarning(s.where, "unknown shape '" + s.shape + "' in shapes." + s.key +
+                                                               " (a circle is used)"));
+        if (!m.icon.empty() && !fs::exists(fs::path(iconsDirectory) / (m.icon + ".svg"), ec))
+            diagnostics.push_back(makeWarning({m.file, 0, 0}, "icon '" + m.icon + "' not found in " + iconsDirectory +
+                                                                  " (the default icon is used)"));
+    }
+    return diagnostics;
+}
+
+const TemplateManifest* TemplateRegistry::find(const std::string& id) const
+{
+    auto it = m_manifests.find(id);
+    return it == m_manifests.end() ? nullptr : &it->second;
+}
+
+std::vector<const TemplateManifest*> TemplateRegistry::all() const
+{
+    std::vector<const TemplateManifest*> out;
+    for (const auto& [id, m] : m_manifests)
+        out.push_back(&m);
+    return out;
+}
+
+std::vector<std::string> TemplateRegistry::categories() const
+{
+    std::vector<std::string> out;
+    for (const auto& [id, m] : m_manifests)
+        if (out.empty() || out.back() != m.category)
+            out.push_back(m.category);
+    return out;
+}
+
+std::string TemplateRegistry::iconPath(const TemplateManifest& manifest) const
+{
+    std::error_code ec;
+    const fs::path icon = fs::path(m_iconsDirectory) / (manifest.icon + ".svg");
+    if (!manifest.icon.empty() && fs::exists(icon, ec))
+        return icon.string();
+    return (fs::path(m_iconsDirectory) / (std::string(kFallbackIcon) + ".svg")).string();
+}
+
+std::shared_ptr<TemplateRegistry> TemplateRegistry::loadDefault(Diagnostics& diagnostics)
+{
+    auto registry = std::make_shared<TemplateRegistry>();
+    diagnostics = registry->scan(templateSearchPath(), iconsDirectory());
+    return registry;
+}
+
+} // namespace rs::templates

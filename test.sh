@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Same setup as run.sh (packages, Release build), then the whole test suite.
+# GUI and GL tests run on a virtual X server with Mesa's software OpenGL.
+set -euo pipefail
+cd "$(dirname "$0")"
+./run.sh --build-only --with-test-tools
+
+# Third-party checkers of our exports (Khronos glTF validator), pinned by the lock file.
+if [ ! -d tests/tools/node_modules/gltf-validator ]; then
+  (cd tests/tools && npm ci --no-audit --no-fund --loglevel=error)
+fi
+
+BUILD_DIR=${RIGSMITH_BUILD_DIR:-build}
+export LIBGL_ALWAYS_SOFTWARE=1
+start=$(date +%s)
+xvfb-run -a -s "-screen 0 1600x1000x24" \
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)" --timeout 120 "$@"
+echo "test suite: $(( $(date +%s) - start )) s"
