@@ -5,6 +5,7 @@
 #include "io/GltfExport.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
+#include "model/Skeleton.h"
 
 #include <chrono>
 #include <cstdio>
@@ -24,17 +25,17 @@ void print(const Diagnostics& diagnostics)
 
 std::string usage()
 {
-    return "usage: rigsmith-cli build GUIDE [--dump RIG.yml] [-o OUT.glb|OUT.gltf]\n"
+    return "usage: rigsmith-cli build GUIDE [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
            "       rigsmith-cli check-templates [DIR...]\n";
 }
 
 int runBuild(const std::vector<std::string>& args)
 {
-    std::string guidePath, dumpPath, outPath;
+    std::string guidePath, dumpPath, outPath, skeletonPath;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        if ((a == "--dump" || a == "-o") && i + 1 < args.size())
-            (a == "--dump" ? dumpPath : outPath) = args[++i];
+        if ((a == "--dump" || a == "-o" || a == "--skeleton") && i + 1 < args.size())
+            (a == "--dump" ? dumpPath : a == "-o" ? outPath : skeletonPath) = args[++i];
         else if (!a.empty() && a[0] != '-' && guidePath.empty())
             guidePath = a;
         else {
@@ -68,6 +69,14 @@ int runBuild(const std::vector<std::string>& args)
             print(d);
             status = 1;
         }
+    }
+    if (!skeletonPath.empty()) {
+        auto skeleton = model::extractSkeleton(rig);
+        Diagnostics d = skeleton ? io::writeFileAtomically(skeletonPath, io::writeSkeletonJson(*skeleton))
+                                 : skeleton.takeDiagnostics();
+        print(d);
+        if (hasErrors(d))
+            status = 1;
     }
     if (!outPath.empty()) {
         if (auto d = io::exportGltf(rig, outPath); !d.empty()) {

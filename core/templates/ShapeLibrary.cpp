@@ -33,6 +33,7 @@ std::optional<Shape> readShapeFile(const std::string& file, Diagnostics& diagnos
             continue;
         ShapeCurve curve;
         bool havePoints = false;
+        const std::size_t errorsBefore = diagnostics.size();
         for (const auto& kv : node) {
             const std::string key = kv.first.Scalar();
             if (key == "degree") {
@@ -62,7 +63,9 @@ std::optional<Shape> readShapeFile(const std::string& file, Diagnostics& diagnos
             r.error(node, what + " has no 'points'");
             continue;
         }
-        const std::size_t minimum = curve.periodic ? std::size_t(curve.degree) + 1 : std::size_t(curve.degree) + 1;
+        if (diagnostics.size() != errorsBefore && hasErrors(Diagnostics(diagnostics.begin() + errorsBefore, diagnostics.end())))
+            continue; // one message per mistake: no follow-up complaints about this curve
+        const std::size_t minimum = std::size_t(curve.degree) + 1;
         if (curve.points.size() < minimum) {
             r.error(node, what + " of degree " + std::to_string(curve.degree) + " needs at least " +
                               std::to_string(minimum) + " points, has " + std::to_string(curve.points.size()));

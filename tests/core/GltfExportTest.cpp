@@ -1,0 +1,81 @@
+#include "build/RigBuilder.h"
+#include "core/TestSupport.h"
+#include "io/GltfExport.h"
+#include "model/Skeleton.h"
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <filesystem>
+#include <map>
+
+using namespace rs;
+
+namespace {
+
+Mat4 nodeMatrix(const tinygltf::Node& n)
+{
+    Mat4 m(1.0);
+    if (!n.translation.empty()) m = translationMatrix(Vec3(n.translation[0], n.translation[1], n.translation[2]));
+    if (!n.rotation.empty()) m = m * glm::mat4_cast(Quat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+    if (!n.scale.empty()) m = m * glm::scale(Mat4(1.0), Vec3(n.scale[0], n.scale[1], n.scale[2]));
+    return m;
+}
+
+} // namespace
+
+TEST(GltfExport, WritesOneSkeletonWithConsistentBindMatrices)
+{
+    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const std::string path = test::temporaryPath("biped.glb");
+    ASSERT_TRUE(io::exportGltf(rig, path).empty());
+
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &error, &warning, path)) << error;
+    ASSERT_EQ(m.skins.size(), 1u);
+    const auto& skin = m.skins[0];
+    const auto skeleton = model::extractSkeleton(rig);
+    ASSERT_EQ(skin.joints.size(), skeleton->joints.size());
+    EXPECT_EQ(skin.skeleton, skin.joints[0]);
+    ASSERT_EQ(m.scenes[0].nodes, std::vector<int>{skin.skeleton}) << "a single root";
+
+    // World matrices from the node tree must invert the inverse bind matrices.
+    std::map<int, Mat4> world;
+    std::map<int, int> parent;
+    for (int i = 0; i < int(m.nodes.size()); ++i)
+        for (int c : m.nodes[std::size_t(i)].children) parent[c] = i;
+    const auto& view = m.bufferViews[std::size_t(m.accessors[std::size_t(skin.inverseBindMatrices)].bufferView)];
+    const float* ibm = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset);
+    for (std::size_t k = 0; k < skin.joints.size(); ++k) {
+        const int j = skin.joints[k];
+        world[j] = (parent.count(j) ? world[parent[j]] : Mat4(1.0)) * nodeMatrix(m.nodes[std::size_t(j)]);
+        EXPECT_EQ(m.nodes[std::size_t(j)].name, skeleton->joints[k].name);
+        const Mat4 inverseBind(glm::make_mat4(ibm + 16 * k));
+        EXPECT_LT(maxAbsDifference(world[j] * inverseBind, Mat4(1.0)), 1e-5) << m.nodes[std::size_t(j)].name;
+        EXPECT_LT(glm::length(translationOf(world[j]) - translationOf(skeleton->joints[k].bindWorld)), 1e-9);
+    }
+}
+
+TEST(GltfExport, RefusesASkeletonWithSeveralRootsAndWritesNothing)
+{
+    model::GuideDocument guide = test::loadSample("biped");
+    guide.takeInstance(guide.instanceNamed("world")->id);
+    for (const char* n : {"spine"})
+        guide.instance(guide.instanceNamed(n)->id)->parent = 0, guide.instance(guide.instanceNamed(n)->id)->parentJoint = 0;
+    model::TemplateInstance loose = *guide.instanceNamed("neck");
+    guide.takeInstance(loose.id);
+    loose.parent = loose.parentJoint = 0;
+    guide.insertInstance(loose, guide.instances().size());
+    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const std::string path = test::temporaryPath("roots.glb");
+    std::filesystem::remove(path);
+    const auto d = io::exportGltf(rig, path);
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].format(), path + ": error: the skin hierarchy has 2 roots, an export skeleton needs one: "
+                                    "sk_spine1 (spine::skin.0), sk_neck1 (neck::skin.0)");
+    EXPECT_FALSE(std::filesystem::exists(path));
+}

@@ -1,0 +1,84 @@
+#include "core/TestSupport.h"
+#include "io/GuideFile.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace rs;
+
+TEST(GuideFile, LoadThenSaveIsByteIdentical)
+{
+    const std::string original = test::readText(test::samplePath("biped"));
+    auto doc = io::readGuideText(original, "biped.yml");
+    ASSERT_TRUE(doc.ok()) << formatAll(doc.diagnostics());
+    EXPECT_TRUE(doc.diagnostics().empty());
+    EXPECT_EQ(io::writeGuideText(*doc), original);
+}
+
+TEST(GuideFile, RoundTripsEveryFieldExactly)
+{
+    model::GuideDocument doc;
+    doc.name = "prop 1";
+    model::TemplateInstance a;
+    a.id = 4;
+    a.templateId = "core.joints";
+    a.name = "chain";
+    a.options = {{"number", 5LL}, {"flag", false}, {"ratio", 0.1}, {"label", std::string("on")},
+                 {"pos", Vec3(0.1, -2.5e-7, 3)}};
+    a.joints = {{7, 0, {Vec3(0.1, 0.2, 0.3), Vec3(10, -20, 1e-3), Vec3(1, 2, 1)}, {"heel", "bank in"}}};
+    doc.insertInstance(a, 0);
+    const std::string text = io::writeGuideText(doc);
+    auto back = io::readGuideText(text, "x.yml");
+    ASSERT_TRUE(back.ok()) << formatAll(back.diagnostics()) << text;
+    EXPECT_EQ(*back, doc) << text;
+    EXPECT_EQ(io::writeGuideText(*back), text);
+}
+
+TEST(GuideFile, ReportsEveryBrokenReferenceWithItsLine)
+{
+    const std::string text =
+        "rigsmith_guide: 1\n"
+        "instances:\n"
+        "  - id: 1\n    template: core.joints\n    name: a\n    joints:\n      - {id: 1, t: [0, 0, 0]}\n"
+        "  - id: 2\n    template: core.joints\n    name: a\n    parent: 1\n    hook: 9\n"
+        "    joints:\n      - {id: 2, t: [0, 0, 0]}\n      - {id: 3, parent: 8, t: [0, 1, 0]}\n";
+    auto doc = io::readGuideText(text, "g.yml");
+    ASSERT_FALSE(doc.ok());
+    const auto& d = doc.diagnostics();
+    ASSERT_EQ(d.size(), 3u) << formatAll(d);
+    EXPECT_EQ(d[0].format(), "g.yml:8:5: error: duplicate instance name 'a'");
+    EXPECT_EQ(d[1].format(), "g.yml:8:5: error: instance 'a': hook 9 is not a joint of its parent 'a'");
+    EXPECT_EQ(d[2].format(), "g.yml:8:5: error: instance 'a': joint 3 must name a parent joint listed before it");
+}
+
+TEST(GuideFile, ReportsMalformedYamlAndWrongTypes)
+{
+    auto broken = io::readGuideText("rigsmith_guide: 1\ninstances: [\n", "g.yml");
+    ASSERT_FALSE(broken.ok());
+    EXPECT_EQ(broken.diagnostics()[0].where.line, 3);
+    auto typed = io::readGuideText("rigsmith_guide: 1\ninstances:\n  - id: one\n", "g.yml");
+    ASSERT_FALSE(typed.ok());
+    EXPECT_EQ(typed.diagnostics()[0].format(), "g.yml:3:9: error: instance id must be an integer, got 'one'");
+    auto newer = io::readGuideText("rigsmith_guide: 99\n", "g.yml");
+    ASSERT_FALSE(newer.ok());
+    EXPECT_NE(newer.diagnostics()[0].message.find("newer"), std::string::npos);
+    auto other = io::readGuideText("name: x\n", "g.yml");
+    ASSERT_FALSE(other.ok());
+    EXPECT_NE(other.diagnostics()[0].message.find("not a Rigsmith guide"), std::string::npos);
+}
+
+TEST(GuideFile, FailedSaveLeavesThePreviousFileUntouched)
+{
+    const std::string path = test::temporaryPath("keep.yml");
+    std::ofstream(path) << "previous content\n";
+    // A directory where the temporary file should go makes the write fail.
+    std::filesystem::create_directories(path + ".saving~");
+    const auto d = io::saveGuideFile(test::loadSample("biped"), path);
+    EXPECT_TRUE(hasErrors(d));
+    EXPECT_EQ(test::readText(path), "previous content\n");
+    std::filesystem::remove_all(path + ".saving~");
+    EXPECT_TRUE(io::saveGuideFile(test::loadSample("biped"), path).empty());
+    EXPECT_EQ(test::readText(path), test::readText(test::samplePath("biped")));
+}

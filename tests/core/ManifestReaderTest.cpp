@@ -1,0 +1,105 @@
+#include "core/TestSupport.h"
+#include "templates/ManifestReader.h"
+
+#include <gtest/gtest.h>
+
+using namespace rs;
+using namespace rs::templates;
+
+namespace {
+Result<TemplateManifest> read(const std::string& text)
+{
+    return readManifestText(text, "tpl/template.yml", "arm", "test");
+}
+} // namespace
+
+TEST(ManifestReader, ReadsBuiltinJointsTemplate)
+{
+    const TemplateManifest* m = test::builtinTemplates().find("core.joints");
+    ASSERT_NE(m, nullptr);
+    EXPECT_EQ(m->id, "core.joints");
+    EXPECT_EQ(m->name, "joints");
+    ASSERT_NE(m->findGuide("number"), nullptr);
+    EXPECT_EQ(std::get<long long>(m->findGuide("number")->value), 3);
+    EXPECT_EQ(m->findGuide("number")->min, 1.0);
+    EXPECT_EQ(m->icon, "bone");
+    ASSERT_EQ(m->hooks.size(), 2u);
+    EXPECT_EQ(m->hooks[0].label, "default");
+    EXPECT_EQ(m->hooks[0].structure, "chain[-1]");
+    EXPECT_NE(m->findOpt("do_skin"), nullptr) << "common options are layered under every template";
+}
+
+TEST(ManifestReader, ReportsMalformedYamlWithLineAndColumn)
+{
+    auto r = read("name: arm\nstructure:\n  limb1: .\n  limb2: [/1\n");
+    ASSERT_FALSE(r.ok());
+    ASSERT_EQ(r.diagnostics().size(), 1u);
+    const Diagnostic& d = r.diagnostics()[0];
+    EXPECT_EQ(d.where.file, "tpl/template.yml");
+    EXPECT_EQ(d.where.line, 5);
+    EXPECT_GT(d.where.column, 0);
+    EXPECT_NE(d.format().find("tpl/template.yml:5:"), std::string::npos) << d.format();
+    EXPECT_NE(d.message.find("malformed YAML"), std::string::npos);
+}
+
+TEST(ManifestReader, ReportsWrongTypesAtTheirPosition)
+{
+    auto r = read("name: arm\nguides:\n  number:\n    value: 3\n    min: lots\nshapes:\n  ctrls.0:\n    shape: circle\n    size: [1, 2]\n");
+    ASSERT_FALSE(r.ok());
+    ASSERT_EQ(r.diagnostics().size(), 2u) << formatAll(r.diagnostics());
+    EXPECT_EQ(r.diagnostics()[0].format(), "tpl/template.yml:5:10: error: guides.number.min must be a number, got 'lots'");
+    EXPECT_EQ(r.diagnostics()[1].format(), "tpl/template.yml:9:11: error: shapes.ctrls.0.size must be a number, got a list");
+}
+
+TEST(ManifestReader, WarnsAboutUnknownKeysWithoutFailing)
+{
+    auto r = read("name: arm\nguide:\n  number: 3\nui:\n  icon: limb\n  colour: red\n");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.diagnostics().size(), 2u);
+    EXPECT_EQ(r.diagnostics()[0].format(), "tpl/template.yml:2:1: warning: unknown key 'guide' (ignored)");
+    EXPECT_EQ(r.diagnostics()[1].format(), "tpl/template.yml:6:3: warning: unknown key 'colour' in ui");
+}
+
+TEST(ManifestReader, TypesValuesAndStoresEnumsAsLabels)
+{
+    auto r = read("opts:\n  flag: {value: on}\n  count: {value: 2}\n  ratio: {value: 0.5}\n  label: {value: hello}\n"
+                  "  pos: {value: [1, 2, 3]}\n  orient: {value: 1, enum: [auto, copy, world]}\n"
+                  "  axis: {value: y, enum: {0: x, 1: y, 2: z}}\n");
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics());
+    const TemplateManifest& m = *r;
+    EXPECT_EQ(m.findOpt("flag")->value, Value(true));
+    EXPECT_EQ(m.findOpt("count")->value, Value(2LL));
+    EXPECT_EQ(m.findOpt("ratio")->value, Value(0.5));
+    EXPECT_EQ(m.findOpt("label")->value, Value(std::string("hello")));
+    EXPECT_EQ(m.findOpt("pos")->value, Value(Vec3(1, 2, 3)));
+    EXPECT_EQ(m.findOpt("orient")->value, Value(std::string("copy")));
+    EXPECT_EQ(m.findOpt("axis")->value, Value(std::string("y")));
+}
+
+TEST(ManifestReader, ClampsOutOfRangeDefaultsWithAWarning)
+{
+    auto r = read("guides:\n  number: {value: 0, min: 1, max: 8}\n");
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r->findGuide("number")->value, Value(1LL));
+    ASSERT_EQ(r.diagnostics().size(), 1u);
+    EXPECT_EQ(r.diagnostics()[0].format(), "tpl/template.yml:2:19: warning: guides.number.value 0 is out of range, clamped to 1");
+}
+
+TEST(ManifestReader, OverridesOnePropertyOfACommonOption)
+{
+    auto r = read("opts:\n  branches:\n    value: '[L, R]'\n  own: {value: off}\n");
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics());
+    const Parameter* branches = r->findOpt("branches");
+    ASSERT_NE(branches, nullptr);
+    EXPECT_EQ(branches->value, Value(std::string("[L, R]")));
+    EXPECT_TRUE(branches->yaml) << "the other properties come from the common option";
+    EXPECT_EQ(r->opts.front().name, "branches");
+    EXPECT_EQ(r->opts.size(), commonOptions().size() + 1);
+}
+
+TEST(ManifestReader, RejectsAnEnumValueThatIsNoLabel)
+{
+    auto r = read("opts:\n  orient: {value: sideways, enum: [auto, copy]}\n");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.diagnostics()[0].format(), "tpl/template.yml:2:19: error: opts.orient.value 'sideways' is not one of the enum labels");
+}

@@ -1,0 +1,21 @@
+#pragma once
+// Shared helpers for core tests: paths of test data, samples and golden files.
+#include "model/GuideDocument.h"
+#include "templates/TemplateRegistry.h"
+
+#include <memory>
+#include <string>
+
+namespace rs::test {
+
+std::string dataPath(const std::string& relative);   // tests/data/<relative>
+std::string samplePath(const std::string& name);     // resources/samples/<name>.yml
+std::string readText(const std::string& path);
+// The built-in templates (fails the test on any error diagnostic).
+const templates::TemplateRegistry& builtinTemplates();
+model::GuideDocument loadSample(const std::string& name);
+// Compares `actual` with the golden file; RIGSMITH_UPDATE_GOLDEN=1 rewrites it.
+void expectMatchesGolden(const std::string& actual, const std::string& goldenRelativePath);
+std::string temporaryPath(const std::string& name);
+
+} // namespace rs::test
