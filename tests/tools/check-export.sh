@@ -19,10 +19,14 @@ case "$mode" in
   blender)
     command -v blender >/dev/null || { echo "blender is not installed: run ./test.sh" >&2; exit 1; }
     for f in "$out/$name.glb" "$out/$name.gltf"; do
-      blender -b --factory-startup --python "$here/blender-check.py" -- "$f" "$out/$name.skeleton.json" 2>&1 |
-        grep -E "^(CHECK|ERROR|Traceback|  File|[A-Za-z]*Error)" || true
-      blender -b --factory-startup --python "$here/blender-check.py" -- "$f" "$out/$name.skeleton.json" \
-        >/dev/null 2>&1 || { echo "Blender check failed for $f" >&2; exit 1; }
+      status=0
+      blender -b --factory-startup --python-exit-code 1 --python "$here/blender-check.py" -- \
+        "$f" "$out/$name.skeleton.json" >"$f.blender.log" 2>&1 || status=$?
+      grep -E "^(CHECK|ERROR|Traceback|  File|[A-Za-z]*Error)" "$f.blender.log" || true
+      if [ "$status" -ne 0 ] || ! grep -q "^CHECK" "$f.blender.log"; then
+        echo "Blender check failed for $f (log: $f.blender.log)" >&2
+        exit 1
+      fi
     done ;;
   *) echo "unknown mode $mode" >&2; exit 2 ;;
 esac
