@@ -1,0 +1,102 @@
+// MainWindow's actions, menus and toolbar: one topic file so the window class
+// stays a thin composition root.
+#include "MainWindow.h"
+
+#include "base/Paths.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QFileDialog>
+#include <QMenuBar>
+#include <QToolBar>
+
+namespace rs::app {
+
+namespace {
+
+QAction* makeAction(QObject* owner, const QString& objectName, const QString& text, const QKeySequence& shortcut,
+                    const QString& icon = {})
+{
+    auto* a = new QAction(text, owner);
+    a->setObjectName(objectName);
+    if (!shortcut.isEmpty())
+        a->setShortcut(shortcut);
+    if (!icon.isEmpty())
+        a->setIcon(QIcon(QString::fromStdString(iconsDirectory()) + "/" + icon + ".svg"));
+    return a;
+}
+
+} // namespace
+
+QAction* MainWindow::action(const QString& objectName) const
+{
+    return findChild<QAction*>(objectName);
+}
+
+void MainWindow::createActions()
+{
+    QAction* open = makeAction(this, "open", tr("&Open..."), QKeySequence::Open);
+    QAction* save = makeAction(this, "save", tr("&Save"), QKeySequence::Save);
+    QAction* saveAs = makeAction(this, "saveAs", tr("Save &As..."), QKeySequence::SaveAs);
+    QAction* exportGlb = makeAction(this, "exportGlb", tr("&Export .glb..."), QKeySequence(tr("Ctrl+E")), "export");
+    QAction* quit = makeAction(this, "quit", tr("&Quit"), QKeySequence::Quit);
+    QAction* undo = makeAction(this, "undo", tr("&Undo"), QKeySequence::Undo);
+    QAction* redo = makeAction(this, "redo", tr("&Redo"), QKeySequence::Redo);
+    QAction* build = makeAction(this, "build", tr("&Build"), QKeySequence(tr("Ctrl+B")), "build");
+
+    const QString filter = tr("Rigsmith guides (*.yml *.yaml)");
+    connect(open, &QAction::triggered, this, [this, filter] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open guide"), QString::fromStdString(samplesDirectory()), filter);
+        if (!path.isEmpty())
+            openFile(path);
+    });
+    connect(saveAs, &QAction::triggered, this, [this, filter] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save guide"), m_session.filePath(), filter);
+        if (!path.isEmpty())
+            saveFile(path);
+    });
+    connect(save, &QAction::triggered, this, [this, saveAs] {
+        if (m_session.filePath().isEmpty())
+            saveAs->trigger();
+        else
+            saveFile(m_session.filePath());
+    });
+    connect(exportGlb, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export glTF binary"), QString(), tr("glTF binary (*.glb)"));
+        if (!path.isEmpty())
+            exportTo(path);
+    });
+    connect(quit, &QAction::triggered, this, &QWidget::close);
+    connect(undo, &QAction::triggered, this, [this] { m_session.history().undo(); });
+    connect(redo, &QAction::triggered, this, [this] { m_session.history().redo(); });
+    connect(build, &QAction::triggered, this, &MainWindow::buildRig);
+    auto updateUndo = [this, undo, redo] {
+        auto& h = m_session.history();
+        undo->setEnabled(h.canUndo());
+        redo->setEnabled(h.canRedo());
+        undo->setText(h.canUndo() ? tr("&Undo %1").arg(QString::fromStdString(h.undoText())) : tr("&Undo"));
+        redo->setText(h.canRedo() ? tr("&Redo %1").arg(QString::fromStdString(h.redoText())) : tr("&Redo"));
+    };
+    connect(&m_session, &EditorSession::documentChanged, this, updateUndo);
+    updateUndo();
+
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addActions({open, save, saveAs});
+    file->addSeparator();
+    file->addAction(exportGlb);
+    file->addSeparator();
+    file->addAction(quit);
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addActions({undo, redo});
+    QMenu* rig = menuBar()->addMenu(tr("&Rig"));
+    rig->addAction(build);
+
+    QToolBar* bar = addToolBar(tr("Main"));
+    bar->setObjectName("mainToolBar");
+    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    bar->addActions({build, exportGlb});
+    bar->addSeparator();
+    bar->addActions({undo, redo});
+}
+
+} // namespace rs::app

@@ -1,0 +1,109 @@
+#include "EditorSession.h"
+
+#include "build/RigBuilder.h"
+#include "edit/GuideEdits.h"
+#include "io/GltfExport.h"
+#include "io/GuideFile.h"
+
+#include <chrono>
+
+namespace rs::app {
+
+EditorSession::EditorSession(QObject* parent) : QObject(parent)
+{
+    qRegisterMetaType<rs::Diagnostics>();
+    m_templates = templates::TemplateRegistry::loadDefault(m_templateDiagnostics);
+    m_history.addListener([this] {
+        m_rigStale = m_rig.has_value();
+        if (m_selection.instance != model::kNoId && !m_document.instance(m_selection.instance))
+            m_selection = {};
+        emit documentChanged();
+    });
+}
+
+EditorSession::~EditorSession() = default;
+
+bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
+{
+    auto loaded = io::readGuideFile(path.toStdString());
+    diagnostics = loaded.takeDiagnostics();
+    if (!loaded)
+        return false;
+    m_filePath = path;
+    m_selection = {};
+    m_rig.reset();
+    m_rigStale = false;
+    m_history.reset(loaded.take());
+    m_history.setClean();
+    emit rigChanged();
+    emit selectionChanged();
+    return true;
+}
+
+bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
+{
+    diagnostics = io::saveGuideFile(m_document, path.toStdString());
+    if (hasErrors(diagnostics))
+        return false;
+    m_filePath = path;
+    m_history.setClean();
+    return true;
+}
+
+double EditorSession::build()
+{
+    const auto start = std::chrono::steady_clock::now();
+    m_rig = build::buildRig(m_document, *m_templates);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    m_rigStale = false;
+    if (m_selection.node != model::kNoNode && m_selection.node >= m_rig->nodes.size())
+        m_selection.node = model::kNoNode;
+    emit rigChanged();
+    emit diagnosticsReported(m_rig->diagnostics);
+    return ms;
+}
+
+Diagnostics EditorSession::exportGltf(const QString& path) const
+{
+    if (!m_rig)
+        return {makeError({path.toStdString(), 0, 0}, "build the rig before exporting it")};
+    return io::exportGltf(*m_rig, path.toStdString());
+}
+
+QString EditorSession::addTemplate(const QString& templateId, model::JointId hookJoint)
+{
+    auto instance = build::makeInstance(m_document, *m_templates, templateId.toStdString(), hookJoint);
+    if (!instance)
+        return QString::fromStdString(instance.diagnostics().front().message);
+    const model::InstanceId id = instance->id;
+    if (auto error = edit::addInstance(m_history, instance.take()))
+        return QString::fromStdString(*error);
+    select({id, model::kNoId, model::kNoNode});
+    return {};
+}
+
+QString EditorSession::removeInstance(model::InstanceId id)
+{
+    auto error = edit::removeInstance(m_history, id);
+    return error ? QString::fromStdString(*error) : QString();
+}
+
+QString EditorSession::renameInstance(model::InstanceId id, const QString& name)
+{
+    auto error = edit::renameInstance(m_history, id, name.toStdString());
+    return error ? QString::fromStdString(*error) : QString();
+}
+
+void EditorSession::select(const Selection& selection)
+{
+    m_selection = selection;
+    emit selectionChanged();
+}
+
+model::InstanceId EditorSession::instanceNamed(const QString& name) const
+{
+    const auto* instance = m_document.instanceNamed(name.toStdString());
+    return instance ? instance->id : model::kNoId;
+}
+
+} // namespace rs::app

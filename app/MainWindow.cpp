@@ -1,0 +1,189 @@
+#include "MainWindow.h"
+
+#include "LogPanel.h"
+#include "OutlinerView.h"
+#include "ViewportWidget.h"
+
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QStatusBar>
+
+namespace rs::app {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
+{
+    createActions();
+    createDocks();
+    connectDocument();
+}
+
+void MainWindow::createDocks()
+{
+    m_viewport = new viewport::ViewportWidget(this);
+    m_viewport->setObjectName("viewport");
+    setCentralWidget(m_viewport);
+
+    m_outliner = new widgets::OutlinerView(this);
+    auto* outlinerDock = new QDockWidget(tr("Outliner"), this);
+    outlinerDock->setObjectName("outlinerDock");
+    outlinerDock->setWidget(m_outliner);
+    addDockWidget(Qt::LeftDockWidgetArea, outlinerDock);
+
+    m_log = new widgets::LogPanel(this);
+    auto* logDock = new QDockWidget(tr("Build log"), this);
+    logDock->setObjectName("logDock");
+    logDock->setWidget(m_log);
+    addDockWidget(Qt::BottomDockWidgetArea, logDock);
+
+    m_status = new QLabel(this);
+    statusBar()->addPermanentWidget(m_status);
+    resize(1400, 900);
+}
+
+void MainWindow::connectDocument()
+{
+    connect(&m_session, &EditorSession::documentChanged, this, [this] {
+        refreshViews();
+        updateTitle();
+    });
+    connect(&m_session, &EditorSession::rigChanged, this, &MainWindow::refreshScene);
+    connect(&m_session, &EditorSession::selectionChanged, this, [this] {
+        m_outliner->selectInstance(m_session.selection().instance);
+        refreshScene();
+    });
+    connect(&m_session, &EditorSession::diagnosticsReported, m_log, &widgets::LogPanel::addDiagnostics);
+
+    connect(m_outliner, &widgets::OutlinerView::instanceSelected, this,
+            [this](quint32 id) { m_session.select({id, model::kNoId, model::kNoNode}); });
+    connect(m_outliner, &widgets::OutlinerView::addTemplateRequested, this, [this](const QString& id, quint32 joint) {
+        if (const QString error = m_session.addTemplate(id, joint); !error.isEmpty())
+            m_log->addMessage(error, Severity::Error);
+    });
+    connect(m_outliner, &widgets::OutlinerView::removeRequested, this, [this](quint32 id) {
+        if (const QString error = m_session.removeInstance(id); !error.isEmpty())
+            m_log->addMessage(error, Severity::Error);
+    });
+    connect(m_outliner, &widgets::OutlinerView::renameRequested, this, [this](quint32 id, const QString& name) {
+        if (const QString error = m_session.renameInstance(id, name); !error.isEmpty()) {
+            m_log->addMessage(error, Severity::Error);
+            refreshViews(); // put the old name back in the tree
+        }
+    });
+    connect(m_log, &widgets::LogPanel::subjectActivated, this, [this](const QString& subject) {
+        if (const auto id = m_session.instanceNamed(subject))
+            m_session.select({id, model::kNoId, model::kNoNode});
+    });
+    connect(m_viewport, &viewport::ViewportWidget::guideJointPicked, this,
+            [this](quint32 joint, quint32 owner) { m_session.select({owner, joint, model::kNoNode}); });
+    connect(m_viewport, &viewport::ViewportWidget::controllerPicked, this, [this](quint32 node) {
+        const auto* rig = m_session.rig();
+        m_session.select({rig ? rig->nodes[node].owner : model::kNoId, model::kNoId, node});
+    });
+    connect(m_viewport, &viewport::ViewportWidget::nothingPicked, this, [this] { m_session.select({}); });
+
+    m_log->addDiagnostics(m_session.templateDiagnostics());
+    refreshViews();
+    updateTitle();
+}
+
+void MainWindow::refreshViews()
+{
+    m_outliner->refresh(m_session.document(), m_session.templates());
+    m_outliner->selectInstance(m_session.selection().instance);
+    refreshScene();
+}
+
+void MainWindow::refreshScene()
+{
+    const Selection& s = m_session.selection();
+    m_viewport->setScene(viewport::makeScene(m_session.document(), m_session.rig(), {s.instance, s.joint, s.node}));
+    const auto* rig = m_session.rig();
+    if (!rig)
+        m_status->setText(tr("Guide: %1 templates").arg(m_session.document().instances().size()));
+    else
+        m_status->setText(tr("Rig%1: %2 controllers, %3 skin joints")
+                              .arg(m_session.isRigStale() ? tr(" (out of date, press Build)") : QString())
+                              .arg(rig->count(model::RigNodeKind::Controller))
+                              .arg(rig->count(model::RigNodeKind::Joint)));
+}
+
+void MainWindow::updateTitle()
+{
+    const QString name = m_session.filePath().isEmpty() ? tr("untitled") : QFileInfo(m_session.filePath()).fileName();
+    setWindowTitle(QString("%1%2 - Rigsmith").arg(name, m_session.history().isClean() ? "" : "*"));
+}
+
+void MainWindow::report(const QString& what, const Diagnostics& diagnostics)
+{
+    if (!what.isEmpty())
+        m_log->addMessage(what, hasErrors(diagnostics) ? Severity::Error : Severity::Note);
+    m_log->addDiagnostics(diagnostics);
+}
+
+bool MainWindow::openFile(const QString& path)
+{
+    Diagnostics diagnostics;
+    const bool ok = m_session.open(path, diagnostics);
+    report(ok ? tr("Opened %1").arg(path) : tr("Could not open %1; the open guide is unchanged").arg(path), diagnostics);
+    if (ok) {
+        updateTitle();
+        m_viewport->frameAll();
+    }
+    return ok;
+}
+
+bool MainWindow::saveFile(const QString& path)
+{
+    Diagnostics diagnostics;
+    const bool ok = m_session.save(path, diagnostics);
+    report(ok ? tr("Saved %1").arg(path) : tr("Could not save %1").arg(path), diagnostics);
+    updateTitle();
+    return ok;
+}
+
+bool MainWindow::exportTo(const QString& path)
+{
+    if (!m_session.rig() || m_session.isRigStale())
+        buildRig();
+    const Diagnostics diagnostics = m_session.exportGltf(path);
+    report(hasErrors(diagnostics) ? tr("Export failed") : tr("Exported %1").arg(path), diagnostics);
+    return !hasErrors(diagnostics);
+}
+
+void MainWindow::buildRig()
+{
+    const double ms = m_session.build();
+    const auto* rig = m_session.rig();
+    m_log->addMessage(tr("Built %1 nodes in %2 ms").arg(rig->nodes.size()).arg(ms, 0, 'f', 2),
+                      hasErrors(rig->diagnostics) ? Severity::Error : Severity::Note);
+    statusBar()->showMessage(tr("Build: %1 ms").arg(ms, 0, 'f', 2), 5000);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!m_session.history().isClean() && isVisible() && !property("skipUnsavedPrompt").toBool()) {
+        const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("Save the guide before closing?"),
+                                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer == QMessageBox::Cancel) {
+            event->ignore();
+            return;
+        }
+        if (answer == QMessageBox::Save && !action("save")->isEnabled()) {
+            event->ignore();
+            return;
+        }
+        if (answer == QMessageBox::Save) {
+            action("save")->trigger();
+            if (!m_session.history().isClean()) {
+                event->ignore();
+                return;
+            }
+        }
+    }
+    event->accept();
+}
+
+} // namespace rs::app

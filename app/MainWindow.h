@@ -1,0 +1,51 @@
+#pragma once
+// The editor window: the composition root. It creates the actions and docks and
+// wires the session (core) to the views; it holds no rigging logic itself.
+#include "EditorSession.h"
+
+#include <QMainWindow>
+
+class QAction;
+class QLabel;
+
+namespace rs::viewport { class ViewportWidget; }
+namespace rs::widgets { class OutlinerView; class LogPanel; }
+
+namespace rs::app {
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+
+    EditorSession& session() { return m_session; }
+    viewport::ViewportWidget* viewportWidget() const { return m_viewport; }
+    widgets::OutlinerView* outliner() const { return m_outliner; }
+    widgets::LogPanel* log() const { return m_log; }
+    QAction* action(const QString& objectName) const;
+
+    bool openFile(const QString& path);
+    bool saveFile(const QString& path);
+    bool exportTo(const QString& path);
+    void buildRig();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createActions();   // Actions.cpp
+    void createDocks();
+    void connectDocument();
+    void refreshViews();
+    void refreshScene();
+    void updateTitle();
+    void report(const QString& what, const Diagnostics& diagnostics);
+
+    EditorSession m_session;
+    viewport::ViewportWidget* m_viewport = nullptr;
+    widgets::OutlinerView* m_outliner = nullptr;
+    widgets::LogPanel* m_log = nullptr;
+    QLabel* m_status = nullptr;
+};
+
+} // namespace rs::app

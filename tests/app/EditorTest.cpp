@@ -1,0 +1,152 @@
+// GUI tests that drive the real editor widgets under Xvfb (QTest + GoogleTest).
+#include "MainWindow.h"
+
+#include "LogPanel.h"
+#include "OutlinerView.h"
+#include "ViewportWidget.h"
+#include "io/GuideFile.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QMenu>
+#include <QTest>
+#include <QToolBar>
+#include <QToolButton>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace rs;
+
+namespace {
+
+const QString kSample = QString(RIGSMITH_SOURCE_DIR) + "/resources/samples/biped.yml";
+
+std::string outputPath(const std::string& name)
+{
+    const auto dir = std::filesystem::temp_directory_path() / "rigsmith-editor-tests";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
+
+void clickInstance(app::MainWindow& w, const QString& name)
+{
+    widgets::OutlinerView* outliner = w.outliner();
+    const QModelIndexList found = outliner->model()->match(outliner->model()->index(0, 0), Qt::DisplayRole, name, 1,
+                                                           Qt::MatchRecursive | Qt::MatchExactly);
+    ASSERT_EQ(found.size(), 1) << name.toStdString();
+    outliner->scrollTo(found.front());
+    QTest::mouseClick(outliner->viewport(), Qt::LeftButton, {}, outliner->visualRect(found.front()).center());
+}
+
+struct Editor {
+    app::MainWindow window;
+    Editor()
+    {
+        window.setProperty("skipUnsavedPrompt", true);
+        window.show();
+        EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
+        EXPECT_TRUE(window.openFile(kSample));
+    }
+};
+
+} // namespace
+
+TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
+{
+    Editor e;
+    app::MainWindow& w = e.window;
+    const std::string original = io::writeGuideText(w.session().document());
+    const auto* arm = w.session().document().instanceNamed("arm_L");
+    const model::JointId hand = arm->joints.back().id;
+
+    clickInstance(w, "arm_L");
+    ASSERT_EQ(w.session().selection().instance, arm->id) << "clicking the outliner selects the instance";
+
+    // Right-click menu: Add template > default (the arm's last joint) > core > joints.
+    std::unique_ptr<QMenu> menu(w.outliner()->createContextMenu(w.outliner()->selectedInstance(), &w));
+    auto* add = menu->findChild<QMenu*>("addTemplate");
+    ASSERT_NE(add, nullptr);
+    QStringList hooks;
+    for (QMenu* m : add->findChildren<QMenu*>(QString(), Qt::FindDirectChildrenOnly))
+        hooks << m->title();
+    EXPECT_EQ(hooks.join(", ").toStdString(), "default, joint[0], joint[1], joint[2], joint[3]")
+        << "one entry per ui.hooks node of core.joints (default: chain[-1], joint: chain[:-1])";
+    auto* atDefault = add->findChild<QMenu*>("hook:default");
+    ASSERT_NE(atDefault, nullptr);
+    QAction* addJoints = atDefault->findChild<QAction*>("add:core.joints");
+    ASSERT_NE(addJoints, nullptr);
+    addJoints->trigger();
+
+    const auto& doc = w.session().document();
+    ASSERT_EQ(doc.instances().size(), 8u);
+    const model::TemplateInstance& added = doc.instances().back();
+    EXPECT_EQ(added.parentJoint, hand);
+    EXPECT_EQ(w.session().selection().instance, added.id);
+
+    // Build through the toolbar button a user would press.
+    QToolBar* bar = w.findChild<QToolBar*>("mainToolBar");
+    auto* buildButton = qobject_cast<QToolButton*>(bar->widgetForAction(w.action("build")));
+    ASSERT_NE(buildButton, nullptr);
+    QTest::mouseClick(buildButton, Qt::LeftButton);
+    const model::Rig* rig = w.session().rig();
+    ASSERT_NE(rig, nullptr);
+    EXPECT_FALSE(hasErrors(rig->diagnostics)) << formatAll(rig->diagnostics);
+    const auto root = rig->find(added.name + "::roots.0");
+    ASSERT_TRUE(root);
+    EXPECT_EQ(rig->nodes[rig->nodes[*root].parent].id, "arm_L::ctrls.4") << "hung under the hand's hook";
+    EXPECT_FALSE(w.viewportWidget()->scene().curves.empty()) << "controller curves shown after build";
+    QTest::qWait(100);
+    w.grab().save(QString::fromStdString(outputPath("editor-after-build.png")));
+
+    const std::string glb = outputPath("editor-export.glb");
+    std::filesystem::remove(glb);
+    ASSERT_TRUE(w.exportTo(QString::fromStdString(glb)));
+    EXPECT_GT(std::filesystem::file_size(glb), 1000u);
+
+    int undos = 0;
+    while (w.action("undo")->isEnabled() && undos < 100) {
+        w.action("undo")->trigger();
+        ++undos;
+    }
+    EXPECT_EQ(undos, 1);
+    EXPECT_EQ(io::writeGuideText(w.session().document()), original);
+    EXPECT_EQ(w.outliner()->model()->rowCount(), 1) << "one top-level instance (world) again";
+}
+
+TEST(Editor, AFileThatFailsToLoadLeavesTheOpenGuideUntouched)
+{
+    Editor e;
+    const std::string before = io::writeGuideText(e.window.session().document());
+    const std::string broken = outputPath("broken.yml");
+    std::ofstream(broken) << "rigsmith_guide: 1\ninstances:\n  - id: 1\n    template: [\n";
+    EXPECT_FALSE(e.window.openFile(QString::fromStdString(broken)));
+    EXPECT_EQ(io::writeGuideText(e.window.session().document()), before);
+    const QString lastLine = e.window.log()->item(e.window.log()->count() - 1)->text();
+    EXPECT_TRUE(lastLine.startsWith(QString::fromStdString(broken) + ":5:")) << lastLine.toStdString();
+}
+
+TEST(Editor, ClickingAGuideJointInTheViewportSelectsItsInstance)
+{
+    Editor e;
+    app::MainWindow& w = e.window;
+    w.viewportWidget()->frameAll();
+    QTest::qWait(50);
+    const auto& doc = w.session().document();
+    const auto* neck = doc.instanceNamed("neck");
+    const QPoint at = w.viewportWidget()->toWidgetPixels(translationOf(doc.jointWorldMatrix(neck->joints[2].id)));
+    QTest::mouseClick(w.viewportWidget(), Qt::LeftButton, {}, at);
+    EXPECT_EQ(w.session().selection().instance, neck->id);
+    EXPECT_EQ(w.session().selection().joint, neck->joints[2].id);
+    EXPECT_EQ(w.outliner()->selectedInstance(), neck->id) << "selection synchronised with the outliner";
+}
+
+int main(int argc, char** argv)
+{
+    viewport::requestOpenGl33Core();
+    QApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

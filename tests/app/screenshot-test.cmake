@@ -1,0 +1,13 @@
+# Runs `rigsmith --screenshot OUT GUIDE` and checks a non-trivial PNG was written.
+file(REMOVE ${OUT})
+execute_process(COMMAND ${EDITOR} --screenshot ${OUT} ${GUIDE} RESULT_VARIABLE status TIMEOUT 50)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "rigsmith --screenshot exited with ${status}")
+endif()
+if(NOT EXISTS ${OUT})
+  message(FATAL_ERROR "no screenshot written to ${OUT}")
+endif()
+file(SIZE ${OUT} size)
+if(size LESS 20000)
+  message(FATAL_ERROR "screenshot ${OUT} is only ${size} bytes: the window did not render")
+endif()

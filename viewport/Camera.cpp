@@ -1,0 +1,63 @@
+#include "Camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace rs::viewport {
+
+glm::dvec3 Camera::position() const
+{
+    const glm::dvec3 forward(std::cos(pitch) * std::sin(yaw) * -1.0, std::sin(pitch), -std::cos(pitch) * std::cos(yaw));
+    return target - forward * distance;
+}
+
+glm::dmat4 Camera::viewMatrix() const
+{
+    return glm::lookAt(position(), target, glm::dvec3(0.0, 1.0, 0.0));
+}
+
+glm::dmat4 Camera::projectionMatrix(double aspect) const
+{
+    return glm::perspective(fovYRadians, std::max(aspect, 1e-3), nearPlane, farPlane);
+}
+
+void Camera::orbit(double dxPixels, double dyPixels)
+{
+    yaw -= dxPixels * 0.01;
+    pitch = std::clamp(pitch - dyPixels * 0.01, -1.55, 1.55);
+}
+
+void Camera::pan(double dxPixels, double dyPixels, double viewportHeightPixels)
+{
+    const double metresPerPixel = 2.0 * distance * std::tan(fovYRadians / 2.0) / std::max(viewportHeightPixels, 1.0);
+    const glm::dmat4 view = viewMatrix();
+    const glm::dvec3 right(view[0][0], view[1][0], view[2][0]);
+    const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);
+    target += (-dxPixels * right + dyPixels * up) * metresPerPixel;
+}
+
+void Camera::dolly(double steps)
+{
+    distance = std::clamp(distance * std::pow(0.85, steps), 0.05, 500.0);
+}
+
+void Camera::frame(const glm::dvec3& lo, const glm::dvec3& hi)
+{
+    target = (lo + hi) * 0.5;
+    const double radius = std::max(glm::length(hi - lo) * 0.5, 0.1);
+    distance = radius / std::sin(fovYRadians / 2.0) * 1.05;
+}
+
+bool projectToPixels(const glm::dmat4& viewProjection, const glm::dvec3& world, double width, double height,
+                     glm::dvec2& pixel)
+{
+    const glm::dvec4 clip = viewProjection * glm::dvec4(world, 1.0);
+    if (clip.w <= 1e-9)
+        return false;
+    const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+    pixel = glm::dvec2((ndc.x * 0.5 + 0.5) * width, (1.0 - (ndc.y * 0.5 + 0.5)) * height);
+    return true;
+}
+
+} // namespace rs::viewport

@@ -1,0 +1,35 @@
+#pragma once
+// An orbit camera (Maya style): it looks at `target` from `distance` away,
+// turned by yaw/pitch (radians). Y-up, metres. Pure maths, no GL.
+#include <glm/glm.hpp>
+
+namespace rs::viewport {
+
+class Camera {
+public:
+    glm::dmat4 viewMatrix() const;
+    glm::dmat4 projectionMatrix(double aspect) const;
+    glm::dvec3 position() const;
+
+    // Drags in pixels: orbit turns, pan slides the target in the view plane
+    // (so the point under the cursor follows it), dolly scales the distance.
+    void orbit(double dxPixels, double dyPixels);
+    void pan(double dxPixels, double dyPixels, double viewportHeightPixels);
+    void dolly(double steps);
+    // Frames a bounding box so it fills the view.
+    void frame(const glm::dvec3& lo, const glm::dvec3& hi);
+
+    glm::dvec3 target{0.0, 1.0, 0.0};
+    double distance = 4.0;
+    double yaw = 0.5;            // around +Y, 0 looks down -Z
+    double pitch = -0.3;         // negative looks down on the scene
+    double fovYRadians = 0.7;
+    double nearPlane = 0.01, farPlane = 1000.0;
+};
+
+// Projects a world point to pixel coordinates (origin top-left); z > 1 or < -1
+// means outside the depth range. Returns false for points behind the camera.
+bool projectToPixels(const glm::dmat4& viewProjection, const glm::dvec3& world, double width, double height,
+                     glm::dvec2& pixel);
+
+} // namespace rs::viewport

@@ -1,0 +1,63 @@
+#include "Scene.h"
+
+namespace rs::viewport {
+
+bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const
+{
+    lo = glm::dvec3(1e300);
+    hi = glm::dvec3(-1e300);
+    bool any = false;
+    auto add = [&](const glm::dvec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); any = true; };
+    for (const auto& j : guideJoints) add(j.position);
+    for (const auto& c : curves) for (const auto& p : c.points) add(p);
+    for (const auto& j : skinJoints) add(j.position);
+    return any;
+}
+
+Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection)
+{
+    Scene scene;
+    for (const auto& instance : guide.instances())
+        for (const auto& joint : instance.joints) {
+            SceneJoint j;
+            j.id = joint.id;
+            j.owner = instance.id;
+            j.position = translationOf(guide.jointWorldMatrix(joint.id));
+            const model::JointId parent = joint.parent != model::kNoId ? joint.parent : instance.parentJoint;
+            if (parent != model::kNoId && guide.joint(parent)) {
+                j.hasParent = true;
+                j.parentPosition = translationOf(guide.jointWorldMatrix(parent));
+            }
+            j.selected = joint.id == selection.joint || (selection.joint == model::kNoId && instance.id == selection.instance);
+            scene.guideJoints.push_back(j);
+        }
+    if (!rig)
+        return scene;
+    for (model::RigNodeIndex i = 0; i < rig->nodes.size(); ++i) {
+        const model::RigNode& node = rig->nodes[i];
+        if (node.kind == model::RigNodeKind::Controller)
+            for (const auto& curve : node.curves) {
+                SceneCurve c;
+                c.node = i;
+                c.color = curve.color;
+                c.selected = i == selection.node || (selection.node == model::kNoNode && node.owner == selection.instance &&
+                                                     selection.instance != model::kNoId);
+                for (const auto& p : curve.points)
+                    c.points.push_back(glm::dvec3(node.worldMatrix * glm::dvec4(p, 1.0)));
+                scene.curves.push_back(std::move(c));
+            }
+        if (node.kind == model::RigNodeKind::Joint) {
+            SceneJoint j;
+            j.owner = node.owner;
+            j.position = translationOf(node.worldMatrix);
+            if (node.virtualParent != model::kNoNode) {
+                j.hasParent = true;
+                j.parentPosition = translationOf(rig->nodes[node.virtualParent].worldMatrix);
+            }
+            scene.skinJoints.push_back(j);
+        }
+    }
+    return scene;
+}
+
+} // namespace rs::viewport

@@ -1,0 +1,48 @@
+#pragma once
+// What the viewport draws, in world space, derived from the guide and the built
+// rig: guide joints with their bones, controller curves, skin joints. Pure data;
+// the Renderer turns it into GL buffers and Picking hit-tests it.
+#include "model/GuideDocument.h"
+#include "model/Rig.h"
+
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace rs::viewport {
+
+struct SceneJoint {
+    model::JointId id = model::kNoId;
+    model::InstanceId owner = model::kNoId;
+    glm::dvec3 position{0.0};
+    glm::dvec3 parentPosition{0.0};
+    bool hasParent = false;
+    bool selected = false;
+};
+
+struct SceneCurve {
+    model::RigNodeIndex node = model::kNoNode;
+    std::vector<glm::dvec3> points; // world-space polyline
+    glm::dvec3 color{1.0, 1.0, 0.0};
+    bool selected = false;
+};
+
+struct SceneSelection {
+    model::InstanceId instance = model::kNoId;
+    model::JointId joint = model::kNoId;
+    model::RigNodeIndex node = model::kNoNode;
+};
+
+struct Scene {
+    std::vector<SceneJoint> guideJoints;
+    std::vector<SceneCurve> curves;
+    std::vector<SceneJoint> skinJoints;   // id unused; owner = instance
+    bool showGuides = true;
+
+    // Bounds of everything drawn; false when the scene is empty.
+    bool bounds(glm::dvec3& lo, glm::dvec3& hi) const;
+};
+
+// `rig` may be null (not built yet).
+Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection);
+
+} // namespace rs::viewport

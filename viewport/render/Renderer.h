@@ -1,0 +1,35 @@
+#pragma once
+// OpenGL 3.3 core renderer for a Scene: ground grid, guide joints and bones,
+// controller curves, skin joints. Host-agnostic: the caller (a Qt widget or a
+// GLFW window) makes its context current before every call. GL functions come
+// from libepoxy, so no GL header leaks out of this library's .cpp files.
+#include "../Camera.h"
+#include "../Scene.h"
+
+#include <memory>
+#include <string>
+
+namespace rs::viewport {
+
+class Renderer {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Compiles shaders and creates buffers; false with `error` set on failure
+    // (for example a context older than 3.3 core).
+    bool initialize(std::string& error);
+    bool isInitialized() const;
+    // Draws into the currently bound framebuffer, `width` x `height` device pixels.
+    void render(const Scene& scene, const Camera& camera, int width, int height);
+    // Frees GL objects; needs the same context current.
+    void release();
+
+private:
+    struct GlState;
+    std::unique_ptr<GlState> m_gl;
+};
+
+} // namespace rs::viewport
