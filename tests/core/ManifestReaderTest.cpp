@@ -1,5 +1,10 @@
 #include "core/TestSupport.h"
 #include "templates/ManifestReader.h"
+#include "templates/TemplateRegistry.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -102,4 +107,23 @@ TEST(ManifestReader, RejectsAnEnumValueThatIsNoLabel)
     auto r = read("opts:\n  orient: {value: sideways, enum: [auto, copy]}\n");
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.diagnostics()[0].format(), "tpl/template.yml:2:19: error: opts.orient.value 'sideways' is not one of the enum labels");
+}
+
+TEST(TemplateRegistry, ScansUserFoldersFromTheTemplatePathOverBuiltins)
+{
+    const std::filesystem::path user = test::temporaryPath("user-templates");
+    std::filesystem::create_directories(user / "prop" / "lamp");
+    std::filesystem::create_directories(user / "core" / "joints");
+    std::ofstream(user / "prop" / "lamp" / "template.yml") << "name: lamp\ndesc: A lamp.\nstructure:\n  chain: /*\n";
+    std::ofstream(user / "core" / "joints" / "template.yml") << "name: bones\nstructure:\n  chain: /*\n";
+    ::setenv("RIGSMITH_TEMPLATE_PATH", ("/nonexistent/folder:" + user.string()).c_str(), 1);
+    Diagnostics d;
+    auto registry = TemplateRegistry::loadDefault(d);
+    ::unsetenv("RIGSMITH_TEMPLATE_PATH");
+    ASSERT_NE(registry->find("prop.lamp"), nullptr);
+    EXPECT_EQ(registry->find("prop.lamp")->desc, "A lamp.");
+    EXPECT_EQ(registry->find("core.joints")->name, "bones") << "a later folder overrides a built-in id";
+    EXPECT_NE(registry->find("world.character"), nullptr);
+    ASSERT_FALSE(d.empty());
+    EXPECT_EQ(d[0].format(), "/nonexistent/folder: warning: template folder does not exist");
 }
