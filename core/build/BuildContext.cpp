@@ -68,7 +68,7 @@ std::optional<std::vector<model::JointId>> BuildContext::structure(const std::st
 
 Mat4 BuildContext::guideWorldMatrix(model::JointId joint) const
 {
-    return m_assembly.guide.jointWorldMatrix(joint);
+    return m_assembly.guideWorldMatrix(joint);
 }
 
 std::string BuildContext::name(const std::string& token, std::optional<int> index) const

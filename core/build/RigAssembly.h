@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <unordered_map>
 
 namespace rs::build {
 
@@ -23,6 +24,18 @@ struct RigAssembly {
     std::map<model::JointId, model::RigNodeIndex> hooks;                          // physical
     std::map<std::string, std::map<model::JointId, model::RigNodeIndex>> virtualHooks; // domain -> joint -> node
     std::vector<InstanceRecord> records;                                            // document order
+    // Guide lookups computed once per build (the document only offers linear scans).
+    struct GuideEntry {
+        const model::TemplateInstance* owner = nullptr;
+        const model::GuideJoint* joint = nullptr;
+        Mat4 world{1.0};
+    };
+    std::unordered_map<model::JointId, GuideEntry> guideIndex;
+
+    void indexGuide();
+    // The joint a guide joint hangs from: its parent, or for a root the hook joint.
+    model::JointId upstreamJoint(model::JointId joint) const;
+    Mat4 guideWorldMatrix(model::JointId joint) const;
 
     model::RigNodeIndex addNode(model::RigNode node);
     // The hook node a child hanging under `joint` attaches to, walking up the guide.

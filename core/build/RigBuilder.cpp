@@ -21,16 +21,41 @@ model::RigNodeIndex RigAssembly::addNode(model::RigNode node)
     return index;
 }
 
+void RigAssembly::indexGuide()
+{
+    for (const auto& instance : guide.instances())
+        for (const auto& joint : instance.joints)
+            guideIndex[joint.id] = {&instance, &joint, Mat4(1.0)};
+    // Instances and joints are stored parents first, so one pass composes worlds.
+    for (const auto& instance : guide.instances())
+        for (const auto& joint : instance.joints) {
+            const JointId up = upstreamJoint(joint.id);
+            auto parent = guideIndex.find(up);
+            guideIndex[joint.id].world =
+                (parent == guideIndex.end() ? Mat4(1.0) : parent->second.world) * joint.local.matrix();
+        }
+}
+
+JointId RigAssembly::upstreamJoint(JointId joint) const
+{
+    auto it = guideIndex.find(joint);
+    if (it == guideIndex.end())
+        return model::kNoId;
+    return it->second.joint->parent != model::kNoId ? it->second.joint->parent : it->second.owner->parentJoint;
+}
+
+Mat4 RigAssembly::guideWorldMatrix(JointId joint) const
+{
+    auto it = guideIndex.find(joint);
+    return it == guideIndex.end() ? guide.jointWorldMatrix(joint) : it->second.world;
+}
+
 RigNodeIndex RigAssembly::physicalHookFor(JointId joint) const
 {
     for (std::size_t guard = 0; joint != model::kNoId && guard < 100000; ++guard) {
         if (auto it = hooks.find(joint); it != hooks.end())
             return it->second;
-        const model::TemplateInstance* owner = guide.ownerOf(joint);
-        if (!owner)
-            break;
-        const model::GuideJoint* j = owner->joint(joint);
-        joint = j->parent != model::kNoId ? j->parent : owner->parentJoint;
+        joint = upstreamJoint(joint);
     }
     return 0; // the rig root
 }
@@ -43,11 +68,7 @@ RigNodeIndex RigAssembly::virtualHookFor(const std::string& domain, JointId join
     for (std::size_t guard = 0; joint != model::kNoId && guard < 100000; ++guard) {
         if (auto it = table->second.find(joint); it != table->second.end())
             return it->second;
-        const model::TemplateInstance* owner = guide.ownerOf(joint);
-        if (!owner)
-            break;
-        const model::GuideJoint* j = owner->joint(joint);
-        joint = j->parent != model::kNoId ? j->parent : owner->parentJoint;
+        joint = upstreamJoint(joint);
     }
     return kNoNode;
 }
@@ -170,7 +191,8 @@ std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& m
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders)
 {
-    RigAssembly a{guide, templates, {}, {}, {}, {}};
+    RigAssembly a{guide, templates, {}, {}, {}, {}, {}};
+    a.indexGuide();
     model::RigNode root;
     root.id = "::rig";
     root.name = guide.name.empty() ? "rig" : guide.name;

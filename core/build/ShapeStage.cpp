@@ -20,16 +20,26 @@ const templates::ShapeSpec* findSpec(const templates::TemplateManifest& manifest
     return nullptr;
 }
 
-double largestExtent(const templates::Shape& shape)
+// A library shape sampled once per build: polylines and their largest extent.
+struct SampledShape {
+    std::vector<std::vector<Vec3>> curves;
+    double extent = 0.0;
+};
+
+SampledShape sample(const templates::Shape& shape)
 {
+    SampledShape out;
     Vec3 lo(1e300), hi(-1e300);
-    for (const auto& curve : shape.curves)
-        for (const Vec3& p : templates::evaluateCurve(curve)) {
+    for (const auto& curve : shape.curves) {
+        out.curves.push_back(templates::evaluateCurve(curve));
+        for (const Vec3& p : out.curves.back()) {
             lo = glm::min(lo, p);
             hi = glm::max(hi, p);
         }
+    }
     const Vec3 extent = hi - lo;
-    return std::max({extent.x, extent.y, extent.z});
+    out.extent = std::max({extent.x, extent.y, extent.z});
+    return out;
 }
 
 const templates::Shape& fallbackShape()
@@ -54,6 +64,7 @@ const templates::Shape& fallbackShape()
 void applyShapes(RigAssembly& a)
 {
     std::map<model::InstanceId, const InstanceRecord*> records;
+    std::map<const templates::Shape*, SampledShape> sampled;
     for (const auto& r : a.records)
         records[r.instance->id] = &r;
     for (auto& node : a.rig.nodes) {
@@ -74,15 +85,19 @@ void applyShapes(RigAssembly& a)
             else
                 a.report(Severity::Warning, record->second->instance, "unknown colour '" + spec->color + "' in shapes." + spec->key);
         }
-        const double extent = largestExtent(*shape);
-        const double scale = (spec ? spec->size : 1.0) / (extent > 0.0 ? extent : 1.0);
+        auto cached = sampled.find(shape);
+        if (cached == sampled.end())
+            cached = sampled.emplace(shape, sample(*shape)).first;
+        const SampledShape& polylines = cached->second;
+        const double scale = (spec ? spec->size : 1.0) / (polylines.extent > 0.0 ? polylines.extent : 1.0);
         node.shape = shape->name;
         node.curves.clear();
-        for (const auto& curve : shape->curves) {
+        for (std::size_t k = 0; k < shape->curves.size(); ++k) {
             model::ControllerCurve out;
-            for (const Vec3& p : templates::evaluateCurve(curve))
+            out.points.reserve(polylines.curves[k].size());
+            for (const Vec3& p : polylines.curves[k])
                 out.points.push_back(p * scale);
-            const templates::Color c = curve.color.value_or(color);
+            const templates::Color c = shape->curves[k].color.value_or(color);
             out.color = Vec3(c.r, c.g, c.b);
             node.curves.push_back(std::move(out));
         }
