@@ -171,10 +171,6 @@ void MainWindow::closeEvent(QCloseEvent* event)
             event->ignore();
             return;
         }
-        if (answer == QMessageBox::Save && !action("save")->isEnabled()) {
-            event->ignore();
-            return;
-        }
         if (answer == QMessageBox::Save) {
             action("save")->trigger();
             if (!m_session.history().isClean()) {

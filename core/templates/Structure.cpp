@@ -69,9 +69,8 @@ std::vector<JointId> StructureResolver::chain() const
 }
 
 std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::string& expression, const std::string& ownTag,
-                                                                int depth, std::string& error) const
+                                                                std::string& error) const
 {
-    if (depth > 16) { error = "structure tags refer to each other in a cycle"; return std::nullopt; }
     std::vector<JointId> result;
     std::size_t start = 0;
     while (start <= expression.size()) {
@@ -117,14 +116,17 @@ std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::strin
 
 std::optional<std::vector<JointId>> StructureResolver::tag(const std::string& tagName, std::string* error) const
 {
-    static thread_local int depth = 0;
     std::string message;
     std::optional<std::vector<JointId>> out;
     if (auto address = m_manifest.structureAddress(tagName)) {
-        ++depth;
-        out = depth > 16 ? std::nullopt : evaluate(*address, tagName, depth, message);
-        if (depth > 16) message = "structure tag '" + tagName + "' refers to itself";
-        --depth;
+        // Tags may refer to tags; a chain deeper than the tag count is a cycle.
+        if (m_depth > m_manifest.structure.size()) {
+            message = "structure tag '" + tagName + "' refers to itself";
+        } else {
+            ++m_depth;
+            out = evaluate(*address, tagName, message);
+            --m_depth;
+        }
     } else {
         // Not declared: an explicit tag on the guide still resolves (Mikan's set_template_id).
         std::vector<JointId> tagged;
@@ -140,7 +142,7 @@ std::optional<std::vector<JointId>> StructureResolver::tag(const std::string& ta
 std::optional<std::vector<JointId>> StructureResolver::address(const std::string& expression, std::string* error) const
 {
     std::string message;
-    auto out = evaluate(expression, "", 0, message);
+    auto out = evaluate(expression, "", message);
     if (!out && error) *error = message;
     return out;
 }

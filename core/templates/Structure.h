@@ -29,9 +29,10 @@ public:
 
 private:
     std::optional<std::vector<model::JointId>> evaluate(const std::string& expression, const std::string& ownTag,
-                                                        int depth, std::string& error) const;
+                                                        std::string& error) const;
     const TemplateManifest& m_manifest;
     const model::TemplateInstance& m_instance;
+    mutable std::size_t m_depth = 0; // nesting of tag lookups, to detect cycles
 };
 
 } // namespace rs::templates
