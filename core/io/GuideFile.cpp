@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -163,12 +162,10 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
 
 Result<GuideDocument> readGuideFile(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    auto text = readTextFile(path);
+    if (!text)
         return Result<GuideDocument>::failure(makeError({path, 0, 0}, "cannot open file"));
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return readGuideText(buffer.str(), path);
+    return readGuideText(*text, path);
 }
 
 std::string writeGuideText(const GuideDocument& doc)

@@ -49,14 +49,22 @@ Result<YAML::Node> loadYamlText(const std::string& text, const std::string& disp
     }
 }
 
-Result<YAML::Node> loadYamlFile(const std::string& path)
+std::optional<std::string> readTextFile(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        return Result<YAML::Node>::failure(makeError({path, 0, 0}, "cannot open file"));
+        return std::nullopt;
     std::stringstream buffer;
     buffer << in.rdbuf();
-    return loadYamlText(buffer.str(), path);
+    return buffer.str();
+}
+
+Result<YAML::Node> loadYamlFile(const std::string& path)
+{
+    auto text = readTextFile(path);
+    if (!text)
+        return Result<YAML::Node>::failure(makeError({path, 0, 0}, "cannot open file"));
+    return loadYamlText(*text, path);
 }
 
 std::optional<bool> parseBool(const std::string& t)

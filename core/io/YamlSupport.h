@@ -13,6 +13,9 @@
 
 namespace rs::io {
 
+// The whole file as bytes, or nullopt when it cannot be opened.
+std::optional<std::string> readTextFile(const std::string& path);
+
 // Parses a whole file; syntax errors become "file:line:col: error: ...".
 Result<YAML::Node> loadYamlFile(const std::string& path);
 Result<YAML::Node> loadYamlText(const std::string& text, const std::string& displayName);

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace rs::templates {
 
@@ -341,12 +339,10 @@ Result<TemplateManifest> readManifestText(const std::string& text, const std::st
 
 Result<TemplateManifest> readManifest(const std::string& file, const std::string& category, const std::string& module)
 {
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
+    auto text = io::readTextFile(file);
+    if (!text)
         return Result<TemplateManifest>::failure(makeError({file, 0, 0}, "cannot open file"));
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return readManifestText(buffer.str(), file, category, module);
+    return readManifestText(*text, file, category, module);
 }
 
 } // namespace rs::templates
