@@ -5,9 +5,12 @@
 #include "io/GltfExport.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
+#include "io/YamlSupport.h"
 #include "model/Skeleton.h"
+#include "templates/ShapeIcon.h"
 
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 
@@ -26,7 +29,8 @@ void print(const Diagnostics& diagnostics)
 std::string usage()
 {
     return "usage: rigsmith-cli build GUIDE [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
-           "       rigsmith-cli check-templates [DIR...]\n";
+           "       rigsmith-cli check-templates [DIR...]\n"
+           "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";
 }
 
 int runBuild(const std::vector<std::string>& args)
@@ -107,6 +111,48 @@ int runCheckTemplates(const std::vector<std::string>& args)
     for (const auto& d : diagnostics)
         std::cout << d.format() << '\n';
     return hasErrors(diagnostics) ? 1 : 0;
+}
+
+int runShapeIcons(const std::vector<std::string>& args)
+{
+    bool check = false;
+    std::string directory;
+    for (const std::string& a : args) {
+        if (a == "--check") check = true;
+        else if (!a.empty() && a[0] != '-' && directory.empty()) directory = a;
+        else {
+            std::cerr << "rigsmith-cli: unexpected argument '" << a << "'\n" << usage();
+            return 2;
+        }
+    }
+    if (directory.empty())
+        directory = (std::filesystem::path(dataDirectory()) / "templates" / "shapes").string();
+    templates::ShapeLibrary library;
+    Diagnostics diagnostics;
+    library.loadDirectory(directory, diagnostics);
+    print(diagnostics);
+    int status = hasErrors(diagnostics) ? 1 : 0;
+    const std::filesystem::path icons = std::filesystem::path(directory) / "icons";
+    std::error_code ec;
+    if (!check)
+        std::filesystem::create_directories(icons, ec);
+    for (const std::string& name : library.names()) {
+        const std::string svg = templates::shapeIconSvg(*library.find(name));
+        const std::string file = (icons / (name + ".svg")).string();
+        if (check) {
+            auto existing = io::readTextFile(file);
+            if (!existing || *existing != svg) {
+                std::cerr << file << ": " << (existing ? "out of date" : "missing")
+                          << " (run rigsmith-cli shape-icons " << directory << ")\n";
+                status = 1;
+            }
+        } else if (auto d = io::writeFileAtomically(file, svg); !d.empty()) {
+            print(d);
+            status = 1;
+        }
+    }
+    std::cout << library.size() << " shapes" << (check ? " checked" : " drawn") << '\n';
+    return status;
 }
 
 } // namespace rs::cli

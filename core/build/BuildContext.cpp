@@ -74,7 +74,11 @@ Mat4 BuildContext::guideWorldMatrix(model::JointId joint) const
 std::string BuildContext::name(const std::string& token, std::optional<int> index) const
 {
     std::string out = m_instance.name;
-    const std::string core = token.empty() ? std::string() : m_manifest.defaultName(token);
+    std::string core;
+    if (auto it = m_instance.names.find(token); !token.empty() && it != m_instance.names.end())
+        core = it->second; // per-instance override
+    else if (!token.empty())
+        core = m_manifest.defaultName(token);
     if (!core.empty() && core != out)
         out += "_" + core;
     if (index) {

@@ -35,6 +35,7 @@ void readJoint(YamlReader& r, const YAML::Node& node, TemplateInstance& instance
         const YAML::Node& v = kv.second;
         if (key == "id") { if (auto i = r.integer(v, "joint id"); i && *i > 0) joint.id = model::JointId(*i); else { if (i) r.error(v, "joint id must be positive"); ok = false; } }
         else if (key == "parent") { if (auto i = r.integer(v, "joint parent")) joint.parent = model::JointId(*i); else ok = false; }
+        else if (key == "name") { if (auto s = r.string(v, "joint name")) joint.name = *s; else ok = false; }
         else if (key == "t") { if (auto x = r.vec3(v, "joint translate 't'")) joint.local.translate = *x; else ok = false; }
         else if (key == "r") { if (auto x = r.vec3(v, "joint rotate 'r'")) joint.local.rotateDegrees = *x; else ok = false; }
         else if (key == "s") { if (auto x = r.vec3(v, "joint scale 's'")) joint.local.scale = *x; else ok = false; }
@@ -67,6 +68,12 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
             if (!r.expectMap(v, "options")) { ok = false; continue; }
             for (const auto& o : v)
                 if (auto value = readValue(r, o.second, "option " + o.first.Scalar())) instance.options[o.first.Scalar()] = *value;
+                else ok = false;
+        } else if (key == "structure" || key == "names") {
+            if (!r.expectMap(v, key)) { ok = false; continue; }
+            auto& target = key == "structure" ? instance.structure : instance.names;
+            for (const auto& o : v)
+                if (auto text = r.string(o.second, key + " " + o.first.Scalar())) target[o.first.Scalar()] = *text;
                 else ok = false;
         } else if (key == "joints") jointsNode = v;
         else r.warning(kv.first, "unknown key '" + key + "' in an instance");
@@ -195,11 +202,20 @@ std::string writeGuideText(const GuideDocument& doc)
                     << (std::holds_alternative<std::string>(value) ? quoteIfNeeded(text) : text) << "\n";
             }
         }
+        for (const auto* section : {&i.structure, &i.names}) {
+            if (section->empty())
+                continue;
+            out << "    " << (section == &i.structure ? "structure" : "names") << ":\n";
+            for (const auto& [key, text] : *section)
+                out << "      " << quoteIfNeeded(key) << ": " << quoteIfNeeded(text) << "\n";
+        }
         out << "    joints:\n";
         for (const GuideJoint& j : i.joints) {
             out << "      - {id: " << j.id;
             if (j.parent != model::kNoId)
                 out << ", parent: " << j.parent;
+            if (!j.name.empty())
+                out << ", name: " << quoteIfNeeded(j.name);
             out << ", t: " << vec3Text(j.local.translate);
             if (j.local.rotateDegrees != Vec3(0.0))
                 out << ", r: " << vec3Text(j.local.rotateDegrees);

@@ -26,8 +26,10 @@ struct GuideJoint {
     JointId parent = kNoId;          // kNoId for the instance root
     Transform local;
     std::vector<std::string> tags;   // explicit structure tags (heel, hips...)
+    std::string name;                // optional; "_name" marks a helper (off the /* chain)
 
     bool hasTag(const std::string& tag) const;
+    bool isHelper() const { return !name.empty() && name.front() == '_'; }
     bool operator==(const GuideJoint&) const = default;
 };
 
@@ -38,6 +40,8 @@ struct TemplateInstance {
     InstanceId parent = kNoId;       // kNoId: top-level instance
     JointId parentJoint = kNoId;     // the parent's joint this instance hangs under
     std::map<std::string, Value> options; // only values that differ from the defaults
+    std::map<std::string, std::string> structure; // per-instance structure overrides: tag -> address
+    std::map<std::string, std::string> names;     // per-instance name overrides: token -> name
     std::vector<GuideJoint> joints;  // joints[0] is the root; parents come before children
 
     const GuideJoint* joint(JointId id) const;

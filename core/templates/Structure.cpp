@@ -60,7 +60,7 @@ std::vector<JointId> StructureResolver::chain() const
         out.push_back(current);
         std::vector<JointId> next;
         for (JointId child : m_instance.childJoints(current))
-            if (m_instance.joint(child)->tags.empty())
+            if (const auto* j = m_instance.joint(child); j->tags.empty() && !j->isHelper())
                 next.push_back(child);
         if (next.size() != 1 || std::find(out.begin(), out.end(), next.front()) != out.end())
             return out;
@@ -118,9 +118,14 @@ std::optional<std::vector<JointId>> StructureResolver::tag(const std::string& ta
 {
     std::string message;
     std::optional<std::vector<JointId>> out;
-    if (auto address = m_manifest.structureAddress(tagName)) {
+    std::optional<std::string> address;
+    if (auto it = m_instance.structure.find(tagName); it != m_instance.structure.end())
+        address = it->second; // per-instance override
+    else
+        address = m_manifest.structureAddress(tagName);
+    if (address) {
         // Tags may refer to tags; a chain deeper than the tag count is a cycle.
-        if (m_depth > m_manifest.structure.size()) {
+        if (m_depth > m_manifest.structure.size() + m_instance.structure.size()) {
             message = "structure tag '" + tagName + "' refers to itself";
         } else {
             ++m_depth;

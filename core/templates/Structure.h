@@ -4,8 +4,10 @@
 //   /*       the whole chain   (empty)  joints explicitly tagged with the tag
 //   tag      another tag       tag[i], tag[a:b], tag[*]  index, slice, all
 //   a+b      concatenation
-// The chain follows the only untagged child and stops at forks; it never relies
-// on sibling order. Unknown tags, bad syntax and cycles are reported.
+// The chain follows the only untagged, non-helper ("_name") child and stops at
+// forks; other templates' roots are never part of it (they belong to their own
+// instance). It never relies on sibling order. An instance may override any tag's
+// address. Unknown tags, bad syntax and cycles are reported.
 #include "base/Diagnostic.h"
 #include "model/GuideDocument.h"
 #include "templates/Manifest.h"

@@ -1,9 +1,11 @@
 #include "core/TestSupport.h"
 #include "templates/Color.h"
+#include "templates/ShapeIcon.h"
 #include "templates/ShapeLibrary.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 
 using namespace rs;
@@ -66,4 +68,32 @@ TEST(Color, ParsesCssNamesAndHex)
     EXPECT_FALSE(parseColor("#12345"));
     EXPECT_FALSE(parseColor("notacolour"));
     EXPECT_EQ(formatColor(shiftHue(*parseColor("red"), 120.0)), "#00ff00");
+}
+
+TEST(ShapeLibrary, ShipsAtLeastFortyShapesEachWithAnUpToDateIcon)
+{
+    const auto& shapes = test::builtinTemplates().shapes();
+    EXPECT_GE(shapes.size(), 40u);
+    for (const char* name : {"arrow", "pyramid", "cylinder", "gear", "foot", "hand", "eye", "torus", "cone"})
+        EXPECT_NE(shapes.find(name), nullptr) << name;
+    for (const std::string& name : shapes.names()) {
+        const Shape& shape = *shapes.find(name);
+        const auto icon = std::filesystem::path(shape.file).parent_path() / "icons" / (name + ".svg");
+        ASSERT_TRUE(std::filesystem::exists(icon)) << icon << " (run rigsmith-cli shape-icons)";
+        EXPECT_EQ(test::readText(icon.string()), shapeIconSvg(shape)) << icon << " is out of date (run rigsmith-cli shape-icons)";
+    }
+}
+
+TEST(ShapeIcon, DrawsFlatShapesFaceOnAndKeepsCurveColours)
+{
+    Shape shape;
+    shape.name = "test";
+    ShapeCurve line;
+    line.points = {{-0.5, 0, -0.5}, {0.5, 0, 0.5}};
+    line.color = parseColor("red");
+    shape.curves.push_back(line);
+    const std::string svg = shapeIconSvg(shape, 64);
+    // Top view, +Z up the icon: (-0.5,-0.5) maps to the bottom-left corner inside the margin.
+    EXPECT_NE(svg.find("points=\"5.1,58.9 58.9,5.1\""), std::string::npos) << svg;
+    EXPECT_NE(svg.find("stroke=\"#ff0000\""), std::string::npos) << svg;
 }
