@@ -8,6 +8,7 @@ namespace rs {
 
 using Vec3 = glm::dvec3;
 using Vec4 = glm::dvec4;
+using Mat3 = glm::dmat3;
 using Mat4 = glm::dmat4;
 using Quat = glm::dquat;
 

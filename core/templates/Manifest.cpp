@@ -38,4 +38,24 @@ std::optional<std::string> TemplateManifest::structureAddress(const std::string&
     return std::nullopt;
 }
 
+std::optional<Vec3> parseAxis(const std::string& text)
+{
+    if (text.empty() || text.size() > 2)
+        return std::nullopt;
+    double sign = 1.0;
+    char letter = text[0];
+    if (text.size() == 2) {
+        if (text[0] != '+' && text[0] != '-')
+            return std::nullopt;
+        sign = text[0] == '-' ? -1.0 : 1.0;
+        letter = text[1];
+    }
+    switch (letter) {
+    case 'x': return Vec3(sign, 0, 0);
+    case 'y': return Vec3(0, sign, 0);
+    case 'z': return Vec3(0, 0, sign);
+    default: return std::nullopt;
+    }
+}
+
 } // namespace rs::templates

@@ -35,10 +35,17 @@ struct ShapeSpec {
     double size = 1.0;    // largest extent of the curve, metres
     std::string parent;   // structure tag holding the shape in the guide
     std::vector<std::string> point;
-    std::string aim, up, aimAxis = "+y", upAxis;
-    std::string clone, reference, axis;
+    std::string aim, up;                  // structure or world axis ("y", "-x")
+    std::string aimAxis = "+y", upAxis;   // local axes of the shape
+    std::vector<std::pair<std::string, std::vector<std::string>>> doAim; // aim only if these opts match
+    std::string clone;                    // copy this controller's curves, then apply size (relative) and colour
+    std::string reference;                // the curves land on this controller id instead of `key`
+    std::string axis;                     // the library's Y axis is turned onto this axis
     SourceLocation where;
 };
+
+// "x", "+y", "-z" -> unit vector; nullopt for anything else.
+std::optional<Vec3> parseAxis(const std::string& text);
 
 // Overrides applied to a hierarchy entry when its `opts` condition holds.
 struct HierarchyRule {

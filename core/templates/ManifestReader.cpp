@@ -177,12 +177,20 @@ bool readShapes(YamlReader& r, const YAML::Node& node, std::vector<ShapeSpec>& o
             else if (key == "point") s.point = stringList(r, v, what + ".point", ok);
             else if (key == "aim") text(s.aim);
             else if (key == "up") text(s.up);
-            else if (key == "aim_axis") text(s.aimAxis);
-            else if (key == "up_axis") text(s.upAxis);
+            else if (key == "aim_axis" || key == "up_axis" || key == "axis") {
+                std::string& field = key == "aim_axis" ? s.aimAxis : key == "up_axis" ? s.upAxis : s.axis;
+                if (auto t = r.string(v, what + "." + key)) {
+                    if (parseAxis(*t)) field = *t;
+                    else { r.error(v, what + "." + key + " must be an axis (x, y, z, -x, -y, -z), not '" + *t + "'"); ok = false; }
+                } else ok = false;
+            }
             else if (key == "clone") text(s.clone);
             else if (key == "reference") text(s.reference);
-            else if (key == "axis") text(s.axis);
-            else if (key == "do_aim") { /* option-conditional aim: read by the shape placer (issue 3) */ }
+            else if (key == "do_aim") {
+                if (!r.expectMap(v, what + ".do_aim")) { ok = false; continue; }
+                for (const auto& c : v)
+                    s.doAim.emplace_back(c.first.Scalar(), stringList(r, c.second, what + ".do_aim." + c.first.Scalar(), ok));
+            }
             else r.warning(p.first, "unknown key '" + key + "' in " + what);
         }
         if (s.shape.empty() && s.clone.empty()) { r.error(kv.first, what + " has no 'shape'"); ok = false; continue; }
