@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace rs::io {
@@ -13,10 +14,32 @@ std::string describeType(const YAML::Node& node)
 {
     switch (node.Type()) {
     case YAML::NodeType::Map: return "a map";
-    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Sequence: return "a list of " + std::to_string(node.size()) + (node.size() == 1 ? " item" : " items");
     case YAML::NodeType::Null: return "nothing";
     case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
     default: return "an undefined value";
+    }
+}
+
+// yaml-cpp keeps both entries of a repeated key and lookups see only the first,
+// so a repeated key would silently lose the rigger's second value.
+void reportDuplicateKeys(const YAML::Node& node, const std::string& file, Diagnostics& out)
+{
+    if (node.IsMap()) {
+        std::map<std::string, int> seen;
+        for (const auto& kv : node) {
+            if (kv.first.IsScalar()) {
+                const int line = kv.first.Mark().line + 1;
+                auto [it, fresh] = seen.emplace(kv.first.Scalar(), line);
+                if (!fresh)
+                    out.push_back(makeError(locationOf(kv.first, file), "duplicate key '" + kv.first.Scalar() +
+                                                                            "' (first at line " + std::to_string(it->second) + ")"));
+            }
+            reportDuplicateKeys(kv.second, file, out);
+        }
+    } else if (node.IsSequence()) {
+        for (const auto& item : node)
+            reportDuplicateKeys(item, file, out);
     }
 }
 
@@ -38,7 +61,12 @@ SourceLocation locationOf(const YAML::Node& node, const std::string& file)
 Result<YAML::Node> loadYamlText(const std::string& text, const std::string& displayName)
 {
     try {
-        return YAML::Load(text);
+        YAML::Node root = YAML::Load(text);
+        Diagnostics duplicates;
+        reportDuplicateKeys(root, displayName, duplicates);
+        if (!duplicates.empty())
+            return Result<YAML::Node>::failure(duplicates);
+        return root;
     } catch (const YAML::ParserException& e) {
         SourceLocation where{displayName, e.mark.line + 1, e.mark.column + 1};
         if (e.mark.is_null())

@@ -11,7 +11,17 @@ namespace fs = std::filesystem;
 
 std::optional<Shape> readShapeFile(const std::string& file, Diagnostics& diagnostics)
 {
-    auto yaml = io::loadYamlFile(file);
+    auto text = io::readTextFile(file);
+    if (!text) {
+        diagnostics.push_back(makeError({file, 0, 0}, "cannot open file"));
+        return std::nullopt;
+    }
+    return readShapeText(*text, file, diagnostics);
+}
+
+std::optional<Shape> readShapeText(const std::string& text, const std::string& file, Diagnostics& diagnostics)
+{
+    auto yaml = io::loadYamlText(text, file);
     if (!yaml) {
         auto d = yaml.takeDiagnostics();
         diagnostics.insert(diagnostics.end(), d.begin(), d.end());

@@ -40,6 +40,8 @@ private:
 };
 
 std::optional<Shape> readShapeFile(const std::string& file, Diagnostics& diagnostics);
+// `file` names the shape (its stem) and the diagnostics.
+std::optional<Shape> readShapeText(const std::string& text, const std::string& file, Diagnostics& diagnostics);
 
 // Samples a curve into a polyline. Periodic curves use uniform knots over the
 // control points wrapped by `degree`; open curves of degree > 1 use clamped knots.

@@ -3,6 +3,7 @@
 #include "io/YamlSupport.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace rs::templates {
 
@@ -48,7 +49,60 @@ std::optional<std::vector<JointId>> applySelector(const std::vector<JointId>& li
     return out;
 }
 
+bool isInteger(const std::string& text) { return io::parseInteger(text).has_value(); }
+
+std::optional<std::string> checkSelector(const std::string& selector)
+{
+    if (selector == "*")
+        return std::nullopt;
+    const auto colon = selector.find(':');
+    if (colon == std::string::npos)
+        return isInteger(trim(selector)) ? std::nullopt : std::optional<std::string>("bad index '[" + selector + "]'");
+    const std::string a = trim(selector.substr(0, colon)), b = trim(selector.substr(colon + 1));
+    if ((!a.empty() && !isInteger(a)) || (!b.empty() && !isInteger(b)))
+        return "bad slice '[" + selector + "]'";
+    return std::nullopt;
+}
+
 } // namespace
+
+std::optional<std::vector<AddressTerm>> parseAddress(const std::string& expression, std::string& error)
+{
+    std::vector<AddressTerm> terms;
+    if (trim(expression).empty())
+        return terms;
+    std::size_t start = 0;
+    while (true) {
+        auto plus = expression.find('+', start);
+        if (plus == std::string::npos) plus = expression.size();
+        AddressTerm term;
+        term.text = trim(expression.substr(start, plus - start));
+        if (term.text.empty()) { error = "empty term in '" + expression + "'"; return std::nullopt; }
+        term.base = term.text;
+        if (auto open = term.text.find('['); open != std::string::npos) {
+            if (term.text.back() != ']') { error = "missing ']' in '" + term.text + "'"; return std::nullopt; }
+            term.base = trim(term.text.substr(0, open));
+            term.selector = term.text.substr(open + 1, term.text.size() - open - 2);
+            if (term.selector.find_first_of("[]") != std::string::npos) { error = "nested brackets in '" + term.text + "'"; return std::nullopt; }
+            if (auto bad = checkSelector(term.selector)) { error = "'" + term.text + "': " + *bad; return std::nullopt; }
+            if (term.base.empty()) { error = "missing tag before '[' in '" + term.text + "'"; return std::nullopt; }
+        }
+        if (term.base[0] == '/') {
+            const std::string depth = term.base.substr(1);
+            if (depth != "*" && !isInteger(depth)) { error = "bad depth address '" + term.base + "' (use /N, /-N or /*)"; return std::nullopt; }
+        } else if (term.base != ".") {
+            for (char c : term.base)
+                if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.')) {
+                    error = "bad tag name '" + term.base + "'";
+                    return std::nullopt;
+                }
+        }
+        terms.push_back(std::move(term));
+        if (plus == expression.size()) break;
+        start = plus + 1;
+    }
+    return terms;
+}
 
 std::vector<JointId> StructureResolver::chain() const
 {
@@ -71,45 +125,38 @@ std::vector<JointId> StructureResolver::chain() const
 std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::string& expression, const std::string& ownTag,
                                                                 std::string& error) const
 {
-    std::vector<JointId> result;
-    std::size_t start = 0;
-    while (start <= expression.size()) {
-        auto plus = expression.find('+', start);
-        if (plus == std::string::npos) plus = expression.size();
-        const std::string term = trim(expression.substr(start, plus - start));
-        start = plus + 1;
-
-        std::string base = term, selector;
-        if (auto open = term.find('['); open != std::string::npos) {
-            if (term.back() != ']') { error = "missing ']' in '" + term + "'"; return std::nullopt; }
-            base = trim(term.substr(0, open));
-            selector = term.substr(open + 1, term.size() - open - 2);
-        }
+    auto terms = parseAddress(expression, error);
+    if (!terms)
+        return std::nullopt;
+    if (terms->empty()) { // explicit tag: the joints tagged with the tag itself
+        if (ownTag.empty()) { error = "empty address"; return std::nullopt; }
         std::vector<JointId> joints;
-        if (base.empty() && term.empty()) {
-            if (ownTag.empty()) { error = "empty address"; return std::nullopt; }
-            for (const auto& j : m_instance.joints)
-                if (j.hasTag(ownTag)) joints.push_back(j.id);
-            if (joints.empty()) { error = "no guide joint is tagged '" + ownTag + "'"; return std::nullopt; }
-        } else if (base == ".") {
+        for (const auto& j : m_instance.joints)
+            if (j.hasTag(ownTag)) joints.push_back(j.id);
+        if (joints.empty()) { error = "no guide joint is tagged '" + ownTag + "'"; return std::nullopt; }
+        return joints;
+    }
+    std::vector<JointId> result;
+    for (const AddressTerm& term : *terms) {
+        std::vector<JointId> joints;
+        if (term.base == ".") {
             joints.push_back(m_instance.joints.front().id);
-        } else if (!base.empty() && base[0] == '/') {
+        } else if (term.base[0] == '/') {
             const std::vector<JointId> c = chain();
-            if (base == "/*") joints = c;
-            else if (auto sel = applySelector(c, base.substr(1), error)) joints = *sel;
-            else { error = "address '" + base + "': " + error; return std::nullopt; }
+            if (term.base == "/*") joints = c;
+            else if (auto sel = applySelector(c, term.base.substr(1), error)) joints = *sel;
+            else { error = "address '" + term.base + "': " + error; return std::nullopt; }
         } else {
-            auto sub = tag(base, &error);
+            auto sub = tag(term.base, &error);
             if (!sub) return std::nullopt;
             joints = *sub;
         }
-        if (!selector.empty()) {
-            auto sel = applySelector(joints, selector, error);
-            if (!sel) { error = "'" + term + "': " + error; return std::nullopt; }
+        if (!term.selector.empty()) {
+            auto sel = applySelector(joints, term.selector, error);
+            if (!sel) { error = "'" + term.text + "': " + error; return std::nullopt; }
             joints = *sel;
         }
         result.insert(result.end(), joints.begin(), joints.end());
-        if (plus == expression.size()) break;
     }
     return result;
 }

@@ -18,6 +18,14 @@
 
 namespace rs::templates {
 
+// One term of an address: `base` is ".", "/N", "/*" or a tag; `selector` the
+// text inside [] (empty when none).
+struct AddressTerm {
+    std::string text, base, selector;
+};
+// Syntax only; an empty address (explicit tag) gives no terms.
+std::optional<std::vector<AddressTerm>> parseAddress(const std::string& expression, std::string& error);
+
 class StructureResolver {
 public:
     StructureResolver(const TemplateManifest& manifest, const model::TemplateInstance& instance)

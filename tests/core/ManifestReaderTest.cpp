@@ -53,7 +53,7 @@ TEST(ManifestReader, ReportsWrongTypesAtTheirPosition)
     ASSERT_FALSE(r.ok());
     ASSERT_EQ(r.diagnostics().size(), 2u) << formatAll(r.diagnostics());
     EXPECT_EQ(r.diagnostics()[0].format(), "tpl/template.yml:5:10: error: guides.number.min must be a number, got 'lots'");
-    EXPECT_EQ(r.diagnostics()[1].format(), "tpl/template.yml:9:11: error: shapes.ctrls.0.size must be a number, got a list");
+    EXPECT_EQ(r.diagnostics()[1].format(), "tpl/template.yml:9:11: error: shapes.ctrls.0.size must be a number, got a list of 2 items");
 }
 
 TEST(ManifestReader, WarnsAboutUnknownKeysWithoutFailing)

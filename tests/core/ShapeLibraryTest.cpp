@@ -55,7 +55,7 @@ TEST(ShapeLibrary, ReportsBadShapeFilesWithPositions)
     EXPECT_FALSE(readShapeFile(path, d));
     ASSERT_EQ(d.size(), 3u) << formatAll(d);
     EXPECT_EQ(d[0].format(), path + ":1:11: error: curve 0.degree must be 1, 2 or 3");
-    EXPECT_EQ(d[1].format(), path + ":3:12: error: curve 1 point must be a list of 3 numbers, got a list");
+    EXPECT_EQ(d[1].format(), path + ":3:12: error: curve 1 point must be a list of 3 numbers, got a list of 2 items");
     EXPECT_EQ(d[2].format(), path + ":4:10: error: unknown colour 'blurple'");
 }
 
