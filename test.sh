@@ -16,3 +16,14 @@ start=$(date +%s)
 xvfb-run -a -s "-screen 0 1600x1000x24" \
   ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)" --timeout 120 "$@"
 echo "test suite: $(( $(date +%s) - start )) s"
+
+# The readers (templates, shapes, guides) and the malformed-input corpus again
+# under AddressSanitizer + UBSan: a separate small build of core and its tests.
+if [ "${RIGSMITH_SKIP_ASAN:-0}" != "1" ]; then
+  start=$(date +%s)
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DRIGSMITH_ASAN=ON -DRIGSMITH_BUILD_GUI=OFF > /dev/null
+  cmake --build build-asan --target rigsmith-core-tests
+  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
+    ./build-asan/tests/rigsmith-core-tests --gtest_brief=1
+  echo "AddressSanitizer core tests: $(( $(date +%s) - start )) s"
+fi

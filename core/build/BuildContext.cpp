@@ -1,6 +1,7 @@
 #include "build/BuildContext.h"
 
 #include "build/RigAssembly.h"
+#include "io/YamlSupport.h"
 #include "templates/Structure.h"
 
 #include <cctype>
@@ -51,6 +52,16 @@ double BuildContext::optionFloat(const std::string& name) const
 std::string BuildContext::optionString(const std::string& name) const
 {
     return formatValue(option(name));
+}
+
+std::optional<std::vector<std::string>> BuildContext::optionList(const std::string& name) const
+{
+    const std::string text = optionString(name);
+    std::string error;
+    auto items = io::parseFlowList(text, error);
+    if (!items)
+        this->error("option '" + name + "' = '" + text + "' is not a YAML list: " + error, name);
+    return items;
 }
 
 std::optional<std::vector<model::JointId>> BuildContext::structure(const std::string& tag) const

@@ -29,6 +29,9 @@ public:
     long long optionInt(const std::string& name) const;
     double optionFloat(const std::string& name) const;
     std::string optionString(const std::string& name) const;
+    // A `yaml: on` option parsed from its flow-YAML text: "[L, R]" -> {"L", "R"}; a
+    // scalar gives one item. Reports an error and returns nullopt when it is no list.
+    std::optional<std::vector<std::string>> optionList(const std::string& name) const;
 
     // Joints of a structure tag; reports an error and returns nullopt when it fails.
     std::optional<std::vector<model::JointId>> structure(const std::string& tag) const;

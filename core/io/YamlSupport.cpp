@@ -230,6 +230,34 @@ std::optional<Value> readValue(YamlReader& r, const YAML::Node& node, const std:
     return Value(text);
 }
 
+std::optional<std::vector<std::string>> parseFlowList(const std::string& text, std::string& error)
+{
+    std::vector<std::string> items;
+    YAML::Node node;
+    try {
+        node = YAML::Load(text);
+    } catch (const YAML::Exception& e) {
+        error = e.msg;
+        return std::nullopt;
+    }
+    if (node.IsNull())
+        return items;
+    if (node.IsScalar())
+        return std::vector<std::string>{node.Scalar()};
+    if (!node.IsSequence()) {
+        error = "expected a list";
+        return std::nullopt;
+    }
+    for (const auto& item : node) {
+        if (!item.IsScalar()) {
+            error = "list items must be plain values";
+            return std::nullopt;
+        }
+        items.push_back(item.Scalar());
+    }
+    return items;
+}
+
 std::string quoteIfNeeded(const std::string& text)
 {
     bool plain = !text.empty() && !parseBool(text) && !parseNumber(text) && text != "null" && text != "~" &&

@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rs::io {
 
@@ -50,6 +51,9 @@ private:
 // Infers a value's type from a plain scalar (on/off, int, float, else text) or a
 // 3-number list; quoted scalars are always text.
 std::optional<Value> readValue(YamlReader& r, const YAML::Node& node, const std::string& what);
+// Items of a flow-YAML list given as text ("[L, R]"); a plain scalar is one item,
+// an empty text none. Nested lists and maps are refused.
+std::optional<std::vector<std::string>> parseFlowList(const std::string& text, std::string& error);
 // Quotes text that would otherwise read back as another type or break YAML.
 std::string quoteIfNeeded(const std::string& text);
 

@@ -1,4 +1,5 @@
 #include "core/TestSupport.h"
+#include "io/YamlSupport.h"
 #include "templates/ManifestReader.h"
 #include "templates/TemplateRegistry.h"
 
@@ -126,4 +127,17 @@ TEST(TemplateRegistry, ScansUserFoldersFromTheTemplatePathOverBuiltins)
     EXPECT_NE(registry->find("world.character"), nullptr);
     ASSERT_FALSE(d.empty());
     EXPECT_EQ(d[0].format(), "/nonexistent/folder: warning: template folder does not exist");
+}
+
+TEST(YamlSupport, ParsesTheFlowListsOfYamlOptions)
+{
+    std::string error;
+    EXPECT_EQ(*io::parseFlowList("[L, R]", error), (std::vector<std::string>{"L", "R"}));
+    EXPECT_EQ(*io::parseFlowList("[hook, world, '*::space.cog']", error), (std::vector<std::string>{"hook", "world", "*::space.cog"}));
+    EXPECT_EQ(*io::parseFlowList("up", error), (std::vector<std::string>{"up"}));
+    EXPECT_TRUE(io::parseFlowList("", error)->empty());
+    EXPECT_FALSE(io::parseFlowList("[a, [b]]", error));
+    EXPECT_EQ(error, "list items must be plain values");
+    EXPECT_FALSE(io::parseFlowList("[a, b", error));
+    EXPECT_FALSE(io::parseFlowList("{a: 1}", error));
 }
