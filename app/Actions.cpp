@@ -43,6 +43,8 @@ void MainWindow::createActions()
     QAction* undo = makeAction(this, "undo", tr("&Undo"), QKeySequence::Undo);
     QAction* redo = makeAction(this, "redo", tr("&Redo"), QKeySequence::Redo);
     QAction* build = makeAction(this, "build", tr("&Build"), QKeySequence(tr("Ctrl+B")), "build");
+    QAction* reload = makeAction(this, "reloadTemplates", tr("&Reload Templates"), QKeySequence(Qt::Key_F5));
+    reload->setToolTip(tr("Rescan the template folders and shapes (F5)"));
 
     const QString filter = tr("Rigsmith guides (*.yml *.yaml)");
     connect(open, &QAction::triggered, this, [this, filter] {
@@ -70,6 +72,7 @@ void MainWindow::createActions()
     connect(undo, &QAction::triggered, this, [this] { m_session.history().undo(); });
     connect(redo, &QAction::triggered, this, [this] { m_session.history().redo(); });
     connect(build, &QAction::triggered, this, &MainWindow::buildRig);
+    connect(reload, &QAction::triggered, this, &MainWindow::reloadTemplates);
     auto updateUndo = [this, undo, redo] {
         auto& h = m_session.history();
         undo->setEnabled(h.canUndo());
@@ -90,6 +93,8 @@ void MainWindow::createActions()
     edit->addActions({undo, redo});
     QMenu* rig = menuBar()->addMenu(tr("&Rig"));
     rig->addAction(build);
+    rig->addSeparator();
+    rig->addAction(reload);
 
     QToolBar* bar = addToolBar(tr("Main"));
     bar->setObjectName("mainToolBar");

@@ -63,6 +63,15 @@ double EditorSession::build()
     return ms;
 }
 
+Diagnostics EditorSession::reloadTemplates()
+{
+    m_templates = templates::TemplateRegistry::loadDefault(m_templateDiagnostics);
+    emit templatesReloaded();
+    if (m_rig)
+        build();
+    return m_templateDiagnostics;
+}
+
 Diagnostics EditorSession::exportGltf(const QString& path) const
 {
     if (!m_rig)

@@ -42,6 +42,10 @@ public:
     // Builds the rig; returns the build time in milliseconds.
     double build();
     Diagnostics exportGltf(const QString& path) const;
+    // Rescans the template folders (F5): new and edited manifests and shapes take
+    // effect without a restart; a built rig is rebuilt with them. Returns the scan's
+    // diagnostics; a broken manifest drops only that template.
+    Diagnostics reloadTemplates();
     // Adds a template instance hanging under `hookJoint` (kNoId: top level) and
     // selects it. Returns an error message, empty on success.
     QString addTemplate(const QString& templateId, model::JointId hookJoint);
@@ -55,6 +59,7 @@ signals:
     void rigChanged();
     void selectionChanged();
     void diagnosticsReported(const rs::Diagnostics& diagnostics);
+    void templatesReloaded();
 
 private:
     model::GuideDocument m_document;

@@ -55,6 +55,7 @@ void MainWindow::connectDocument()
         refreshScene();
     });
     connect(&m_session, &EditorSession::diagnosticsReported, m_log, &widgets::LogPanel::addDiagnostics);
+    connect(&m_session, &EditorSession::templatesReloaded, this, &MainWindow::refreshViews);
 
     connect(m_outliner, &widgets::OutlinerView::instanceSelected, this,
             [this](quint32 id) { m_session.select({id, model::kNoId, model::kNoNode}); });
@@ -121,6 +122,13 @@ void MainWindow::report(const QString& what, const Diagnostics& diagnostics)
     if (!what.isEmpty())
         m_log->addMessage(what, hasErrors(diagnostics) ? Severity::Error : Severity::Note);
     m_log->addDiagnostics(diagnostics);
+}
+
+void MainWindow::reloadTemplates()
+{
+    const Diagnostics diagnostics = m_session.reloadTemplates();
+    const auto& t = m_session.templates();
+    report(tr("Reloaded %1 templates and %2 shapes").arg(t.all().size()).arg(t.shapes().size()), diagnostics);
 }
 
 bool MainWindow::openFile(const QString& path)

@@ -28,6 +28,7 @@ public:
     bool saveFile(const QString& path);
     bool exportTo(const QString& path);
     void buildRig();
+    void reloadTemplates();
 
 protected:
     void closeEvent(QCloseEvent* event) override;

@@ -116,6 +116,44 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     EXPECT_EQ(w.outliner()->model()->rowCount(), 1) << "one top-level instance (world) again";
 }
 
+TEST(Editor, F5ReloadsTemplatesWithoutARestart)
+{
+    const std::filesystem::path folder = outputPath("reload-templates");
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    setenv("RIGSMITH_TEMPLATE_PATH", folder.c_str(), 1);
+    Editor e;
+    app::MainWindow& w = e.window;
+    EXPECT_EQ(w.session().templates().find("extra.tail"), nullptr);
+    w.action("build")->trigger();
+    const std::size_t nodesBefore = w.session().rig()->nodes.size();
+
+    // The rigger writes a new template and breaks another one, then presses F5.
+    std::filesystem::create_directories(folder / "extra" / "tail");
+    std::ofstream(folder / "extra" / "tail" / "template.yml") << "name: tail\nbase: core.joints\nstructure:\n  chain: /*\n";
+    std::filesystem::create_directories(folder / "extra" / "broken");
+    std::ofstream(folder / "extra" / "broken" / "template.yml") << "name: [oops\n";
+    w.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+    QTest::keyClick(w.outliner(), Qt::Key_F5);
+
+    ASSERT_NE(w.session().templates().find("extra.tail"), nullptr) << "the new template is available";
+    EXPECT_NE(w.session().templates().find("core.joints"), nullptr) << "a broken manifest drops only itself";
+    EXPECT_EQ(w.session().rig()->nodes.size(), nodesBefore) << "the rig was rebuilt with the reloaded templates";
+    EXPECT_FALSE(w.session().isRigStale());
+    std::string log;
+    auto* panel = w.findChild<widgets::LogPanel*>("buildLog");
+    for (int i = 0; i < panel->count(); ++i)
+        log += panel->item(i)->text().toStdString() + "\n";
+    EXPECT_NE(log.find("broken/template.yml:2:1: error: malformed YAML"), std::string::npos) << log;
+    EXPECT_NE(log.find("Reloaded"), std::string::npos) << log;
+
+    clickInstance(w, "arm_L");
+    std::unique_ptr<QMenu> menu(w.outliner()->createContextMenu(w.outliner()->selectedInstance(), &w));
+    EXPECT_NE(menu->findChild<QAction*>("add:extra.tail"), nullptr) << "the outliner offers it at once";
+    unsetenv("RIGSMITH_TEMPLATE_PATH");
+}
+
 TEST(Editor, AFileThatFailsToLoadLeavesTheOpenGuideUntouched)
 {
     Editor e;
