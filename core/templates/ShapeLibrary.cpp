@@ -88,19 +88,30 @@ std::optional<Shape> readShapeText(const std::string& text, const std::string& f
     return shape;
 }
 
-void ShapeLibrary::loadDirectory(const std::string& directory, Diagnostics& diagnostics)
+std::vector<std::string> ShapeLibrary::filesIn(const std::string& directory)
 {
+    std::vector<std::string> files;
     std::error_code ec;
     if (!fs::is_directory(directory, ec))
-        return;
-    std::vector<fs::path> files;
+        return files;
     for (const auto& entry : fs::directory_iterator(directory, ec))
         if (entry.is_regular_file() && entry.path().extension() == ".yml")
-            files.push_back(entry.path());
+            files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
-    for (const auto& file : files)
-        if (auto shape = readShapeFile(file.string(), diagnostics))
-            m_shapes[shape->name] = std::move(*shape);
+    return files;
+}
+
+void ShapeLibrary::loadDirectory(const std::string& directory, Diagnostics& diagnostics)
+{
+    for (const auto& file : filesIn(directory))
+        if (auto shape = readShapeFile(file, diagnostics))
+            add(std::move(*shape));
+}
+
+void ShapeLibrary::add(Shape shape)
+{
+    const std::string name = shape.name;
+    m_shapes[name] = std::move(shape);
 }
 
 const Shape* ShapeLibrary::find(const std::string& name) const

@@ -30,6 +30,9 @@ class ShapeLibrary {
 public:
     // Loads every *.yml in the folder; later folders override earlier names.
     void loadDirectory(const std::string& directory, Diagnostics& diagnostics);
+    // The *.yml files of a shapes folder, sorted.
+    static std::vector<std::string> filesIn(const std::string& directory);
+    void add(Shape shape); // replaces a shape of the same name
     const Shape* find(const std::string& name) const;
     std::vector<std::string> names() const;
     std::size_t size() const { return m_shapes.size(); }

@@ -4,7 +4,9 @@
 #include "templates/ManifestReader.h"
 
 #include <algorithm>
+#include <atomic>
 #include <filesystem>
+#include <thread>
 
 namespace rs::templates {
 
@@ -27,12 +29,60 @@ const char* kFallbackIcon = "template";
 
 } // namespace
 
+namespace {
+
+// One file to read. Files are parsed in parallel (yaml-cpp parses a few MB/s, so
+// a large library is parse-bound) and merged in scan order, so the result and
+// the order of diagnostics never depend on timing.
+struct ScanJob {
+    fs::path file;
+    std::string category, module; // empty category: a shape file
+    std::optional<TemplateManifest> manifest;
+    std::optional<Shape> shape;
+    Diagnostics diagnostics;
+
+    void run()
+    {
+        if (category.empty()) {
+            shape = readShapeFile(file.string(), diagnostics);
+            return;
+        }
+        auto result = readManifest(file.string(), category, module);
+        diagnostics = result.takeDiagnostics();
+        if (result)
+            manifest = result.take();
+    }
+};
+
+void runAll(std::vector<ScanJob>& jobs)
+{
+    const unsigned threads = std::min<unsigned>(std::max(1u, std::thread::hardware_concurrency()), 8u);
+    if (threads < 2 || jobs.size() < 8) {
+        for (auto& job : jobs) job.run();
+        return;
+    }
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i = next++; i < jobs.size(); i = next++)
+            jobs[i].run();
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t)
+        pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool)
+        t.join();
+}
+
+} // namespace
+
 Diagnostics TemplateRegistry::scan(const std::vector<std::string>& folders, const std::string& iconsDirectory)
 {
     Diagnostics diagnostics;
     m_manifests.clear();
     m_shapes.clear();
     m_iconsDirectory = iconsDirectory;
+    std::vector<ScanJob> jobs;
     for (const std::string& folder : folders) {
         std::error_code ec;
         if (!fs::is_directory(folder, ec)) {
@@ -42,23 +92,26 @@ Diagnostics TemplateRegistry::scan(const std::vector<std::string>& folders, cons
         for (const fs::path& category : sortedSubdirectories(folder)) {
             const std::string categoryName = category.filename().string();
             if (categoryName == "shapes") {
-                m_shapes.loadDirectory(category.string(), diagnostics);
+                for (const fs::path& file : ShapeLibrary::filesIn(category.string()))
+                    jobs.push_back({file, {}, {}, {}, {}, {}});
                 continue;
             }
             for (const fs::path& module : sortedSubdirectories(category)) {
                 const fs::path file = module / "template.yml";
-                if (!fs::exists(file, ec))
-                    continue;
-                auto manifest = readManifest(file.string(), categoryName, module.filename().string());
-                auto d = manifest.takeDiagnostics();
-                diagnostics.insert(diagnostics.end(), d.begin(), d.end());
-                if (manifest) {
-                    TemplateManifest loaded = manifest.take();
-                    const std::string id = loaded.id;
-                    m_manifests[id] = std::move(loaded);
-                }
+                if (fs::exists(file, ec))
+                    jobs.push_back({file, categoryName, module.filename().string(), {}, {}, {}});
             }
         }
+    }
+    runAll(jobs);
+    for (ScanJob& job : jobs) {
+        diagnostics.insert(diagnostics.end(), job.diagnostics.begin(), job.diagnostics.end());
+        if (job.manifest) {
+            const std::string id = job.manifest->id;
+            m_manifests[id] = std::move(*job.manifest);
+        }
+        if (job.shape)
+            m_shapes.add(std::move(*job.shape));
     }
     // Cross-checks that need the whole library.
     std::error_code ec;

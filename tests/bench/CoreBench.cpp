@@ -6,6 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -63,6 +64,39 @@ void BM_ScanTemplates(benchmark::State& state)
     }
 }
 BENCHMARK(BM_ScanTemplates)->Unit(benchmark::kMillisecond);
+
+// A library of state.range(0) templates (the golden-test manifests, which use every
+// key, copied under distinct ids) plus the shipped shapes library, scanned cold.
+void BM_ScanTemplateLibrary(benchmark::State& state)
+{
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::temp_directory_path() / ("rigsmith-bench-library-" + std::to_string(state.range(0)));
+    fs::remove_all(folder);
+    std::vector<fs::path> sources;
+    for (const auto& entry : fs::directory_iterator(kSource + "/tests/data/ManifestReader"))
+        sources.push_back(entry.path() / "template.yml");
+    std::sort(sources.begin(), sources.end());
+    for (long i = 0; i < state.range(0); ++i) {
+        const fs::path module = folder / ("category" + std::to_string(i % 10)) / ("module" + std::to_string(i));
+        fs::create_directories(module);
+        fs::copy_file(sources[std::size_t(i) % sources.size()], module / "template.yml");
+    }
+    fs::create_directories(folder / "shapes");
+    for (const auto& entry : fs::directory_iterator(kSource + "/templates/shapes"))
+        if (entry.path().extension() == ".yml")
+            fs::copy_file(entry.path(), folder / "shapes" / entry.path().filename());
+    std::size_t templates = 0, shapes = 0;
+    for (auto _ : state) {
+        templates::TemplateRegistry r;
+        benchmark::DoNotOptimize(r.scan({folder.string()}, kSource + "/resources/icons"));
+        templates = r.all().size();
+        shapes = r.shapes().size();
+    }
+    state.counters["templates"] = double(templates);
+    state.counters["shapes"] = double(shapes);
+    fs::remove_all(folder);
+}
+BENCHMARK(BM_ScanTemplateLibrary)->Arg(100)->Unit(benchmark::kMillisecond);
 
 void BM_BuildBipedRig(benchmark::State& state)
 {
