@@ -7,6 +7,7 @@
 #include "io/RigDump.h"
 #include "io/YamlSupport.h"
 #include "model/Skeleton.h"
+#include "templates/ManifestDump.h"
 #include "templates/ShapeIcon.h"
 
 #include <chrono>
@@ -30,6 +31,7 @@ std::string usage()
 {
     return "usage: rigsmith-cli build GUIDE [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
            "       rigsmith-cli check-templates [DIR...]\n"
+           "       rigsmith-cli describe-template ID   (what Rigsmith understood of every key)\n"
            "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";
 }
 
@@ -95,10 +97,25 @@ int runBuild(const std::vector<std::string>& args)
 
 int runCheckTemplates(const std::vector<std::string>& args)
 {
-    std::vector<std::string> folders = args.empty() ? templateSearchPath() : args;
+    // The built-in folder always loads first, so user templates can use its shapes
+    // and bases; only the folders asked for are listed.
+    std::vector<std::string> folders = templateSearchPath();
+    if (!args.empty())
+        folders = {builtinTemplatesDirectory()};
+    folders.insert(folders.end(), args.begin(), args.end());
     templates::TemplateRegistry registry;
     const Diagnostics diagnostics = registry.scan(folders, iconsDirectory());
+    auto listed = [&](const templates::TemplateManifest& m) {
+        if (args.empty())
+            return true;
+        for (const std::string& folder : args)
+            if (m.file.rfind(folder, 0) == 0)
+                return true;
+        return false;
+    };
     for (const auto* m : registry.all()) {
+        if (!listed(*m))
+            continue;
         std::cout << m->id << ": structure [";
         for (std::size_t i = 0; i < m->structure.size(); ++i)
             std::cout << (i ? ", " : "") << m->structure[i].first;
@@ -111,6 +128,24 @@ int runCheckTemplates(const std::vector<std::string>& args)
     for (const auto& d : diagnostics)
         std::cout << d.format() << '\n';
     return hasErrors(diagnostics) ? 1 : 0;
+}
+
+int runDescribeTemplate(const std::vector<std::string>& args)
+{
+    if (args.size() != 1) {
+        std::cerr << usage();
+        return 2;
+    }
+    Diagnostics diagnostics;
+    auto registry = templates::TemplateRegistry::loadDefault(diagnostics);
+    print(diagnostics);
+    const templates::TemplateManifest* m = registry->find(args[0]);
+    if (!m) {
+        std::cerr << "rigsmith-cli: no template '" << args[0] << "'\n";
+        return 1;
+    }
+    std::cout << templates::describeManifest(*m);
+    return 0;
 }
 
 int runShapeIcons(const std::vector<std::string>& args)

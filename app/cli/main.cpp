@@ -18,6 +18,8 @@ int main(int argc, char** argv)
         return rs::cli::runBuild(args);
     if (command == "check-templates")
         return rs::cli::runCheckTemplates(args);
+    if (command == "describe-template")
+        return rs::cli::runDescribeTemplate(args);
     if (command == "shape-icons")
         return rs::cli::runShapeIcons(args);
     std::cerr << "rigsmith-cli: unknown command '" << command << "'\n" << rs::cli::usage();

@@ -85,6 +85,7 @@ struct TemplateManifest {
     std::vector<ShapeSpec> shapes;
     std::vector<HierarchyEntry> hierarchy;
     std::string icon;             // file name in resources/icons (no extension)
+    SourceLocation iconWhere;
     std::vector<UiHook> hooks;
 
     const Parameter* findOpt(const std::string& name) const;

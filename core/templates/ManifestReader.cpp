@@ -251,7 +251,10 @@ bool readUi(YamlReader& r, const YAML::Node& node, TemplateManifest& m)
     bool ok = true;
     for (const auto& kv : node) {
         const std::string key = kv.first.Scalar();
-        if (key == "icon") { if (auto s = r.string(kv.second, "ui.icon")) m.icon = *s; else ok = false; }
+        if (key == "icon") {
+            if (auto s = r.string(kv.second, "ui.icon")) { m.icon = *s; m.iconWhere = io::locationOf(kv.second, r.file()); }
+            else ok = false;
+        }
         else if (key == "hooks") {
             if (!r.expectMap(kv.second, "ui.hooks")) { ok = false; continue; }
             for (const auto& h : kv.second)

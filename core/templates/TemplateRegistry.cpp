@@ -121,7 +121,7 @@ Diagnostics TemplateRegistry::scan(const std::vector<std::string>& folders, cons
                 diagnostics.push_back(makeWarning(s.where, "unknown shape '" + s.shape + "' in shapes." + s.key +
                                                                " (a circle is used)"));
         if (!m.icon.empty() && !fs::exists(fs::path(iconsDirectory) / (m.icon + ".svg"), ec))
-            diagnostics.push_back(makeWarning({m.file, 0, 0}, "icon '" + m.icon + "' not found in " + iconsDirectory +
+            diagnostics.push_back(makeWarning(m.iconWhere, "icon '" + m.icon + "' not found in " + iconsDirectory +
                                                                   " (the default icon is used)"));
     }
     return diagnostics;

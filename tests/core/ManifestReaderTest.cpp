@@ -141,3 +141,18 @@ TEST(YamlSupport, ParsesTheFlowListsOfYamlOptions)
     EXPECT_FALSE(io::parseFlowList("[a, b", error));
     EXPECT_FALSE(io::parseFlowList("{a: 1}", error));
 }
+
+TEST(TemplateRegistry, AMissingIconFallsBackWithAWarningAtItsLine)
+{
+    const std::string folder = test::temporaryPath("icon-templates");
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder + "/extra/odd");
+    std::ofstream(folder + "/extra/odd/template.yml") << "name: odd\nui:\n  icon: no_such_icon\n";
+    TemplateRegistry registry;
+    const std::string icons = std::string(RIGSMITH_SOURCE_DIR) + "/resources/icons";
+    const Diagnostics d = registry.scan({folder}, icons);
+    ASSERT_EQ(d.size(), 1u) << formatAll(d);
+    EXPECT_EQ(d[0].format(), folder + "/extra/odd/template.yml:3:9: warning: icon 'no_such_icon' not found in " + icons +
+                                 " (the default icon is used)");
+    EXPECT_EQ(registry.iconPath(*registry.find("extra.odd")), icons + "/template.svg");
+}
