@@ -116,7 +116,11 @@ void resolveList(const std::vector<templates::Parameter>& params, const model::T
     for (const templates::Parameter& p : params) {
         Value v = p.value;
         if (auto it = instance.options.find(p.name); it != instance.options.end()) {
-            if (auto c = coerce(it->second, p.value)) {
+            Value given = it->second;
+            if (const auto* index = std::get_if<long long>(&given); index && p.isEnum()) // enum by index
+                for (const auto& [i, label] : p.enumLabels)
+                    if (i == *index) given = label;
+            if (auto c = coerce(given, p.value)) {
                 Value clamped = *c;
                 clampToRange(p, clamped);
                 if (clamped != *c)
