@@ -47,7 +47,9 @@ std::string formatValue(const Value& value)
         std::string operator()(const std::string& s) const { return s; }
         std::string operator()(const Vec3& v) const
         {
-            return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+            std::string text("[");
+            text.append(formatNumber(v.x)).append(", ").append(formatNumber(v.y)).append(", ").append(formatNumber(v.z));
+            return text.append("]");
         }
     };
     return std::visit(Visitor{}, value);

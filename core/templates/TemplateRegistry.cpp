@@ -92,7 +92,7 @@ Diagnostics TemplateRegistry::scan(const std::vector<std::string>& folders, cons
         for (const fs::path& category : sortedSubdirectories(folder)) {
             const std::string categoryName = category.filename().string();
             if (categoryName == "shapes") {
-                for (const fs::path& file : ShapeLibrary::filesIn(category.string()))
+                for (const std::string& file : ShapeLibrary::filesIn(category.string()))
                     jobs.push_back({file, {}, {}, {}, {}, {}});
                 continue;
             }

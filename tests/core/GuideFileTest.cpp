@@ -27,7 +27,7 @@ TEST(GuideFile, RoundTripsEveryFieldExactly)
     a.name = "chain";
     a.options = {{"number", 5LL}, {"flag", false}, {"ratio", 0.1}, {"label", std::string("on")},
                  {"pos", Vec3(0.1, -2.5e-7, 3)}};
-    a.joints = {{7, 0, {Vec3(0.1, 0.2, 0.3), Vec3(10, -20, 1e-3), Vec3(1, 2, 1)}, {"heel", "bank in"}}};
+    a.joints = {{7, 0, {Vec3(0.1, 0.2, 0.3), Vec3(10, -20, 1e-3), Vec3(1, 2, 1)}, {"heel", "bank in"}, {}}};
     doc.insertInstance(a, 0);
     const std::string text = io::writeGuideText(doc);
     auto back = io::readGuideText(text, "x.yml");

@@ -71,7 +71,7 @@ hierarchy:
         i.templateId = "test.limb";
         i.name = "arm";
         i.options = options;
-        i.joints.push_back({1, 0, {}, {}});
+        i.joints.push_back({1, 0, {}, {}, {}});
         guide.insertInstance(i, 0);
         return build::buildRig(guide, registry, builders);
     }

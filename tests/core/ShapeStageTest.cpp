@@ -76,10 +76,10 @@ shapes:
         model::TemplateInstance i;
         i.id = 1;
         i.templateId = "test.shaped";
-        i.name = "s";
+        i.name = std::string(1, 's');
         i.options = options;
         for (model::JointId j = 1; j <= 5; ++j)
-            i.joints.push_back({j, j - 1, {Vec3(0, j == 1 ? 0 : 1, 0)}, {}});
+            i.joints.push_back({j, j - 1, {Vec3(0, j == 1 ? 0 : 1, 0)}, {}, {}});
         guide.insertInstance(i, 0);
         return build::buildRig(guide, registry);
     }
