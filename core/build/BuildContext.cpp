@@ -84,7 +84,8 @@ Mat4 BuildContext::guideWorldMatrix(model::JointId joint) const
 
 std::string BuildContext::name(const std::string& token, std::optional<int> index) const
 {
-    std::string out = m_instance.name;
+    const BranchCopy& copy = m_assembly.copyOf(m_instance.id);
+    std::string out = copy.baseName;
     std::string core;
     if (auto it = m_instance.names.find(token); !token.empty() && it != m_instance.names.end())
         core = it->second; // per-instance override
@@ -97,7 +98,7 @@ std::string BuildContext::name(const std::string& token, std::optional<int> inde
             out += "_";
         out += std::to_string(*index);
     }
-    return out;
+    return out + copy.suffix;
 }
 
 model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std::string& tag, const std::string& name,
@@ -108,7 +109,7 @@ model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std:
     node.name = name;
     node.kind = kind;
     node.parent = parent == model::kNoNode ? m_hookNode : parent;
-    node.owner = m_instance.id;
+    node.owner = m_assembly.copyOf(m_instance.id).original;
     node.worldMatrix = worldMatrix;
     if (m_assembly.rig.find(node.id)) {
         error("rig node id '" + node.id + "' is created twice");

@@ -20,9 +20,10 @@ std::string tagOf(const model::RigNode& node) { return node.id.substr(node.id.fi
 std::vector<RigNodeIndex> nodesOf(const RigAssembly& a, const InstanceRecord& r, const std::string& id)
 {
     std::vector<RigNodeIndex> out;
+    const std::string prefix = r.instance->name + "::";
     for (RigNodeIndex i = 0; i < a.rig.nodes.size(); ++i) {
         const auto& n = a.rig.nodes[i];
-        if (n.owner != r.instance->id)
+        if (n.id.compare(0, prefix.size(), prefix) != 0)
             continue;
         const std::string tag = tagOf(n);
         if (tag == id || tag.rfind(id + ".", 0) == 0)

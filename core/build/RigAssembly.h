@@ -1,6 +1,7 @@
 #pragma once
 // Internal to rs::build: the rig under construction plus the lookup tables the
 // stages share (physical hooks per guide joint, virtual hooks per domain).
+#include "build/BranchStage.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
@@ -18,7 +19,8 @@ struct InstanceRecord {
 };
 
 struct RigAssembly {
-    const model::GuideDocument& guide;
+    const model::GuideDocument& guide;   // the expanded guide: one instance per branch copy
+    const ExpandedGuide& expanded;
     const templates::TemplateRegistry& templates;
     model::Rig rig;
     std::map<model::JointId, model::RigNodeIndex> hooks;                          // physical
@@ -32,7 +34,8 @@ struct RigAssembly {
     };
     std::unordered_map<model::JointId, GuideEntry> guideIndex;
 
-    void indexGuide();
+    void indexGuide(); // also places mirrored branch copies
+    const BranchCopy& copyOf(model::InstanceId expandedInstance) const { return expanded.copies.at(expandedInstance); }
     // The joint a guide joint hangs from: its parent, or for a root the hook joint.
     model::JointId upstreamJoint(model::JointId joint) const;
     Mat4 guideWorldMatrix(model::JointId joint) const;

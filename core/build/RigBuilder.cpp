@@ -34,6 +34,15 @@ void RigAssembly::indexGuide()
             guideIndex[joint.id].world =
                 (parent == guideIndex.end() ? Mat4(1.0) : parent->second.world) * joint.local.matrix();
         }
+    // A mirrored branch copy is the reflection of the authored guide: M * W * M
+    // keeps rotations proper (no negative scale) and positions mirrored.
+    for (const auto& instance : guide.instances()) {
+        const Mat4& m = copyOf(instance.id).mirror;
+        if (m == Mat4(1.0))
+            continue;
+        for (const auto& joint : instance.joints)
+            guideIndex[joint.id].world = m * guideIndex.at(expanded.original.at(joint.id)).world * m;
+    }
 }
 
 JointId RigAssembly::upstreamJoint(JointId joint) const
@@ -195,7 +204,10 @@ std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& m
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders)
 {
-    RigAssembly a{guide, templates, {}, {}, {}, {}, {}};
+    Diagnostics branchDiagnostics;
+    const ExpandedGuide expanded = expandBranches(guide, templates, branchDiagnostics);
+    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}};
+    a.rig.diagnostics = branchDiagnostics;
     a.indexGuide();
     model::RigNode root;
     root.id = "::rig";
@@ -204,7 +216,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 
     // Stage 1: gather. Nothing is created; every instance is resolved and checked.
     std::vector<std::pair<InstanceRecord, const TemplateBuilder*>> plan;
-    for (const model::TemplateInstance* instance : rootToLeaf(guide)) {
+    for (const model::TemplateInstance* instance : rootToLeaf(expanded.document)) {
         InstanceRecord record;
         record.instance = instance;
         record.manifest = templates.find(instance->templateId);

@@ -272,20 +272,53 @@ void cloneCurves(RigAssembly& a, const PendingClone& c)
     }
 }
 
+// A mirrored branch copy shows its twin's curves reflected (negative scale in the
+// controller's space, which is M * p for W' = M W M) and, on a flipped branch,
+// with the hue turned 120 degrees, as Mikan does.
+void mirrorBranchShapes(RigAssembly& a)
+{
+    for (const InstanceRecord& r : a.records) {
+        const BranchCopy& copy = a.copyOf(r.instance->id);
+        if (copy.mirror == Mat4(1.0))
+            continue;
+        const std::string own = r.instance->name + "::";
+        const std::string twin = a.guide.instance(copy.twin)->name + "::";
+        const Mat3 m(copy.mirror);
+        for (auto& node : a.rig.nodes) {
+            if (node.kind != model::RigNodeKind::Controller || node.id.compare(0, own.size(), own) != 0)
+                continue;
+            auto source = a.rig.find(twin + node.id.substr(own.size()));
+            if (!source)
+                continue;
+            const model::RigNode& from = a.rig.nodes[*source];
+            node.shape = from.shape;
+            node.curves = from.curves;
+            for (auto& curve : node.curves) {
+                for (Vec3& p : curve.points)
+                    p = m * p;
+                if (copy.flip) {
+                    const auto c = templates::shiftHue({curve.color.x, curve.color.y, curve.color.z}, 120.0);
+                    curve.color = Vec3(c.r, c.g, c.b);
+                }
+            }
+        }
+    }
+}
+
 } // namespace
 
 void applyShapes(RigAssembly& a)
 {
-    std::map<model::InstanceId, const InstanceRecord*> records;
+    std::map<std::string, const InstanceRecord*> records; // by (expanded) instance name
     std::map<const templates::Shape*, SampledShape> sampled;
     std::vector<PendingClone> clones;
     for (const auto& r : a.records)
-        records[r.instance->id] = &r;
+        records[r.instance->name] = &r;
     for (model::RigNodeIndex n = 0; n < a.rig.nodes.size(); ++n) {
         auto& node = a.rig.nodes[n];
         if (node.kind != model::RigNodeKind::Controller)
             continue;
-        auto record = records.find(node.owner);
+        auto record = records.find(node.id.substr(0, node.id.find("::")));
         if (record == records.end())
             continue;
         const InstanceRecord& r = *record->second;
@@ -331,6 +364,7 @@ void applyShapes(RigAssembly& a)
     }
     for (const PendingClone& c : clones)
         cloneCurves(a, c);
+    mirrorBranchShapes(a);
 }
 
 } // namespace rs::build

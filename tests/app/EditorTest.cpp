@@ -59,10 +59,10 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     Editor e;
     app::MainWindow& w = e.window;
     const std::string original = io::writeGuideText(w.session().document());
-    const auto* arm = w.session().document().instanceNamed("arm_L");
+    const auto* arm = w.session().document().instanceNamed("arm");
     const model::JointId hand = arm->joints.back().id;
 
-    clickInstance(w, "arm_L");
+    clickInstance(w, "arm");
     ASSERT_EQ(w.session().selection().instance, arm->id) << "clicking the outliner selects the instance";
 
     // Right-click menu: Add template > default (the arm's last joint) > core > joints.
@@ -81,7 +81,7 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     addJoints->trigger();
 
     const auto& doc = w.session().document();
-    ASSERT_EQ(doc.instances().size(), 8u);
+    ASSERT_EQ(doc.instances().size(), 6u);
     const model::TemplateInstance& added = doc.instances().back();
     EXPECT_EQ(added.parentJoint, hand);
     EXPECT_EQ(w.session().selection().instance, added.id);
@@ -94,9 +94,9 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     const model::Rig* rig = w.session().rig();
     ASSERT_NE(rig, nullptr);
     EXPECT_FALSE(hasErrors(rig->diagnostics)) << formatAll(rig->diagnostics);
-    const auto root = rig->find(added.name + "::roots.0");
+    const auto root = rig->find(added.name + ".L::roots.0"); // built once per branch of the arm
     ASSERT_TRUE(root);
-    EXPECT_EQ(rig->nodes[rig->nodes[*root].parent].id, "arm_L::ctrls.4") << "hung under the hand's hook";
+    EXPECT_EQ(rig->nodes[rig->nodes[*root].parent].id, "arm.L::ctrls.4") << "hung under the hand's hook";
     EXPECT_FALSE(w.viewportWidget()->scene().curves.empty()) << "controller curves shown after build";
     QTest::qWait(100);
     w.grab().save(QString::fromStdString(outputPath("editor-after-build.png")));
@@ -148,7 +148,7 @@ TEST(Editor, F5ReloadsTemplatesWithoutARestart)
     EXPECT_NE(log.find("broken/template.yml:2:1: error: malformed YAML"), std::string::npos) << log;
     EXPECT_NE(log.find("Reloaded"), std::string::npos) << log;
 
-    clickInstance(w, "arm_L");
+    clickInstance(w, "arm");
     std::unique_ptr<QMenu> menu(w.outliner()->createContextMenu(w.outliner()->selectedInstance(), &w));
     EXPECT_NE(menu->findChild<QAction*>("add:extra.tail"), nullptr) << "the outliner offers it at once";
     unsetenv("RIGSMITH_TEMPLATE_PATH");

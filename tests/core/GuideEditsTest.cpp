@@ -14,7 +14,7 @@ TEST(GuideEdits, EveryEditUndoesBackToTheOriginalDocument)
     int notifications = 0;
     history.addListener([&] { ++notifications; });
 
-    const auto* arm = doc.instanceNamed("arm_L");
+    const auto* arm = doc.instanceNamed("arm");
     auto digit = build::makeInstance(doc, test::builtinTemplates(), "core.joints", arm->joints.back().id);
     ASSERT_TRUE(digit.ok());
     const model::InstanceId digitId = digit->id;

@@ -42,8 +42,8 @@ TEST(RigBuilder, OneControllerAndSkinJointPerGuideJoint)
     // world: world + move controllers and a root joint; 6 chains of 4+3+5+5+5+5 joints.
     EXPECT_EQ(rig.count(RigNodeKind::Controller), 2u + 27u);
     EXPECT_EQ(rig.count(RigNodeKind::Joint), 1u + 27u);
-    const auto& c = node(rig, "arm_L::ctrls.2");
-    EXPECT_EQ(c.name, "c_arm_L3");
+    const auto& c = node(rig, "arm.L::ctrls.2");
+    EXPECT_EQ(c.name, "c_arm3_L");
     EXPECT_NEAR(glm::length(translationOf(c.worldMatrix) - Vec3(0.46, 1.5, -0.02)), 0.0, 1e-12);
     EXPECT_EQ(c.shape, "circle");
     ASSERT_EQ(c.curves.size(), 1u);
@@ -54,12 +54,12 @@ TEST(RigBuilder, ParentsAChildTemplateUnderTheNodeThatHooksItsJoint)
 {
     const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
     // arm_L hangs under spine's last joint, legs under its first.
-    EXPECT_EQ(rig.nodes[node(rig, "arm_L::roots.0").parent].id, "spine::ctrls.3");
-    EXPECT_EQ(rig.nodes[node(rig, "leg_R::roots.0").parent].id, "spine::ctrls.0");
+    EXPECT_EQ(rig.nodes[node(rig, "arm.L::roots.0").parent].id, "spine::ctrls.3");
+    EXPECT_EQ(rig.nodes[node(rig, "leg.R::roots.0").parent].id, "spine::ctrls.0");
     EXPECT_EQ(rig.nodes[node(rig, "spine::roots.0").parent].id, "world::ctrls.move");
     // Virtual hierarchies follow the same hooks, per domain.
-    EXPECT_EQ(rig.nodes[node(rig, "arm_L::ctrls.0").virtualParent].id, "spine::ctrls.3");
-    EXPECT_EQ(rig.nodes[node(rig, "arm_L::skin.0").virtualParent].id, "spine::skin.3");
+    EXPECT_EQ(rig.nodes[node(rig, "arm.L::ctrls.0").virtualParent].id, "spine::ctrls.3");
+    EXPECT_EQ(rig.nodes[node(rig, "arm.L::skin.0").virtualParent].id, "spine::skin.3");
     EXPECT_EQ(rig.nodes[node(rig, "spine::skin.0").virtualParent].id, "world::skin.root");
 }
 
@@ -84,7 +84,7 @@ TEST(RigBuilder, SkipsAnUnknownTemplateAndAttachesItsChildrenAbove)
               "instance 'spine' (spine.missing): unknown template 'spine.missing'; the instance is skipped and its children attach above it");
     EXPECT_EQ(rig.diagnostics[0].subject, "spine");
     EXPECT_FALSE(rig.find("spine::ctrls.0"));
-    EXPECT_EQ(rig.nodes[node(rig, "arm_L::roots.0").parent].id, "world::ctrls.move");
+    EXPECT_EQ(rig.nodes[node(rig, "arm.L::roots.0").parent].id, "world::ctrls.move");
 }
 
 TEST(RigBuilder, FallsBackToTheJointChainBuilderForDataOnlyManifests)
@@ -118,8 +118,8 @@ TEST(RigBuilder, ReportsANameClash)
     const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates(), builders);
     ASSERT_TRUE(hasErrors(rig.diagnostics));
     EXPECT_EQ(rig.diagnostics.back().message,
-              "name clash: 'c_same' is used by world::ctrls.0, spine::ctrls.0, neck::ctrls.0, arm_L::ctrls.0, "
-              "arm_R::ctrls.0, leg_L::ctrls.0, leg_R::ctrls.0");
+              "name clash: 'c_same' is used by world::ctrls.0, spine::ctrls.0, neck::ctrls.0, arm.L::ctrls.0, "
+              "arm.R::ctrls.0, leg.L::ctrls.0, leg.R::ctrls.0");
 }
 
 TEST(RigBuilder, RollsBackAnInstanceWhoseStructureFails)
@@ -134,4 +134,47 @@ TEST(RigBuilder, RollsBackAnInstanceWhoseStructureFails)
     EXPECT_EQ(rig.diagnostics[0].message, "instance 'world' (world.character): structure 'root': address '/1': index [1] is out of range (1 joints)");
     EXPECT_FALSE(rig.find("world::ctrls.world")) << "never half-built";
     EXPECT_EQ(rig.nodes[node(rig, "spine::roots.0").parent].id, "::rig");
+}
+
+TEST(RigBuilder, MirrorsBranchesSoEveryRightNodeIsTheMirrorOfItsLeftTwin)
+{
+    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
+    Mat4 mirror(1.0);
+    mirror[0][0] = -1.0; // the x plane of an L/R pair
+    std::size_t pairs = 0;
+    for (const auto& n : rig.nodes) {
+        if (n.name.size() < 2 || n.name.substr(n.name.size() - 2) != "_R")
+            continue;
+        const std::string leftId = std::string(n.id).replace(n.id.find(".R::"), 4, ".L::");
+        const auto& left = node(rig, leftId);
+        EXPECT_EQ(left.name, n.name.substr(0, n.name.size() - 2) + "_L");
+        EXPECT_LT(maxAbsDifference(n.worldMatrix, mirror * left.worldMatrix * mirror), 1e-6) << n.id;
+        if (n.kind == RigNodeKind::Controller) {
+            ASSERT_EQ(n.curves.size(), left.curves.size());
+            EXPECT_EQ(n.curves[0].points[1], Vec3(-left.curves[0].points[1].x, left.curves[0].points[1].y, left.curves[0].points[1].z))
+                << "shapes are negatively scaled in x";
+            EXPECT_NE(n.curves[0].color, left.curves[0].color) << "and hue-shifted";
+        }
+        ++pairs;
+    }
+    EXPECT_EQ(pairs, 30u) << "arm and leg: 5 joints x (offset, controller, skin) each";
+}
+
+TEST(RigBuilder, NestedBranchesMultiplyIdsAndSuffixes)
+{
+    model::GuideDocument guide = test::loadSample("biped");
+    // A digit chain under the arm's hand with its own branches [A, B]: 2 x 2 copies.
+    auto digit = build::makeInstance(guide, test::builtinTemplates(), "core.joints", guide.instanceNamed("arm")->joints.back().id);
+    ASSERT_TRUE(digit.ok());
+    digit->name = "finger";
+    digit->options["branches"] = std::string("[A, B]");
+    guide.insertInstance(digit.take(), guide.instances().size());
+    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
+    for (const char* id : {"finger.L.A::ctrls.0", "finger.L.B::ctrls.0", "finger.R.A::ctrls.0", "finger.R.B::ctrls.0"})
+        EXPECT_TRUE(rig.find(id)) << id;
+    EXPECT_EQ(node(rig, "finger.R.B::ctrls.0").name, "c_finger1_R_B");
+    EXPECT_EQ(rig.nodes[node(rig, "finger.R.A::roots.0").parent].id, "arm.R::ctrls.4") << "hangs under the mirrored hand";
+    EXPECT_LT(translationOf(node(rig, "finger.R.A::ctrls.0").worldMatrix).x, 0.0);
 }

@@ -34,7 +34,7 @@ struct Fixture {
 TEST(Picking, PicksTheGuideJointUnderTheCursor)
 {
     Fixture f;
-    const auto* arm = f.guide.instanceNamed("arm_L");
+    const auto* arm = f.guide.instanceNamed("arm");
     const model::JointId elbow = arm->joints[2].id;
     const glm::dvec2 at = f.pixelOf(translationOf(f.guide.jointWorldMatrix(elbow))) + glm::dvec2(3, -2);
     const PickResult hit = pick(f.scene, f.camera, 800, 600, at);
