@@ -49,6 +49,7 @@ ExpandedGuide expandBranches(const model::GuideDocument& guide, const templates:
 {
     ExpandedGuide out;
     out.document.name = guide.name;
+    out.document.naming = guide.naming;
     std::unordered_map<InstanceId, std::vector<Context>> contexts; // authored instance -> its copies
     InstanceId nextInstance = guide.nextInstanceId();
     JointId nextJoint = guide.nextJointId();

@@ -82,6 +82,14 @@ Mat4 BuildContext::guideWorldMatrix(model::JointId joint) const
     return m_assembly.guideWorldMatrix(joint);
 }
 
+std::string BuildContext::nodeName(model::NameRole role, const std::string& token, std::optional<int> index) const
+{
+    const std::string suffix = m_assembly.copyOf(m_instance.id).suffix;
+    std::string core = name(token, index);
+    core.resize(core.size() - suffix.size());
+    return m_assembly.guide.naming.make(role, core, suffix.empty() ? suffix : suffix.substr(1));
+}
+
 std::string BuildContext::name(const std::string& token, std::optional<int> index) const
 {
     const BranchCopy& copy = m_assembly.copyOf(m_instance.id);

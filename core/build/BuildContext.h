@@ -43,6 +43,8 @@ public:
 
     // Naming engine: core name of a token ("spine", "spine_cog"), optionally indexed.
     std::string name(const std::string& token = {}, std::optional<int> index = std::nullopt) const;
+    // The full node name by the document's naming rules: role mark, core name, branch.
+    std::string nodeName(model::NameRole role, const std::string& token = {}, std::optional<int> index = std::nullopt) const;
 
     // Creates a node "<instance>::<tag>" at a rest world matrix under `parent`.
     model::RigNodeIndex createNode(model::RigNodeKind kind, const std::string& tag, const std::string& name,

@@ -129,6 +129,29 @@ void validate(YamlReader& r, const GuideDocument& doc, std::map<model::InstanceI
     }
 }
 
+// `naming: suffix`, or a map: {preset: suffix, controller: _ctl, side: _, lowercase: on}.
+void readNaming(YamlReader& r, const YAML::Node& node, model::NamingRules& rules)
+{
+    auto preset = [&](const YAML::Node& n) {
+        if (auto name = r.string(n, "naming preset")) {
+            if (auto p = model::namingPreset(*name)) rules = *p;
+            else r.error(n, "unknown naming preset '" + *name + "' (known: mikan, suffix)");
+        }
+    };
+    if (node.IsScalar()) { preset(node); return; }
+    if (!r.expectMap(node, "naming")) return;
+    if (node["preset"]) preset(node["preset"]);
+    for (const auto& kv : node) {
+        const std::string key = kv.first.Scalar();
+        std::string* field = key == "offset" ? &rules.offset : key == "controller" ? &rules.controller
+                           : key == "skin" ? &rules.skin : key == "group" ? &rules.group : key == "side" ? &rules.side : nullptr;
+        if (field) { if (auto s = r.string(kv.second, "naming." + key)) *field = *s; }
+        else if (key == "suffixes") { if (auto b = r.boolean(kv.second, "naming.suffixes")) rules.suffixes = *b; }
+        else if (key == "lowercase") { if (auto b = r.boolean(kv.second, "naming.lowercase")) rules.lowercase = *b; }
+        else if (key != "preset") r.warning(kv.first, "unknown key '" + key + "' in naming");
+    }
+}
+
 } // namespace
 
 Result<GuideDocument> readGuideText(const std::string& text, const std::string& displayName)
@@ -153,6 +176,7 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
         const std::string key = kv.first.Scalar();
         if (key == kFormatKey) continue;
         if (key == "name") { if (auto s = r.string(kv.second, "name")) doc.name = *s; }
+        else if (key == "naming") readNaming(r, kv.second, doc.naming);
         else if (key == "instances") {
             if (kv.second.IsNull()) continue;
             if (!r.expectSequence(kv.second, "instances")) continue;
@@ -182,6 +206,18 @@ std::string writeGuideText(const GuideDocument& doc)
     out << kFormatKey << ": " << GuideDocument::kSchemaVersion << "\n";
     if (!doc.name.empty())
         out << "name: " << quoteIfNeeded(doc.name) << "\n";
+    if (doc.naming != model::NamingRules{}) {
+        const auto preset = model::namingPreset(doc.naming.preset);
+        if (preset && *preset == doc.naming) {
+            out << "naming: " << doc.naming.preset << "\n";
+        } else {
+            const auto& n = doc.naming;
+            out << "naming: {preset: " << n.preset << ", offset: " << quoteIfNeeded(n.offset) << ", controller: "
+                << quoteIfNeeded(n.controller) << ", skin: " << quoteIfNeeded(n.skin) << ", group: " << quoteIfNeeded(n.group)
+                << ", side: " << quoteIfNeeded(n.side) << ", suffixes: " << (n.suffixes ? "on" : "off")
+                << ", lowercase: " << (n.lowercase ? "on" : "off") << "}\n";
+        }
+    }
     out << "instances:" << (doc.instances().empty() ? " []\n" : "\n");
     for (const TemplateInstance& i : doc.instances()) {
         out << "  - id: " << i.id << "\n";

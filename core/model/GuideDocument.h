@@ -7,6 +7,7 @@
 //
 // The document is plain data; edits go through rs::edit so undo stays in step.
 #include "base/Math.h"
+#include "model/Naming.h"
 #include "model/Value.h"
 
 #include <cstdint>
@@ -79,6 +80,7 @@ public:
     std::string uniqueName(const std::string& base) const;
 
     std::string name;                // asset name
+    NamingRules naming;              // how rig nodes are named (preset "mikan" unless the file says)
     bool operator==(const GuideDocument&) const = default;
 
 private:

@@ -82,3 +82,20 @@ TEST(GuideFile, FailedSaveLeavesThePreviousFileUntouched)
     EXPECT_TRUE(io::saveGuideFile(test::loadSample("biped"), path).empty());
     EXPECT_EQ(test::readText(path), test::readText(test::samplePath("biped")));
 }
+
+TEST(GuideFile, KeepsNamingRulesAndRejectsAnUnknownPreset)
+{
+    auto doc = io::readGuideText("rigsmith_guide: 1\nnaming: suffix\ninstances: []\n", "g.yml");
+    ASSERT_TRUE(doc.ok()) << formatAll(doc.diagnostics());
+    EXPECT_EQ(doc->naming.controller, "_ctrl");
+    EXPECT_NE(io::writeGuideText(*doc).find("naming: suffix\n"), std::string::npos);
+    auto custom = io::readGuideText("rigsmith_guide: 1\nnaming: {preset: suffix, controller: _ctl}\ninstances: []\n", "g.yml");
+    ASSERT_TRUE(custom.ok());
+    auto again = io::readGuideText(io::writeGuideText(*custom), "g.yml");
+    ASSERT_TRUE(again.ok()) << io::writeGuideText(*custom);
+    EXPECT_EQ(again->naming, custom->naming);
+    EXPECT_EQ(again->naming.controller, "_ctl");
+    auto bad = io::readGuideText("rigsmith_guide: 1\nnaming: maya\ninstances: []\n", "g.yml");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.diagnostics()[0].format(), "g.yml:2:9: error: unknown naming preset 'maya' (known: mikan, suffix)");
+}

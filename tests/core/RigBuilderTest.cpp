@@ -178,3 +178,26 @@ TEST(RigBuilder, NestedBranchesMultiplyIdsAndSuffixes)
     EXPECT_EQ(rig.nodes[node(rig, "finger.R.A::roots.0").parent].id, "arm.R::ctrls.4") << "hangs under the mirrored hand";
     EXPECT_LT(translationOf(node(rig, "finger.R.A::ctrls.0").worldMatrix).x, 0.0);
 }
+
+TEST(RigBuilder, NamesNodesByTheDocumentsNamingRules)
+{
+    model::GuideDocument guide = test::loadSample("biped");
+    guide.naming = *model::namingPreset("suffix"); // seed 004: arm_L_ctrl, arm_L_jnt, _gp groups
+    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
+    EXPECT_EQ(node(rig, "arm.L::ctrls.0").name, "arm1_L_ctrl");
+    EXPECT_EQ(node(rig, "arm.R::skin.2").name, "arm3_R_jnt");
+    EXPECT_EQ(node(rig, "arm.L::roots.0").name, "arm1_L_gp");
+    EXPECT_EQ(node(rig, "world::ctrls.move").name, "world_move_ctrl");
+    EXPECT_EQ(node(rig, "spine::ctrls.0").name, "spine1_ctrl");
+}
+
+TEST(Naming, PresetsAndCustomRules)
+{
+    model::NamingRules rules = *model::namingPreset("mikan");
+    EXPECT_EQ(rules.make(model::NameRole::Controller, "arm1", "A_L"), "c_arm1_A_L");
+    rules.lowercase = true;
+    rules.side = "-";
+    EXPECT_EQ(rules.make(model::NameRole::Skin, "Arm1", "L"), "sk_arm1-l");
+    EXPECT_FALSE(model::namingPreset("maya"));
+}

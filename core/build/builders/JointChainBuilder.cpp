@@ -71,14 +71,14 @@ public:
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i < chain.size(); ++i) {
             const std::string index = std::to_string(i);
-            const std::string core = ctx.name("", static_cast<int>(i) + 1);
+            const int number = static_cast<int>(i) + 1;
             const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(chain[i]));
-            const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, "root_" + core, parent, frame);
+            const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, ctx.nodeName(model::NameRole::Offset, "", number), parent, frame);
             model::RigNodeIndex driver = offset;
             if (controllers)
-                driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, "c_" + core, offset, frame);
+                driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
             if (skin)
-                ctx.createNode(model::RigNodeKind::Joint, "skin." + index, "sk_" + core, driver, frame);
+                ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
             ctx.setHook(chain[i], driver);
             parent = driver;
         }

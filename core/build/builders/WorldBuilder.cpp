@@ -27,16 +27,16 @@ public:
         const Mat4 rootMatrix = translationMatrix(translationOf(ctx.guideWorldMatrix(root)));
         const bool controllers = ctx.optionBool("do_ctrl");
         const auto kind = controllers ? model::RigNodeKind::Controller : model::RigNodeKind::Group;
-        const std::string prefix = controllers ? "c_" : "root_";
+        const auto role = controllers ? model::NameRole::Controller : model::NameRole::Offset;
 
         const auto worldNode = ctx.createNode(kind, controllers ? "ctrls.world" : "hooks.world",
-                                              prefix + ctx.name("world"), model::kNoNode, worldMatrix);
+                                              ctx.nodeName(role, "world"), model::kNoNode, worldMatrix);
         const auto moveNode = ctx.createNode(kind, controllers ? "ctrls.move" : "hooks.move",
-                                             prefix + ctx.name("move"), worldNode, rootMatrix);
+                                             ctx.nodeName(role, "move"), worldNode, rootMatrix);
         ctx.setHook(world, worldNode);
         ctx.setHook(root, moveNode);
         if (ctx.optionBool("do_skin"))
-            ctx.createNode(model::RigNodeKind::Joint, "skin.root", "sk_" + ctx.name("root"), moveNode, rootMatrix);
+            ctx.createNode(model::RigNodeKind::Joint, "skin.root", ctx.nodeName(model::NameRole::Skin, "root"), moveNode, rootMatrix);
     }
 };
 
