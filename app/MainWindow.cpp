@@ -108,7 +108,7 @@ void MainWindow::refreshScene()
         m_status->setText(tr("Rig%1: %2 controllers, %3 skin joints")
                               .arg(m_session.isRigStale() ? tr(" (out of date, press Build)") : QString())
                               .arg(rig->count(model::RigNodeKind::Controller))
-                              .arg(rig->count(model::RigNodeKind::Joint)));
+                              .arg(rig->skinJointCount()));
 }
 
 void MainWindow::updateTitle()

@@ -46,7 +46,7 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                     c.points.push_back(glm::dvec3(node.worldMatrix * glm::dvec4(p, 1.0)));
                 scene.curves.push_back(std::move(c));
             }
-        if (node.kind == model::RigNodeKind::Joint) {
+        if (node.kind == model::RigNodeKind::Joint && !node.hidden && node.domain() == "skin") {
             SceneJoint j;
             j.owner = node.owner;
             j.position = translationOf(node.worldMatrix);

@@ -30,6 +30,8 @@ void print(const Diagnostics& diagnostics)
 std::string usage()
 {
     return "usage: rigsmith-cli build GUIDE [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
+           "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
+           "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
            "       rigsmith-cli check-templates [DIR...]\n"
            "       rigsmith-cli describe-template ID   (what Rigsmith understood of every key)\n"
            "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";
@@ -65,7 +67,7 @@ int runBuild(const std::vector<std::string>& args)
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     print(rig.diagnostics);
     std::cerr << "built " << rig.nodes.size() << " nodes (" << rig.count(model::RigNodeKind::Controller)
-              << " controllers, " << rig.count(model::RigNodeKind::Joint) << " skin joints) in " << ms << " ms\n";
+              << " controllers, " << rig.skinJointCount() << " skin joints) in " << ms << " ms\n";
     int status = hasErrors(rig.diagnostics) ? 1 : 0;
     if (!dumpPath.empty()) {
         const std::string text = io::writeRigDump(rig);

@@ -9,6 +9,8 @@ namespace rs::cli {
 int runBuild(const std::vector<std::string>& args);
 int runCheckTemplates(const std::vector<std::string>& args);
 int runDescribeTemplate(const std::vector<std::string>& args);
+int runNew(const std::vector<std::string>& args);
+int runAdd(const std::vector<std::string>& args);
 int runShapeIcons(const std::vector<std::string>& args);
 std::string usage();
 

@@ -20,6 +20,10 @@ int main(int argc, char** argv)
         return rs::cli::runCheckTemplates(args);
     if (command == "describe-template")
         return rs::cli::runDescribeTemplate(args);
+    if (command == "new")
+        return rs::cli::runNew(args);
+    if (command == "add")
+        return rs::cli::runAdd(args);
     if (command == "shape-icons")
         return rs::cli::runShapeIcons(args);
     std::cerr << "rigsmith-cli: unknown command '" << command << "'\n" << rs::cli::usage();

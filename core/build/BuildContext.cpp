@@ -4,6 +4,7 @@
 #include "io/YamlSupport.h"
 #include "templates/Structure.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace rs::build {
@@ -79,7 +80,73 @@ std::optional<std::vector<model::JointId>> BuildContext::structure(const std::st
 
 Mat4 BuildContext::guideWorldMatrix(model::JointId joint) const
 {
-    return m_assembly.guideWorldMatrix(joint);
+    return m_assembly.guideWorldMatrix(m_assembly.authoredJoint(joint));
+}
+
+std::vector<model::JointId> BuildContext::taggedJoints(const std::string& tag) const
+{
+    std::vector<model::JointId> out;
+    for (const auto& joint : m_instance.joints)
+        if (std::find(joint.tags.begin(), joint.tags.end(), tag) != joint.tags.end())
+            out.push_back(joint.id);
+    return out;
+}
+
+bool BuildContext::mirrored() const { return m_assembly.copyOf(m_instance.id).mirror != Mat4(1.0); }
+
+const model::RigNode& BuildContext::node(model::RigNodeIndex index) const { return m_assembly.rig.nodes.at(index); }
+
+Mat4 BuildContext::nodeWorld(model::RigNodeIndex index) const
+{
+    const Mat4& m = m_assembly.copyOf(m_instance.id).mirror;
+    return m * node(index).worldMatrix * m;
+}
+
+std::optional<model::RigNodeIndex> BuildContext::findNode(const std::string& tag) const
+{
+    return m_assembly.rig.find(m_instance.name + "::" + tag);
+}
+
+void BuildContext::setHidden(model::RigNodeIndex index) { m_assembly.rig.nodes.at(index).hidden = true; }
+
+std::string BuildContext::addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min, double max)
+{
+    auto& node = m_assembly.rig.nodes.at(index);
+    node.attributes.push_back({name, std::clamp(value, min, max), min, max});
+    return node.id + "." + name;
+}
+
+void BuildContext::addConstraint(model::ConstraintKind kind, const std::string& tag, std::vector<model::RigNodeIndex> driven,
+                                 std::vector<model::RigNodeIndex> targets, std::map<std::string, std::string> attributes,
+                                 std::map<std::string, double> values)
+{
+    model::RigConstraint c;
+    c.id = m_instance.name + "::" + tag;
+    c.kind = kind;
+    c.owner = m_assembly.copyOf(m_instance.id).original;
+    c.driven = std::move(driven);
+    c.targets = std::move(targets);
+    c.attributes = std::move(attributes);
+    c.values = std::move(values);
+    for (auto index : c.driven)
+        if (index == model::kNoNode) {
+            error("constraint '" + c.id + "' has no driven node");
+            return;
+        }
+    for (auto index : c.targets)
+        if (index == model::kNoNode) {
+            error("constraint '" + c.id + "' has a missing target");
+            return;
+        }
+    m_assembly.rig.constraints.push_back(std::move(c));
+}
+
+void BuildContext::defineSpace(const std::string& name, model::RigNodeIndex index) { m_assembly.spaces[name] = index; }
+
+model::RigNodeIndex BuildContext::space(const std::string& name) const
+{
+    auto it = m_assembly.spaces.find(name);
+    return it == m_assembly.spaces.end() ? model::kNoNode : it->second;
 }
 
 std::string BuildContext::nodeName(model::NameRole role, const std::string& token, std::optional<int> index) const
@@ -110,15 +177,17 @@ std::string BuildContext::name(const std::string& token, std::optional<int> inde
 }
 
 model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std::string& tag, const std::string& name,
-                                             model::RigNodeIndex parent, const Mat4& worldMatrix)
+                                             model::RigNodeIndex parent, const Mat4& worldMatrix, model::JointId source)
 {
+    const Mat4& mirror = m_assembly.copyOf(m_instance.id).mirror;
     model::RigNode node;
     node.id = m_instance.name + "::" + tag;
     node.name = name;
     node.kind = kind;
     node.parent = parent == model::kNoNode ? m_hookNode : parent;
     node.owner = m_assembly.copyOf(m_instance.id).original;
-    node.worldMatrix = worldMatrix;
+    node.worldMatrix = mirror * worldMatrix * mirror;
+    node.guide = source == model::kNoId ? model::kNoId : m_assembly.authoredJoint(source);
     if (m_assembly.rig.find(node.id)) {
         error("rig node id '" + node.id + "' is created twice");
         return *m_assembly.rig.find(node.id);

@@ -2,6 +2,11 @@
 // What one template instance's builder sees of the build: its manifest, guide,
 // typed options, structure lookups, naming, and the calls that create rig nodes
 // and register hooks. Diagnostics name the instance (and option) they are about.
+//
+// Builders work in *authored space*: guide matrices are those of the authored
+// (unmirrored) guide, and every matrix handed to createNode is mapped through
+// the branch mirror (W' = M W M). A mirrored branch is then the exact mirror of
+// its twin whatever the builder computes from the guide.
 #include "model/Rig.h"
 #include "templates/Manifest.h"
 
@@ -35,7 +40,10 @@ public:
 
     // Joints of a structure tag; reports an error and returns nullopt when it fails.
     std::optional<std::vector<model::JointId>> structure(const std::string& tag) const;
-    Mat4 guideWorldMatrix(model::JointId joint) const;
+    Mat4 guideWorldMatrix(model::JointId joint) const; // authored space
+    Vec3 guidePosition(model::JointId joint) const { return translationOf(guideWorldMatrix(joint)); }
+    // Joints of the instance with `tag` among their explicit tags (off-chain guides: heel, banks).
+    std::vector<model::JointId> taggedJoints(const std::string& tag) const;
 
     // The rig node this instance attaches to (its parent's hook, else the rig root).
     model::RigNodeIndex hookNode() const { return m_hookNode; }
@@ -46,9 +54,26 @@ public:
     // The full node name by the document's naming rules: role mark, core name, branch.
     std::string nodeName(model::NameRole role, const std::string& token = {}, std::optional<int> index = std::nullopt) const;
 
-    // Creates a node "<instance>::<tag>" at a rest world matrix under `parent`.
+    // Creates a node "<instance>::<tag>" at a rest world matrix (authored space)
+    // under `parent` (kNoNode: the hook node); `source` is the guide joint it derives from.
     model::RigNodeIndex createNode(model::RigNodeKind kind, const std::string& tag, const std::string& name,
-                                   model::RigNodeIndex parent, const Mat4& worldMatrix);
+                                   model::RigNodeIndex parent, const Mat4& worldMatrix,
+                                   model::JointId source = model::kNoId);
+    const model::RigNode& node(model::RigNodeIndex index) const;
+    Mat4 nodeWorld(model::RigNodeIndex index) const; // authored space
+    // A node of this instance by tag ("ctrls.ik"); nullopt when it was not created.
+    std::optional<model::RigNodeIndex> findNode(const std::string& tag) const;
+    void setHidden(model::RigNodeIndex index);
+    // Adds an animatable attribute and returns its path "<node id>.<name>".
+    std::string addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min, double max);
+    void addConstraint(model::ConstraintKind kind, const std::string& tag, std::vector<model::RigNodeIndex> driven,
+                       std::vector<model::RigNodeIndex> targets, std::map<std::string, std::string> attributes = {},
+                       std::map<std::string, double> values = {});
+    // Named spaces other instances can follow ("world", "cog", "chest", "head").
+    // The latest definition wins; space() gives kNoNode when none is defined.
+    void defineSpace(const std::string& name, model::RigNodeIndex index);
+    model::RigNodeIndex space(const std::string& name) const;
+    bool mirrored() const;
     // Children templates hanging under `joint` attach to `node`.
     void setHook(model::JointId joint, model::RigNodeIndex node);
 

@@ -38,6 +38,15 @@ const BuilderRegistry& BuilderRegistry::builtin()
     static const BuilderRegistry registry = [] {
         BuilderRegistry r;
         r.add("world.character", makeWorldBuilder());
+        r.add("world.prop", makeWorldBuilder());
+        r.add("core.xform", makeXformBuilder());
+        r.add("spine.torso", makeSpineBuilder());
+        r.add("neck.head", makeNeckBuilder());
+        r.add("arm.limb", makeLimbBuilder(LimbKind::Arm));
+        r.add("leg.limb", makeLimbBuilder(LimbKind::Leg));
+        r.add("quad.leg", makeLimbBuilder(LimbKind::Quad));
+        r.add("digit.finger", makeDigitBuilder());
+        r.add("rig.spline", makeSplineBuilder());
         r.add(kFallbackBuilder, makeJointChainBuilder());
         return r;
     }();

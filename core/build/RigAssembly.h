@@ -6,6 +6,8 @@
 #include "templates/TemplateRegistry.h"
 
 #include <map>
+#include <memory>
+#include <vector>
 #include <string>
 #include <unordered_map>
 
@@ -25,6 +27,7 @@ struct RigAssembly {
     model::Rig rig;
     std::map<model::JointId, model::RigNodeIndex> hooks;                          // physical
     std::map<std::string, std::map<model::JointId, model::RigNodeIndex>> virtualHooks; // domain -> joint -> node
+    std::map<std::string, model::RigNodeIndex> spaces;                             // named spaces
     std::vector<InstanceRecord> records;                                            // document order
     // Guide lookups computed once per build (the document only offers linear scans).
     struct GuideEntry {
@@ -35,6 +38,7 @@ struct RigAssembly {
     std::unordered_map<model::JointId, GuideEntry> guideIndex;
 
     void indexGuide(); // also places mirrored branch copies
+    model::JointId authoredJoint(model::JointId expandedJoint) const;
     const BranchCopy& copyOf(model::InstanceId expandedInstance) const { return expanded.copies.at(expandedInstance); }
     // The joint a guide joint hangs from: its parent, or for a root the hook joint.
     model::JointId upstreamJoint(model::JointId joint) const;
@@ -50,5 +54,16 @@ struct RigAssembly {
 // Stages run by buildRig after generation.
 void applyShapes(RigAssembly& assembly);
 void buildVirtualHierarchy(RigAssembly& assembly);
+
+// Cross-cutting work after every instance is built (Rigify's generator plugins):
+// each plugin sees the whole rig and reports through the assembly.
+class GeneratorPlugin {
+public:
+    virtual ~GeneratorPlugin() = default;
+    virtual const char* name() const = 0;
+    virtual void finalize(RigAssembly& assembly) const = 0;
+};
+// Controller set, skin-root and naming checks, in the order they run.
+const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins();
 
 } // namespace rs::build

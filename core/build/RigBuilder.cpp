@@ -4,6 +4,7 @@
 #include "templates/Structure.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -43,6 +44,12 @@ void RigAssembly::indexGuide()
         for (const auto& joint : instance.joints)
             guideIndex[joint.id].world = m * guideIndex.at(expanded.original.at(joint.id)).world * m;
     }
+}
+
+JointId RigAssembly::authoredJoint(JointId expandedJoint) const
+{
+    auto it = expanded.original.find(expandedJoint);
+    return it == expanded.original.end() ? expandedJoint : it->second;
 }
 
 JointId RigAssembly::upstreamJoint(JointId joint) const
@@ -172,20 +179,6 @@ void computeLocalMatrices(model::Rig& rig)
                                                   : glm::inverse(rig.nodes[node.parent].worldMatrix) * node.worldMatrix;
 }
 
-void checkNames(RigAssembly& a)
-{
-    std::map<std::string, std::vector<std::string>> ids;
-    for (const auto& n : a.rig.nodes)
-        ids[n.name].push_back(n.id);
-    for (const auto& [name, owners] : ids)
-        if (owners.size() > 1) {
-            std::string list;
-            for (const auto& id : owners)
-                list += (list.empty() ? "" : ", ") + id;
-            a.report(Severity::Error, nullptr, "name clash: '" + name + "' is used by " + list);
-        }
-}
-
 } // namespace
 
 std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& manifest,
@@ -206,7 +199,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 {
     Diagnostics branchDiagnostics;
     const ExpandedGuide expanded = expandBranches(guide, templates, branchDiagnostics);
-    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}};
+    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}};
     a.rig.diagnostics = branchDiagnostics;
     a.indexGuide();
     model::RigNode root;
@@ -242,37 +235,60 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     }
 
     // Stage 2: generate, root to leaf. A failing instance is rolled back whole.
+    std::vector<std::pair<InstanceRecord, const TemplateBuilder*>> built;
     for (auto& [record, builder] : plan) {
         BuildContext ctx(a, *record.manifest, *record.instance, record.options);
         ctx.setHookNode(record.instance->parentJoint != model::kNoId ? a.physicalHookFor(record.instance->parentJoint) : 0);
         const std::size_t nodesBefore = a.rig.nodes.size();
+        const std::size_t constraintsBefore = a.rig.constraints.size();
         const auto hooksBefore = a.hooks;
+        const auto spacesBefore = a.spaces;
         builder->generate(ctx);
         if (ctx.failed()) {
             for (std::size_t i = nodesBefore; i < a.rig.nodes.size(); ++i)
                 a.rig.byId.erase(a.rig.nodes[i].id);
             a.rig.nodes.resize(nodesBefore);
+            a.rig.constraints.resize(constraintsBefore);
             a.hooks = hooksBefore;
+            a.spaces = spacesBefore;
             continue;
         }
         record.built = true;
         a.records.push_back(record);
+        built.emplace_back(record, builder);
     }
 
-    // Stage 3: finalize. Shapes, virtual hierarchy, orphans, matrices, names.
+    // Stage 3: configure, root to leaf, now that every node exists.
+    for (auto& [record, builder] : built) {
+        BuildContext ctx(a, *record.manifest, *record.instance, record.options);
+        const std::size_t constraintsBefore = a.rig.constraints.size();
+        builder->configure(ctx);
+        if (ctx.failed())
+            a.rig.constraints.resize(constraintsBefore);
+    }
+
+    // Stage 4: finalize. Orphans, shapes, virtual hierarchy, matrices, plugins.
     for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
         if (a.rig.nodes[i].parent == kNoNode)
             a.rig.nodes[i].parent = 0;
     applyShapes(a);
     buildVirtualHierarchy(a);
     computeLocalMatrices(a.rig);
-    checkNames(a);
+    for (const auto& plugin : builtinPlugins())
+        plugin->finalize(a);
     return std::move(a.rig);
 }
 
 Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                                              const std::string& templateId, JointId parentJoint,
                                              const BuilderRegistry& builders)
+{
+    return makeInstance(guide, templates, templateId, parentJoint, {}, builders);
+}
+
+Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                                             const std::string& templateId, JointId parentJoint,
+                                             const std::map<std::string, Value>& options, const BuilderRegistry& builders)
 {
     const templates::TemplateManifest* manifest = templates.find(templateId);
     if (!manifest)
@@ -288,8 +304,12 @@ Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide, 
         instance.parent = parent->id;
         instance.parentJoint = parentJoint;
     }
+    instance.options = options;
     Diagnostics diagnostics;
     const auto values = resolveOptions(*manifest, instance, diagnostics);
+    for (const auto& [name, value] : options)
+        if (!values.count(name))
+            return Result<model::TemplateInstance>::failure(makeError({}, templateId + " has no option '" + name + "'"));
     std::map<std::string, Value> guideValues;
     for (const auto& p : manifest->guides)
         guideValues[p.name] = values.at(p.name);
@@ -303,7 +323,10 @@ Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide, 
         joint.id = next++;
         joint.parent = spec.parent < 0 ? model::kNoId : first + JointId(spec.parent);
         joint.local = spec.local;
+        for (int axis = 0; axis < 3; ++axis) // proposals are to the micrometre: clean, diffable files
+            joint.local.translate[axis] = std::round(joint.local.translate[axis] * 1e6) / 1e6 + 0.0;
         joint.tags = spec.tags;
+        joint.name = spec.name;
         instance.joints.push_back(std::move(joint));
     }
     return Result<model::TemplateInstance>(std::move(instance), std::move(diagnostics));

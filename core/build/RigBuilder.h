@@ -31,6 +31,13 @@ Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide,
                                              const templates::TemplateRegistry& templates,
                                              const std::string& templateId, model::JointId parentJoint,
                                              const BuilderRegistry& builders = BuilderRegistry::builtin());
+// The same with option values given up front (guide parameters such as
+// `number` shape the default joints); unknown options are refused.
+Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide,
+                                             const templates::TemplateRegistry& templates,
+                                             const std::string& templateId, model::JointId parentJoint,
+                                             const std::map<std::string, Value>& options,
+                                             const BuilderRegistry& builders = BuilderRegistry::builtin());
 
 // An attach point offered to child templates (manifest `ui.hooks`); a hook whose
 // address spans several joints expands to "label[i]".

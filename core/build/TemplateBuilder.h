@@ -20,6 +20,7 @@ struct GuideJointSpec {
     int parent = -1;
     Transform local;
     std::vector<std::string> tags;
+    std::string name; // optional; "_name" marks a helper outside the chain
 };
 
 class TemplateBuilder {
@@ -32,7 +33,11 @@ public:
     // return false to skip the instance (its children then hang on the nearest
     // built ancestor).
     virtual bool gather(const BuildContext& ctx) const { return true; }
+    // Creates the instance's nodes, hooks, attributes and its own constraints.
     virtual void generate(BuildContext& ctx) const = 0;
+    // Runs after every instance has generated, root to leaf: wiring that needs
+    // other instances' nodes (space switches). A failure drops only what it added.
+    virtual void configure(BuildContext& ctx) const {}
 };
 
 class BuilderRegistry {

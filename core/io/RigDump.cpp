@@ -66,6 +66,13 @@ std::string writeRigDump(const model::Rig& rig)
         out << "    r: " << list({r.x, r.y, r.z, r.w}) << "\n";
         if (glm::length(s - Vec3(1.0)) > 1e-9)
             out << "    s: " << list({s.x, s.y, s.z}) << "\n";
+        if (n.hidden)
+            out << "    hidden: true\n";
+        for (std::size_t i = 0; i < n.attributes.size(); ++i) {
+            const auto& a = n.attributes[i];
+            out << (i == 0 ? "    attributes:\n" : "") << "      - {name: " << quoteIfNeeded(a.name) << ", value: " << fixed(a.value)
+                << ", min: " << fixed(a.min) << ", max: " << fixed(a.max) << "}\n";
+        }
         if (!n.shape.empty()) {
             out << "    shape: " << quoteIfNeeded(n.shape) << "\n";
             out << "    curves:\n";
@@ -77,6 +84,26 @@ std::string writeRigDump(const model::Rig& rig)
             }
         }
     }
+    auto ids = [&](const std::vector<model::RigNodeIndex>& nodes) {
+        std::string text = "[";
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+            text += (i ? ", " : "") + quoteIfNeeded(rig.nodes[nodes[i]].id);
+        return text + "]";
+    };
+    out << "constraints:" << (rig.constraints.empty() ? " []\n" : "\n");
+    for (const auto& c : rig.constraints) {
+        out << "  - id: " << quoteIfNeeded(c.id) << "\n";
+        out << "    kind: " << model::constraintKindName(c.kind) << "\n";
+        out << "    driven: " << ids(c.driven) << "\n";
+        out << "    targets: " << ids(c.targets) << "\n";
+        for (const auto& [role, attribute] : c.attributes)
+            out << "    " << role << ": " << quoteIfNeeded(attribute) << "\n";
+        for (const auto& [key, value] : c.values)
+            out << "    " << key << ": " << fixed(value) << "\n";
+    }
+    out << "sets:" << (rig.sets.empty() ? " {}\n" : "\n");
+    for (const auto& [name, members] : rig.sets)
+        out << "  " << quoteIfNeeded(name) << ": " << ids(members) << "\n";
     out << "diagnostics:" << (rig.diagnostics.empty() ? " []\n" : "\n");
     for (const auto& d : rig.diagnostics)
         out << "  - " << quoteIfNeeded(d.format()) << "\n";

@@ -14,6 +14,30 @@ const char* kindName(RigNodeKind kind)
     return "group";
 }
 
+const char* constraintKindName(ConstraintKind kind)
+{
+    switch (kind) {
+    case ConstraintKind::Parent: return "parent";
+    case ConstraintKind::Orient: return "orient";
+    case ConstraintKind::Point: return "point";
+    case ConstraintKind::Blend: return "blend";
+    case ConstraintKind::Ik: return "ik";
+    case ConstraintKind::Twist: return "twist";
+    case ConstraintKind::Spline: return "spline";
+    case ConstraintKind::Space: return "space";
+    case ConstraintKind::Drive: return "drive";
+    }
+    return "parent";
+}
+
+const RigAttribute* RigNode::attribute(const std::string& attributeName) const
+{
+    for (const auto& a : attributes)
+        if (a.name == attributeName)
+            return &a;
+    return nullptr;
+}
+
 std::string RigNode::domain() const
 {
     const auto sep = id.find("::");
@@ -59,6 +83,13 @@ std::vector<RigNodeIndex> Rig::children(RigNodeIndex node) const
 std::size_t Rig::count(RigNodeKind kind) const
 {
     return static_cast<std::size_t>(std::count_if(nodes.begin(), nodes.end(), [&](const RigNode& n) { return n.kind == kind; }));
+}
+
+std::size_t Rig::skinJointCount() const
+{
+    return static_cast<std::size_t>(std::count_if(nodes.begin(), nodes.end(), [](const RigNode& n) {
+        return n.kind == RigNodeKind::Joint && n.domain() == "skin";
+    }));
 }
 
 } // namespace rs::model

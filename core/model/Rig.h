@@ -29,6 +29,15 @@ struct ControllerCurve {
     Vec3 color{1.0, 1.0, 0.0}; // sRGB, [0, 1]
 };
 
+// An animatable custom attribute of a node: `ik_blend` on a limb's switch
+// controller, `roll` on a foot. Value, min and max are in the attribute's unit.
+struct RigAttribute {
+    std::string name;
+    double value = 0.0;
+    double min = 0.0;
+    double max = 1.0;
+};
+
 struct RigNode {
     std::string id;                    // unique: "<instance>::<tag>"
     std::string name;                  // unique display/export name from the naming engine
@@ -40,6 +49,11 @@ struct RigNode {
     Mat4 worldMatrix{1.0};             // rest pose
     std::string shape;                 // shape library name, controllers only
     std::vector<ControllerCurve> curves;
+    std::vector<RigAttribute> attributes;
+    JointId guide = kNoId;             // authored guide joint the node derives from (kNoId: none)
+    bool hidden = false;               // setup nodes the animator never sees
+
+    const RigAttribute* attribute(const std::string& attributeName) const;
 
     // The first segment of the tag: "ctrls", "skin", "hooks"...
     std::string domain() const;
@@ -50,8 +64,38 @@ private:
     bool m_inHierarchy = false;
 };
 
+// What a constraint does; the evaluator (issue 5) solves them in order after
+// the node hierarchy.
+enum class ConstraintKind {
+    Parent,  // driven follows the target's full transform (offset kept from the rest pose)
+    Orient,  // rotation only
+    Point,   // translation only
+    Blend,   // driven = mix(targets[0], targets[1]) by the "weight" attribute (FK/IK)
+    Ik,      // two- or three-bone IK: driven = chain, targets = [effector, pole]
+    Twist,   // driven takes `fraction` of the twist between targets[0] and targets[1]
+    Spline,  // driven chain follows a curve through the targets (control points)
+    Space,   // driven follows one of the targets, picked by the "space" attribute
+    Drive,   // attribute "value" rotates the driven node about its local `axis` (0 x, 1 y, 2 z), in degrees:
+             //   mode 0: factor * clamp(value, low, high)
+             //   mode 1: factor * clamp(value, 0, break)     (ball roll; "break" attribute)
+             //   mode 2: factor * max(value - break, 0)      (toe roll after the break)
+};
+const char* constraintKindName(ConstraintKind kind);
+
+struct RigConstraint {
+    std::string id;                          // "<instance>::<tag>", unique
+    ConstraintKind kind = ConstraintKind::Parent;
+    InstanceId owner = kNoId;
+    std::vector<RigNodeIndex> driven;
+    std::vector<RigNodeIndex> targets;
+    std::map<std::string, std::string> attributes; // role -> "<node id>.<attribute>" ("weight", "stretch"...)
+    std::map<std::string, double> values;          // numeric settings ("fraction", "axis", "min"...)
+};
+
 struct Rig {
     std::vector<RigNode> nodes;
+    std::vector<RigConstraint> constraints;
+    std::map<std::string, std::vector<RigNodeIndex>> sets; // "controllers": every animatable controller
     std::map<std::string, RigNodeIndex> byId;
     Diagnostics diagnostics;
 
@@ -61,6 +105,8 @@ struct Rig {
     std::vector<RigNodeIndex> virtualChildren(RigNodeIndex node) const;
     std::vector<RigNodeIndex> children(RigNodeIndex node) const;
     std::size_t count(RigNodeKind kind) const;
+    // Joints of the skin domain: what the export skeleton holds.
+    std::size_t skinJointCount() const;
 };
 
 } // namespace rs::model

@@ -60,20 +60,20 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     app::MainWindow& w = e.window;
     const std::string original = io::writeGuideText(w.session().document());
     const auto* arm = w.session().document().instanceNamed("arm");
-    const model::JointId hand = arm->joints.back().id;
+    const model::JointId hand = arm->joints[3].id; // limb3, the wrist
 
     clickInstance(w, "arm");
     ASSERT_EQ(w.session().selection().instance, arm->id) << "clicking the outliner selects the instance";
 
-    // Right-click menu: Add template > default (the arm's last joint) > core > joints.
+    // Right-click menu: Add template > default (the arm's hand) > core > joints.
     std::unique_ptr<QMenu> menu(w.outliner()->createContextMenu(w.outliner()->selectedInstance(), &w));
     auto* add = menu->findChild<QMenu*>("addTemplate");
     ASSERT_NE(add, nullptr);
     QStringList hooks;
     for (QMenu* m : add->findChildren<QMenu*>(QString(), Qt::FindDirectChildrenOnly))
         hooks << m->title();
-    EXPECT_EQ(hooks.join(", ").toStdString(), "default, joint[0], joint[1], joint[2], joint[3]")
-        << "one entry per ui.hooks node of core.joints (default: chain[-1], joint: chain[:-1])";
+    EXPECT_EQ(hooks.join(", ").toStdString(), "default, shoulder, elbow, hand")
+        << "one entry per ui.hooks node of arm.limb";
     auto* atDefault = add->findChild<QMenu*>("hook:default");
     ASSERT_NE(atDefault, nullptr);
     QAction* addJoints = atDefault->findChild<QAction*>("add:core.joints");
@@ -81,7 +81,7 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     addJoints->trigger();
 
     const auto& doc = w.session().document();
-    ASSERT_EQ(doc.instances().size(), 6u);
+    ASSERT_EQ(doc.instances().size(), 11u);
     const model::TemplateInstance& added = doc.instances().back();
     EXPECT_EQ(added.parentJoint, hand);
     EXPECT_EQ(w.session().selection().instance, added.id);
@@ -96,7 +96,7 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     EXPECT_FALSE(hasErrors(rig->diagnostics)) << formatAll(rig->diagnostics);
     const auto root = rig->find(added.name + ".L::roots.0"); // built once per branch of the arm
     ASSERT_TRUE(root);
-    EXPECT_EQ(rig->nodes[rig->nodes[*root].parent].id, "arm.L::ctrls.4") << "hung under the hand's hook";
+    EXPECT_EQ(rig->nodes[rig->nodes[*root].parent].id, "arm.L::blend.2") << "hung under the hand's hook";
     EXPECT_FALSE(w.viewportWidget()->scene().curves.empty()) << "controller curves shown after build";
     QTest::qWait(100);
     w.grab().save(QString::fromStdString(outputPath("editor-after-build.png")));

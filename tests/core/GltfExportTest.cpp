@@ -76,6 +76,6 @@ TEST(GltfExport, RefusesASkeletonWithSeveralRootsAndWritesNothing)
     const auto d = io::exportGltf(rig, path);
     ASSERT_EQ(d.size(), 1u);
     EXPECT_EQ(d[0].format(), path + ": error: the skin hierarchy has 2 roots, an export skeleton needs one: "
-                                    "sk_spine1 (spine::skin.0), sk_neck1 (neck::skin.0)");
+                                    "sk_spine_hips (spine::skin.0), sk_neck1 (neck::skin.0)");
     EXPECT_FALSE(std::filesystem::exists(path));
 }

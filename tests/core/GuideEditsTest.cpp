@@ -55,7 +55,7 @@ TEST(GuideEdits, RefusedEditsChangeNothing)
 
 TEST(GuideEdits, SettingTheDefaultValueRemovesTheStoredOption)
 {
-    model::GuideDocument doc = test::loadSample("biped");
+    model::GuideDocument doc = test::loadChains();
     edit::History history(doc);
     const model::InstanceId spine = doc.instanceNamed("spine")->id;
     ASSERT_TRUE(doc.instance(spine)->options.count("number"));

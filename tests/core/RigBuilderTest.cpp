@@ -22,25 +22,25 @@ const model::RigNode& node(const model::Rig& rig, const std::string& id)
 
 } // namespace
 
-TEST(RigBuilder, BuildsTheBipedSampleAsTheGoldenDump)
+TEST(RigBuilder, BuildsTheChainFixtureAsTheGoldenDump)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
     EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
-    test::expectMatchesGolden(io::writeRigDump(rig), "RigBuilder/biped/rig.yml");
+    test::expectMatchesGolden(io::writeRigDump(rig), "RigBuilder/chains/rig.yml");
 }
 
 TEST(RigBuilder, SameGuideGivesAByteIdenticalDump)
 {
-    const auto guide = test::loadSample("biped");
+    const auto guide = test::loadChains();
     EXPECT_EQ(io::writeRigDump(build::buildRig(guide, test::builtinTemplates())),
               io::writeRigDump(build::buildRig(guide, test::builtinTemplates())));
 }
 
 TEST(RigBuilder, OneControllerAndSkinJointPerGuideJoint)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
-    // world: world + move controllers and a root joint; 6 chains of 4+3+5+5+5+5 joints.
-    EXPECT_EQ(rig.count(RigNodeKind::Controller), 2u + 27u);
+    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
+    // world: world, move, scale and fly controllers and a root joint; 6 chains of 4+3+5+5+5+5 joints.
+    EXPECT_EQ(rig.count(RigNodeKind::Controller), 4u + 27u);
     EXPECT_EQ(rig.count(RigNodeKind::Joint), 1u + 27u);
     const auto& c = node(rig, "arm.L::ctrls.2");
     EXPECT_EQ(c.name, "c_arm3_L");
@@ -52,11 +52,11 @@ TEST(RigBuilder, OneControllerAndSkinJointPerGuideJoint)
 
 TEST(RigBuilder, ParentsAChildTemplateUnderTheNodeThatHooksItsJoint)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
     // arm_L hangs under spine's last joint, legs under its first.
     EXPECT_EQ(rig.nodes[node(rig, "arm.L::roots.0").parent].id, "spine::ctrls.3");
     EXPECT_EQ(rig.nodes[node(rig, "leg.R::roots.0").parent].id, "spine::ctrls.0");
-    EXPECT_EQ(rig.nodes[node(rig, "spine::roots.0").parent].id, "world::ctrls.move");
+    EXPECT_EQ(rig.nodes[node(rig, "spine::roots.0").parent].id, "world::ctrls.fly");
     // Virtual hierarchies follow the same hooks, per domain.
     EXPECT_EQ(rig.nodes[node(rig, "arm.L::ctrls.0").virtualParent].id, "spine::ctrls.3");
     EXPECT_EQ(rig.nodes[node(rig, "arm.L::skin.0").virtualParent].id, "spine::skin.3");
@@ -65,7 +65,7 @@ TEST(RigBuilder, ParentsAChildTemplateUnderTheNodeThatHooksItsJoint)
 
 TEST(RigBuilder, TheSkinHierarchyHasOneRoot)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
     EXPECT_EQ(rig.virtualRoots("skin").size(), 1u);
     EXPECT_EQ(rig.virtualRoots("ctrls").size(), 1u);
     auto skeleton = model::extractSkeleton(rig);
@@ -76,7 +76,7 @@ TEST(RigBuilder, TheSkinHierarchyHasOneRoot)
 
 TEST(RigBuilder, SkipsAnUnknownTemplateAndAttachesItsChildrenAbove)
 {
-    model::GuideDocument guide = test::loadSample("biped");
+    model::GuideDocument guide = test::loadChains();
     guide.instance(guide.instanceNamed("spine")->id)->templateId = "spine.missing";
     const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
     ASSERT_FALSE(rig.diagnostics.empty());
@@ -84,7 +84,7 @@ TEST(RigBuilder, SkipsAnUnknownTemplateAndAttachesItsChildrenAbove)
               "instance 'spine' (spine.missing): unknown template 'spine.missing'; the instance is skipped and its children attach above it");
     EXPECT_EQ(rig.diagnostics[0].subject, "spine");
     EXPECT_FALSE(rig.find("spine::ctrls.0"));
-    EXPECT_EQ(rig.nodes[node(rig, "arm.L::roots.0").parent].id, "world::ctrls.move");
+    EXPECT_EQ(rig.nodes[node(rig, "arm.L::roots.0").parent].id, "world::ctrls.fly");
 }
 
 TEST(RigBuilder, FallsBackToTheJointChainBuilderForDataOnlyManifests)
@@ -115,7 +115,7 @@ TEST(RigBuilder, ReportsANameClash)
     build::BuilderRegistry builders;
     builders.add("core.joints", std::make_unique<ClashingBuilder>());
     builders.add("world.character", std::make_unique<ClashingBuilder>());
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates(), builders);
+    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates(), builders);
     ASSERT_TRUE(hasErrors(rig.diagnostics));
     EXPECT_EQ(rig.diagnostics.back().message,
               "name clash: 'c_same' is used by world::ctrls.0, spine::ctrls.0, neck::ctrls.0, arm.L::ctrls.0, "
@@ -124,7 +124,7 @@ TEST(RigBuilder, ReportsANameClash)
 
 TEST(RigBuilder, RollsBackAnInstanceWhoseStructureFails)
 {
-    model::GuideDocument guide = test::loadSample("biped");
+    model::GuideDocument guide = test::loadChains();
     // A world whose root joint is missing cannot resolve /1.
     auto* world = guide.instance(guide.instanceNamed("world")->id);
     guide.instance(guide.instanceNamed("spine")->id)->parentJoint = world->joints[0].id;
@@ -138,7 +138,7 @@ TEST(RigBuilder, RollsBackAnInstanceWhoseStructureFails)
 
 TEST(RigBuilder, MirrorsBranchesSoEveryRightNodeIsTheMirrorOfItsLeftTwin)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
     ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     Mat4 mirror(1.0);
     mirror[0][0] = -1.0; // the x plane of an L/R pair
@@ -163,7 +163,7 @@ TEST(RigBuilder, MirrorsBranchesSoEveryRightNodeIsTheMirrorOfItsLeftTwin)
 
 TEST(RigBuilder, NestedBranchesMultiplyIdsAndSuffixes)
 {
-    model::GuideDocument guide = test::loadSample("biped");
+    model::GuideDocument guide = test::loadChains();
     // A digit chain under the arm's hand with its own branches [A, B]: 2 x 2 copies.
     auto digit = build::makeInstance(guide, test::builtinTemplates(), "core.joints", guide.instanceNamed("arm")->joints.back().id);
     ASSERT_TRUE(digit.ok());
@@ -181,7 +181,7 @@ TEST(RigBuilder, NestedBranchesMultiplyIdsAndSuffixes)
 
 TEST(RigBuilder, NamesNodesByTheDocumentsNamingRules)
 {
-    model::GuideDocument guide = test::loadSample("biped");
+    model::GuideDocument guide = test::loadChains();
     guide.naming = *model::namingPreset("suffix"); // seed 004: arm_L_ctrl, arm_L_jnt, _gp groups
     const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
     ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);

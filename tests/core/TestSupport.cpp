@@ -41,6 +41,13 @@ model::GuideDocument loadSample(const std::string& name)
     return doc.ok() ? doc.take() : model::GuideDocument{};
 }
 
+model::GuideDocument loadGuide(const std::string& dataRelativePath)
+{
+    auto doc = io::readGuideFile(dataPath(dataRelativePath));
+    EXPECT_TRUE(doc.ok()) << formatAll(doc.diagnostics());
+    return doc.ok() ? doc.take() : model::GuideDocument{};
+}
+
 void expectMatchesGolden(const std::string& actual, const std::string& goldenRelativePath)
 {
     const std::string path = dataPath(goldenRelativePath);

@@ -14,6 +14,9 @@ std::string readText(const std::string& path);
 // The built-in templates (fails the test on any error diagnostic).
 const templates::TemplateRegistry& builtinTemplates();
 model::GuideDocument loadSample(const std::string& name);
+model::GuideDocument loadGuide(const std::string& dataRelativePath); // tests/data/<path>
+// The FK-chain fixture of the builder machinery tests (core.joints arms and legs with [L, R]).
+inline model::GuideDocument loadChains() { return loadGuide("RigBuilder/chains/guide.yml"); }
 // Compares `actual` with the golden file; RIGSMITH_UPDATE_GOLDEN=1 rewrites it.
 void expectMatchesGolden(const std::string& actual, const std::string& goldenRelativePath);
 std::string temporaryPath(const std::string& name);

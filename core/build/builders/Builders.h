@@ -4,11 +4,26 @@
 
 namespace rs::build {
 
-// world.character / world.prop: world and move controllers, a root skin joint.
+// world.character / world.prop: seed 004's base structure (root, controller,
+// joint, setup and model groups; world, move, scale, fly; post transform).
 std::unique_ptr<TemplateBuilder> makeWorldBuilder();
 // core.joints (and the fallback for modules without a builder): an FK chain,
 // one offset group, controller and skin joint per guide joint.
 std::unique_ptr<TemplateBuilder> makeJointChainBuilder();
+// core.xform: one controller (or locator) with an optional skin joint, for props.
+std::unique_ptr<TemplateBuilder> makeXformBuilder();
+// spine.torso: COG, hips, FK spine, IK-style torso (hips, chest) blended per joint.
+std::unique_ptr<TemplateBuilder> makeSpineBuilder();
+// neck.head: FK neck chain and a head controller with a head-space switch.
+std::unique_ptr<TemplateBuilder> makeNeckBuilder();
+// arm.limb, leg.limb, quad.leg: the shared limb builder (FK/IK, pole, stretch,
+// soft IK, twist and blend joints; legs and quads add a reverse foot).
+enum class LimbKind { Arm, Leg, Quad };
+std::unique_ptr<TemplateBuilder> makeLimbBuilder(LimbKind kind);
+// digit.finger: a finger or toe with a base control and a tip.
+std::unique_ptr<TemplateBuilder> makeDigitBuilder();
+// rig.spline: a chain following a curve through spline controllers (tails).
+std::unique_ptr<TemplateBuilder> makeSplineBuilder();
 
 // The rest-pose frame of a guide joint: its world matrix without scale or shear.
 Mat4 rigidFrame(const Mat4& world);

@@ -1,8 +1,20 @@
+// world.character / world.prop: the base structure of every rig (seed 004).
+//
+//   root_gp
+//   ├─ ctrl_gp > world (all) > move (sub) > scale > post_transform > fly   <- children hook here
+//   ├─ joint_gp > root skin joint (follows the post transform)
+//   ├─ setup_gp (hidden: IK handles, spline curves, helpers)
+//   └─ model_gp (meshes)
 #include "build/builders/Builders.h"
+
+#include "build/builders/BuilderKit.h"
 
 namespace rs::build {
 
 namespace {
+
+using model::NameRole;
+using model::RigNodeKind;
 
 class WorldBuilder final : public TemplateBuilder {
 public:
@@ -10,7 +22,7 @@ public:
                                             const std::map<std::string, Value>&) const override
     {
         // world (.) at the origin and its child root (/1), where the character hangs.
-        return {GuideJointSpec{-1, {}, {}}, GuideJointSpec{0, {}, {}}};
+        return {GuideJointSpec{-1, {}, {}, {}}, GuideJointSpec{0, {}, {}, {}}};
     }
 
     bool gather(const BuildContext& ctx) const override
@@ -22,21 +34,48 @@ public:
     {
         const model::JointId world = ctx.structure("world")->front();
         const model::JointId root = ctx.structure("root")->front();
-        // World and move stay axis-aligned: animators expect world-space axes here.
-        const Mat4 worldMatrix = translationMatrix(translationOf(ctx.guideWorldMatrix(world)));
-        const Mat4 rootMatrix = translationMatrix(translationOf(ctx.guideWorldMatrix(root)));
+        // World, move and scale stay axis-aligned: animators expect world axes here.
+        const Mat4 worldFrame = kit::uprightFrame(ctx.guidePosition(world));
+        const Mat4 rootFrame = kit::uprightFrame(ctx.guidePosition(root));
         const bool controllers = ctx.optionBool("do_ctrl");
-        const auto kind = controllers ? model::RigNodeKind::Controller : model::RigNodeKind::Group;
-        const auto role = controllers ? model::NameRole::Controller : model::NameRole::Offset;
 
-        const auto worldNode = ctx.createNode(kind, controllers ? "ctrls.world" : "hooks.world",
-                                              ctx.nodeName(role, "world"), model::kNoNode, worldMatrix);
-        const auto moveNode = ctx.createNode(kind, controllers ? "ctrls.move" : "hooks.move",
-                                             ctx.nodeName(role, "move"), worldNode, rootMatrix);
+        auto group = [&](const std::string& key, model::RigNodeIndex parent) {
+            return ctx.createNode(RigNodeKind::Group, "grps." + key, ctx.nodeName(NameRole::Group, key), parent, worldFrame);
+        };
+        auto control = [&](const std::string& key, model::RigNodeIndex parent, const Mat4& frame, model::JointId source) {
+            if (!controllers)
+                return ctx.createNode(RigNodeKind::Group, "hooks." + key, ctx.nodeName(NameRole::Offset, key), parent, frame, source);
+            return ctx.createNode(RigNodeKind::Controller, "ctrls." + key, ctx.nodeName(NameRole::Controller, key), parent, frame, source);
+        };
+
+        const auto rootGroup = group("root", model::kNoNode);
+        const auto ctrlGroup = group("ctrl", rootGroup);
+        const auto jointGroup = group("joint", rootGroup);
+        const auto setupGroup = group("setup", rootGroup);
+        ctx.setHidden(setupGroup);
+        const auto modelGroup = group("model", rootGroup);
+
+        const auto worldNode = control("world", ctrlGroup, worldFrame, world);
+        model::RigNodeIndex top = control("move", worldNode, worldFrame, world);
+        if (ctx.optionBool("do_scale"))
+            top = control("scale", top, worldFrame, world);
+        const auto post = ctx.createNode(RigNodeKind::Group, "grps.post", ctx.nodeName(NameRole::Group, "post"), top, worldFrame);
+        ctx.addAttribute(post, "post_scale", 1.0, 0.0001, 1000.0);
+        model::RigNodeIndex anchor = post;
+        if (ctx.optionBool("do_fly"))
+            anchor = control("fly", post, rootFrame, root);
+
         ctx.setHook(world, worldNode);
-        ctx.setHook(root, moveNode);
-        if (ctx.optionBool("do_skin"))
-            ctx.createNode(model::RigNodeKind::Joint, "skin.root", ctx.nodeName(model::NameRole::Skin, "root"), moveNode, rootMatrix);
+        ctx.setHook(root, anchor);
+        ctx.defineSpace("world", post);
+        ctx.defineSpace("root", anchor);
+        ctx.defineSpace("setup", setupGroup);
+        ctx.defineSpace("model", modelGroup);
+        if (ctx.optionBool("do_skin")) {
+            const auto skin = ctx.createNode(RigNodeKind::Joint, "skin.root", ctx.nodeName(NameRole::Skin, "root"), jointGroup,
+                                             rootFrame, root);
+            ctx.addConstraint(model::ConstraintKind::Parent, "cns.root", {skin}, {anchor});
+        }
     }
 };
 

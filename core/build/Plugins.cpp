@@ -1,0 +1,97 @@
+// Built-in generator plugins: cross-cutting work that needs the whole rig.
+#include "build/RigAssembly.h"
+
+#include <cctype>
+#include <map>
+
+namespace rs::build {
+
+namespace {
+
+// Seed 004's "set of every animatable controller": animators select it to key
+// or reset the whole character. Hidden setup nodes are never in it.
+class ControllerSetPlugin final : public GeneratorPlugin {
+public:
+    const char* name() const override { return "controller set"; }
+    void finalize(RigAssembly& a) const override
+    {
+        auto& set = a.rig.sets["controllers"];
+        set.clear();
+        for (model::RigNodeIndex i = 0; i < a.rig.nodes.size(); ++i)
+            if (a.rig.nodes[i].kind == model::RigNodeKind::Controller && !a.rig.nodes[i].hidden)
+                set.push_back(i);
+        if (set.empty())
+            a.rig.sets.erase("controllers");
+    }
+};
+
+// Engines take one skeleton: the skin hierarchy must have one root.
+class SkinRootPlugin final : public GeneratorPlugin {
+public:
+    const char* name() const override { return "skin root"; }
+    void finalize(RigAssembly& a) const override
+    {
+        std::vector<model::RigNodeIndex> roots;
+        for (model::RigNodeIndex i : a.rig.virtualRoots("skin"))
+            if (a.rig.nodes[i].kind == model::RigNodeKind::Joint)
+                roots.push_back(i);
+        if (roots.size() <= 1)
+            return;
+        std::string list;
+        for (auto i : roots)
+            list += (list.empty() ? "" : ", ") + a.rig.nodes[i].id;
+        a.report(Severity::Warning, nullptr, "the skin hierarchy has " + std::to_string(roots.size()) + " roots (" + list +
+                                                 "); engines expect one: add a world template or enable its skin joint");
+    }
+};
+
+// Names must be unique (the export and the animator's keys depend on them) and
+// portable: letters, digits and underscores, not starting with a digit.
+class NamingCheckPlugin final : public GeneratorPlugin {
+public:
+    const char* name() const override { return "naming checks"; }
+    void finalize(RigAssembly& a) const override
+    {
+        std::map<std::string, std::vector<std::string>> ids;
+        for (const auto& n : a.rig.nodes) {
+            ids[n.name].push_back(n.id);
+            if (&n != &a.rig.nodes.front() && !portable(n.name))
+                a.report(Severity::Warning, nullptr, "node name '" + n.name + "' (" + n.id +
+                                                         ") is not portable: use letters, digits and '_', not starting with a digit");
+        }
+        for (const auto& [nodeName, owners] : ids)
+            if (owners.size() > 1) {
+                std::string list;
+                for (const auto& id : owners)
+                    list += (list.empty() ? "" : ", ") + id;
+                a.report(Severity::Error, nullptr, "name clash: '" + nodeName + "' is used by " + list);
+            }
+    }
+
+private:
+    static bool portable(const std::string& text)
+    {
+        if (text.empty() || std::isdigit(static_cast<unsigned char>(text.front())))
+            return false;
+        for (char c : text)
+            if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+                return false;
+        return true;
+    }
+};
+
+} // namespace
+
+const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
+{
+    static const auto plugins = [] {
+        std::vector<std::unique_ptr<GeneratorPlugin>> list;
+        list.push_back(std::make_unique<ControllerSetPlugin>());
+        list.push_back(std::make_unique<SkinRootPlugin>());
+        list.push_back(std::make_unique<NamingCheckPlugin>());
+        return list;
+    }();
+    return plugins;
+}
+
+} // namespace rs::build

@@ -1,0 +1,61 @@
+#pragma once
+// Shared pieces of the built-in builders: joint frames from guide positions and
+// the offset-group + controller + skin-joint pattern every template repeats.
+#include "build/TemplateBuilder.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::build::kit {
+
+// Frame at `origin` whose X axis points along `aim` and whose Z axis is as
+// close to `normal` as X allows (Gram-Schmidt); Y completes a right-handed frame.
+Mat4 aimFrame(const Vec3& origin, const Vec3& aim, const Vec3& normal);
+// Unit normal of the plane through a, b, c (the bend plane of a limb), or
+// nullopt when the points are (nearly) on one line.
+std::optional<Vec3> planeNormal(const Vec3& a, const Vec3& b, const Vec3& c);
+// Frames along a chain: each joint aims at the next, Z = the chain's bend
+// normal (or `fallbackNormal` where the chain is straight); the last joint
+// keeps the previous joint's orientation.
+std::vector<Mat4> chainFrames(const std::vector<Vec3>& points, const Vec3& fallbackNormal);
+// An axis-aligned frame at a position (world, COG, IK controllers).
+Mat4 uprightFrame(const Vec3& origin);
+// Frames along a chain that aim at the next joint and keep Z on one fixed side
+// axis (spines and necks, whose S-curves would flip a bend normal).
+std::vector<Mat4> sideFrames(const std::vector<Vec3>& points, const Vec3& side);
+Vec3 positionOf(const Mat4& m);
+
+// An offset group with a controller under it: the pattern of every animatable
+// control. Without `do_ctrl` only the group is made and drives the rig.
+struct Control {
+    model::RigNodeIndex offset = model::kNoNode;
+    model::RigNodeIndex ctrl = model::kNoNode; // == offset when the instance has no controllers
+};
+// Tags "roots.<key>" and "ctrls.<key>"; names from `token` and `index`.
+Control addControl(BuildContext& ctx, const std::string& key, const std::string& token, std::optional<int> index,
+                   model::RigNodeIndex parent, const Mat4& world, model::JointId source = model::kNoId);
+// A skin joint "skin.<key>" when the instance has `do_skin`; kNoNode otherwise.
+model::RigNodeIndex addSkin(BuildContext& ctx, const std::string& key, const std::string& token, std::optional<int> index,
+                            model::RigNodeIndex parent, const Mat4& world, model::JointId source = model::kNoId);
+// A setup joint or group that animators never see ("<domain>.<key>").
+model::RigNodeIndex addSetup(BuildContext& ctx, model::RigNodeKind kind, const std::string& tag, const std::string& token,
+                             std::optional<int> index, model::RigNodeIndex parent, const Mat4& world,
+                             model::JointId source = model::kNoId);
+
+// Guide positions of a structure tag; nullopt (with the error reported) when it fails.
+std::optional<std::vector<Vec3>> positions(const BuildContext& ctx, const std::vector<model::JointId>& joints);
+// Warns about consecutive guides closer than 1 mm; returns false when any overlap.
+bool checkSpacing(const BuildContext& ctx, const std::vector<model::JointId>& joints, const std::string& what);
+
+// Appends a straight chain of `count` guide joints, `step` apart, whose first
+// joint sits at `first` under spec `parent` (-1: the instance root). Returns the
+// index of its last joint.
+int appendChain(std::vector<GuideJointSpec>& specs, int count, const Vec3& first, const Vec3& step, int parent = -1);
+// Appends one guide joint; returns its index.
+int appendJoint(std::vector<GuideJointSpec>& specs, int parent, const Vec3& translate,
+                std::vector<std::string> tags = {}, std::string name = {});
+// A guide parameter as a number (defaults when absent or of another type).
+double guideNumber(const std::map<std::string, Value>& guides, const std::string& name, double fallback);
+
+} // namespace rs::build::kit

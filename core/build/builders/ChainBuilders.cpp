@@ -1,0 +1,143 @@
+// digit.finger and rig.spline.
+#include "build/builders/Builders.h"
+
+#include "build/builders/BuilderKit.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace rs::build {
+
+namespace {
+
+using model::ConstraintKind;
+using model::JointId;
+using model::RigNodeIndex;
+using model::RigNodeKind;
+
+// The Z axis of a chain's root guide: the bend axis used where the chain is straight.
+Vec3 rootNormal(const BuildContext& ctx, JointId root)
+{
+    const Vec3 z = Vec3(ctx.guideWorldMatrix(root)[2]);
+    return glm::length(z) > 1e-9 ? glm::normalize(z) : Vec3(0.0, 0.0, 1.0);
+}
+
+std::optional<std::vector<JointId>> chainWithAtLeast(const BuildContext& ctx, std::size_t minimum, const std::string& what)
+{
+    auto chain = ctx.structure("chain");
+    if (!chain)
+        return std::nullopt;
+    if (chain->size() < minimum) {
+        ctx.error(what + " needs at least " + std::to_string(minimum) + " guide joints; it has " + std::to_string(chain->size()),
+                  "number");
+        return std::nullopt;
+    }
+    kit::checkSpacing(ctx, *chain, what);
+    return chain;
+}
+
+class DigitBuilder final : public TemplateBuilder {
+public:
+    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
+                                            const std::map<std::string, Value>& guides) const override
+    {
+        // Base (metacarpal), three phalanges and the tip along +X, curling down slightly.
+        const int count = std::max(2, static_cast<int>(kit::guideNumber(guides, "number", 5)));
+        const double length = kit::guideNumber(guides, "length", 0.1);
+        std::vector<GuideJointSpec> specs;
+        int parent = kit::appendJoint(specs, -1, Vec3(0.02, 0.0, 0.0));
+        for (int i = 1; i < count; ++i)
+            parent = kit::appendJoint(specs, parent, Vec3(length / (count - 1), -0.004 * i, 0.0));
+        return specs;
+    }
+
+    bool gather(const BuildContext& ctx) const override { return chainWithAtLeast(ctx, 2, "a digit").has_value(); }
+
+    void generate(BuildContext& ctx) const override
+    {
+        const auto chain = *ctx.structure("chain");
+        const auto points = *kit::positions(ctx, chain);
+        const auto frames = kit::chainFrames(points, rootNormal(ctx, chain.front()));
+        const bool base = ctx.optionBool("base") && chain.size() > 2;
+        RigNodeIndex parent = ctx.hookNode();
+        std::vector<kit::Control> controls;
+        for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+            const bool isBase = base && i == 0;
+            const std::string token = isBase ? "base" : "";
+            const std::optional<int> number = isBase ? std::nullopt : std::optional<int>(int(i) + (base ? 0 : 1));
+            const auto control = kit::addControl(ctx, "fk." + std::to_string(i), token, number, parent, frames[i], chain[i]);
+            kit::addSkin(ctx, std::to_string(i), token, number, control.ctrl, frames[i], chain[i]);
+            ctx.setHook(chain[i], control.ctrl);
+            controls.push_back(control);
+            parent = control.ctrl;
+        }
+        ctx.setHook(chain.back(), parent);
+        // Curl bends every phalanx about its bend axis (Z) from one attribute.
+        const std::string curl = ctx.addAttribute(controls.front().ctrl, "curl", 0.0, -30.0, 120.0);
+        for (std::size_t i = base ? 1 : 0; i < controls.size(); ++i)
+            ctx.addConstraint(ConstraintKind::Drive, "cns.curl." + std::to_string(i), {controls[i].offset}, {}, {{"value", curl}},
+                              {{"axis", 2.0}, {"mode", 0.0}, {"factor", 1.0}, {"low", -30.0}, {"high", 120.0}});
+    }
+};
+
+class SplineBuilder final : public TemplateBuilder {
+public:
+    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
+                                            const std::map<std::string, Value>& guides) const override
+    {
+        // A tail: back (-Z) and slightly down from where it hangs.
+        const int count = std::max(3, static_cast<int>(kit::guideNumber(guides, "number", 8)));
+        const double length = kit::guideNumber(guides, "length", 0.8);
+        std::vector<GuideJointSpec> specs;
+        kit::appendChain(specs, count, Vec3(0.0, 0.0, -0.05), Vec3(0.0, -0.15 * length / (count - 1), -length / (count - 1)));
+        return specs;
+    }
+
+    bool gather(const BuildContext& ctx) const override { return chainWithAtLeast(ctx, 3, "a spline chain").has_value(); }
+
+    void generate(BuildContext& ctx) const override
+    {
+        const auto chain = *ctx.structure("chain");
+        const auto points = *kit::positions(ctx, chain);
+        const auto frames = kit::chainFrames(points, rootNormal(ctx, chain.front()));
+
+        // Arc length along the guides, to spread the controllers evenly.
+        std::vector<double> along{0.0};
+        for (std::size_t i = 1; i < points.size(); ++i)
+            along.push_back(along.back() + glm::length(points[i] - points[i - 1]));
+        const int controls = static_cast<int>(ctx.optionInt("controls"));
+        std::vector<RigNodeIndex> targets;
+        RigNodeIndex parent = ctx.hookNode();
+        for (int c = 0; c < controls; ++c) {
+            const double at = along.back() * c / (controls - 1);
+            std::size_t s = 0;
+            while (s + 2 < points.size() && along[s + 1] < at)
+                ++s;
+            const double span = along[s + 1] - along[s];
+            const double t = span > 1e-12 ? std::clamp((at - along[s]) / span, 0.0, 1.0) : 0.0;
+            Mat4 frame = frames[s];
+            frame[3] = Vec4(glm::mix(points[s], points[s + 1], t), 1.0);
+            parent = kit::addControl(ctx, "spline." + std::to_string(c), "", c + 1, parent, frame, chain[s]).ctrl;
+            targets.push_back(parent);
+        }
+        const std::string stretch = ctx.addAttribute(targets.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+
+        // The driven chain follows the curve; skin joints ride on it.
+        std::vector<RigNodeIndex> driven;
+        RigNodeIndex drvParent = ctx.hookNode();
+        for (std::size_t i = 0; i < chain.size(); ++i) {
+            drvParent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + std::to_string(i), "drv", int(i) + 1, drvParent, frames[i], chain[i]);
+            driven.push_back(drvParent);
+            kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, drvParent, frames[i], chain[i]);
+            ctx.setHook(chain[i], drvParent);
+        }
+        ctx.addConstraint(ConstraintKind::Spline, "cns.spline", driven, targets, {{"stretch", stretch}});
+    }
+};
+
+} // namespace
+
+std::unique_ptr<TemplateBuilder> makeDigitBuilder() { return std::make_unique<DigitBuilder>(); }
+std::unique_ptr<TemplateBuilder> makeSplineBuilder() { return std::make_unique<SplineBuilder>(); }
+
+} // namespace rs::build

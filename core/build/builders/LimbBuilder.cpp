@@ -1,0 +1,341 @@
+// arm.limb, leg.limb and quad.leg: one limb builder.
+//
+// Guide chain: root (clavicle or pelvis) > limb1 > limb2 > limb3 [> limb4 for a
+// quad] > tip (arm) or ball > toe (legs); heel, bank_int and bank_ext are
+// tagged guides under the last limb joint. Every chain is built three times:
+// FK controls, an IK chain solved to the IK controller and pole, and the blend
+// chain (FK/IK mixed by `ik_blend`) that skin joints and children follow.
+#include "build/builders/Builders.h"
+
+#include "build/builders/BuilderKit.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace rs::build {
+
+namespace {
+
+using model::ConstraintKind;
+using model::JointId;
+using model::RigNodeIndex;
+using model::RigNodeKind;
+
+struct LimbGuide {
+    JointId root = model::kNoId;
+    std::vector<JointId> limb;              // limb1..limbK
+    JointId end = model::kNoId;             // arm tip or leg ball
+    JointId toe = model::kNoId;             // legs: toe tip
+    std::vector<Vec3> points;               // limb1..limbK then end
+};
+
+class LimbBuilder final : public TemplateBuilder {
+public:
+    explicit LimbBuilder(LimbKind kind) : m_kind(kind) {}
+
+    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
+                                            const std::map<std::string, Value>& guides) const override
+    {
+        std::vector<GuideJointSpec> s;
+        if (m_kind == LimbKind::Arm) {
+            // On the chest (about 1.45 m): clavicle, shoulder, elbow, wrist, hand tip along +X.
+            const double upper = kit::guideNumber(guides, "upper", 0.28), lower = kit::guideNumber(guides, "lower", 0.26);
+            int j = kit::appendJoint(s, -1, Vec3(0.03, 0.0, 0.03));
+            j = kit::appendJoint(s, j, Vec3(0.15, 0.0, -0.04));
+            j = kit::appendJoint(s, j, Vec3(upper, 0.0, -0.03));
+            j = kit::appendJoint(s, j, Vec3(lower, 0.0, 0.03));
+            kit::appendJoint(s, j, Vec3(0.09, 0.0, 0.0));
+            return s;
+        }
+        // On the hips (1 m): pelvis, hip, knee, ankle, then the foot on the ground.
+        const bool quad = m_kind == LimbKind::Quad;
+        const double upper = kit::guideNumber(guides, "upper", quad ? 0.25 : 0.42);
+        const double lower = kit::guideNumber(guides, "lower", quad ? 0.25 : 0.42);
+        int j = kit::appendJoint(s, -1, Vec3(0.0, -0.02, 0.0));
+        j = kit::appendJoint(s, j, Vec3(0.1, -0.06, 0.0));
+        if (m_kind == LimbKind::Quad) {
+            // Hind leg: stifle forward, hock back, then the long cannon to the fetlock.
+            j = kit::appendJoint(s, j, Vec3(0.0, -upper, 0.12));
+            j = kit::appendJoint(s, j, Vec3(0.0, -lower, -0.15));
+            j = kit::appendJoint(s, j, Vec3(0.0, -0.2, 0.02));
+        } else {
+            j = kit::appendJoint(s, j, Vec3(0.0, -upper, 0.02));
+            j = kit::appendJoint(s, j, Vec3(0.0, -lower, -0.02));
+        }
+        const Vec3 ankle(0.0, 0.0, 0.0);
+        const double height = m_kind == LimbKind::Quad ? 0.04 : 0.08; // ankle height above the ground
+        const int ankleIndex = j;
+        j = kit::appendJoint(s, j, Vec3(0.0, -height + 0.01, 0.12));
+        kit::appendJoint(s, j, Vec3(0.0, -0.01, 0.07));
+        kit::appendJoint(s, ankleIndex, ankle + Vec3(0.0, -height, -0.06), {"heel"});
+        kit::appendJoint(s, ankleIndex, ankle + Vec3(-0.045, -height, 0.12), {"bank_int"});
+        kit::appendJoint(s, ankleIndex, ankle + Vec3(0.05, -height, 0.11), {"bank_ext"});
+        return s;
+    }
+
+    bool gather(const BuildContext& ctx) const override { return guideOf(ctx).has_value(); }
+
+    void generate(BuildContext& ctx) const override;
+
+private:
+    bool legLike() const { return m_kind != LimbKind::Arm; }
+    std::size_t limbCount() const { return m_kind == LimbKind::Quad ? 4 : 3; }
+    std::string rootOption() const { return m_kind == LimbKind::Arm ? "clavicle" : "pelvis"; }
+
+    std::optional<LimbGuide> guideOf(const BuildContext& ctx) const
+    {
+        LimbGuide g;
+        auto root = ctx.structure(rootOption());
+        if (!root)
+            return std::nullopt;
+        g.root = root->front();
+        for (std::size_t i = 1; i <= limbCount(); ++i) {
+            auto joint = ctx.structure("limb" + std::to_string(i));
+            if (!joint)
+                return std::nullopt;
+            g.limb.push_back(joint->front());
+        }
+        auto end = ctx.structure(legLike() ? "ball" : "tip");
+        if (!end)
+            return std::nullopt;
+        g.end = end->front();
+        if (legLike()) {
+            auto toe = ctx.structure("toe");
+            if (!toe)
+                return std::nullopt;
+            g.toe = toe->front();
+        }
+        std::vector<JointId> all = g.limb;
+        all.push_back(g.end);
+        if (g.toe != model::kNoId)
+            all.push_back(g.toe);
+        g.points = *kit::positions(ctx, g.limb);
+        g.points.push_back(ctx.guidePosition(g.end));
+        kit::checkSpacing(ctx, all, "limb");
+        return g;
+    }
+
+    // The bend normal of the limb (Z of every segment frame) and the pole direction.
+    void bendOf(const BuildContext& ctx, const LimbGuide& g, Vec3& normal, Vec3& poleDirection) const;
+    void buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNodeIndex ikCtrl, const Vec3& normal,
+                          RigNodeIndex& effector, RigNodeIndex& toeTap) const;
+
+    LimbKind m_kind;
+};
+
+void LimbBuilder::bendOf(const BuildContext& ctx, const LimbGuide& g, Vec3& normal, Vec3& poleDirection) const
+{
+    // Arms bend with the elbow behind, legs with the knee in front.
+    const Vec3 fallbackNormal = legLike() ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, -1.0, 0.0);
+    const Vec3 fallbackPole = legLike() ? Vec3(0.0, 0.0, 1.0) : Vec3(0.0, 0.0, -1.0);
+    const Vec3 a = g.points[0], b = g.points[1], c = g.points[2];
+    if (auto n = kit::planeNormal(a, b, c)) {
+        normal = *n;
+        const Vec3 axis = glm::normalize(c - a);
+        const Vec3 off = (b - a) - axis * glm::dot(b - a, axis);
+        poleDirection = glm::normalize(off);
+        return;
+    }
+    ctx.warning("limb1, limb2 and limb3 guides are in a straight line, so the bend direction is unknown; the pole goes " +
+                std::string(legLike() ? "in front (+Z)" : "behind (-Z)") + ": move the " +
+                (legLike() ? "knee" : "elbow") + " guide off the line");
+    const Vec3 along = glm::length(c - a) > 1e-9 ? glm::normalize(c - a) : Vec3(0.0, -1.0, 0.0);
+    poleDirection = fallbackPole - along * glm::dot(fallbackPole, along);
+    if (glm::length(poleDirection) < 1e-6)
+        poleDirection = Vec3(1.0, 0.0, 0.0) - along * along.x;
+    poleDirection = glm::normalize(poleDirection);
+    normal = glm::normalize(glm::cross(along, poleDirection));
+    if (glm::dot(normal, fallbackNormal) < 0.0) // keep the side convention of bent limbs
+        normal = -normal;
+}
+
+void LimbBuilder::generate(BuildContext& ctx) const
+{
+    const LimbGuide g = *guideOf(ctx);
+    const std::size_t k = limbCount();
+    Vec3 normal, poleDirection;
+    bendOf(ctx, g, normal, poleDirection);
+    const auto frames = kit::chainFrames(g.points, normal); // limb1..limbK, end
+    const RigNodeIndex world = ctx.space("world") != model::kNoNode ? ctx.space("world") : ctx.hookNode();
+
+    // Clavicle / pelvis.
+    RigNodeIndex attach = ctx.hookNode();
+    const Vec3 rootPosition = ctx.guidePosition(g.root);
+    if (ctx.optionBool(rootOption())) {
+        const Vec3 aim = g.points[0] - rootPosition;
+        const Mat4 frame = kit::aimFrame(rootPosition, glm::length(aim) > 1e-9 ? aim : frames[0][0], normal);
+        attach = kit::addControl(ctx, rootOption(), rootOption(), {}, attach, frame, g.root).ctrl;
+        kit::addSkin(ctx, rootOption(), rootOption(), {}, attach, frame, g.root);
+    }
+    ctx.setHook(g.root, attach);
+    const auto limbGroup = ctx.createNode(RigNodeKind::Group, "grps.limb", ctx.nodeName(model::NameRole::Group, "limb"), attach,
+                                          frames[0], g.limb[0]);
+
+    // FK controls.
+    std::vector<RigNodeIndex> fk;
+    RigNodeIndex parent = limbGroup;
+    for (std::size_t i = 0; i < k; ++i) {
+        parent = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], g.limb[i]).ctrl;
+        fk.push_back(parent);
+    }
+
+    // Settings: FK/IK blend, stretch and soft IK live on one switch controller.
+    Mat4 switchFrame = frames[k - 1];
+    switchFrame[3] = Vec4(g.points[k - 1] - poleDirection * 0.12, 1.0);
+    const auto settings = kit::addControl(ctx, "switch", "switch", {}, limbGroup, switchFrame, g.limb[k - 1]).ctrl;
+    const std::string weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
+    const std::string stretch = ctx.addAttribute(settings, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+    const std::string soft = ctx.addAttribute(settings, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
+
+    // IK controller, pole vector and the reverse foot.
+    const Mat4 ikFrame = legLike() ? kit::uprightFrame(g.points[k - 1]) : frames[k - 1];
+    const auto ikCtrl = kit::addControl(ctx, "ik", "ik", {}, world, ikFrame, g.limb[k - 1]).ctrl;
+    double chainLength = 0.0;
+    for (std::size_t i = 1; i < k; ++i)
+        chainLength += glm::length(g.points[i] - g.points[i - 1]);
+    const Vec3 polePosition = g.points[1] + poleDirection * std::max(chainLength * 0.75, 0.05);
+    const auto poleCtrl = kit::addControl(ctx, "pole", "pole", {}, world, kit::uprightFrame(polePosition), g.limb[1]).ctrl;
+    RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
+    if (legLike())
+        buildReverseFoot(ctx, g, ikCtrl, normal, effector, toeTap);
+
+    // IK chain (setup joints) and the blend chain everything else follows.
+    std::vector<RigNodeIndex> ik, blend;
+    RigNodeIndex ikParent = limbGroup, blendParent = limbGroup;
+    for (std::size_t i = 0; i < k; ++i) {
+        const std::string index = std::to_string(i);
+        ikParent = kit::addSetup(ctx, RigNodeKind::Joint, "ik." + index, "ik", int(i) + 1, ikParent, frames[i], g.limb[i]);
+        ik.push_back(ikParent);
+        blendParent = kit::addSetup(ctx, RigNodeKind::Joint, "blend." + index, "blend", int(i) + 1, blendParent, frames[i], g.limb[i]);
+        blend.push_back(blendParent);
+    }
+    ctx.addConstraint(ConstraintKind::Ik, "cns.ik", ik, {effector, poleCtrl}, {{"stretch", stretch}, {"soft", soft}},
+                      {{"segments", double(k - 1)}});
+    for (std::size_t i = 0; i < k; ++i)
+        ctx.addConstraint(ConstraintKind::Blend, "cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]}, {{"weight", weight}});
+    RigNodeIndex end = blend.back();
+    if (legLike()) { // the ball joint: FK toe control or the reverse foot's toe tap
+        const auto toeFk = kit::addControl(ctx, "fk.ball", "toe", {}, fk.back(), frames[k], g.end).ctrl;
+        const auto ikBall = kit::addSetup(ctx, RigNodeKind::Joint, "ik.ball", "ik_toe", {}, ik.back(), frames[k], g.end);
+        ctx.addConstraint(ConstraintKind::Orient, "cns.ik_ball", {ikBall}, {toeTap});
+        end = kit::addSetup(ctx, RigNodeKind::Joint, "blend.ball", "blend_toe", {}, blend.back(), frames[k], g.end);
+        ctx.addConstraint(ConstraintKind::Blend, "cns.blend.ball", {end}, {toeFk, ikBall}, {{"weight", weight}});
+    }
+
+    // Skin: one joint per segment, twist joints spread along the upper and
+    // lower segments, and blend joints halfway between segments at the bends.
+    std::vector<RigNodeIndex> skin;
+    for (std::size_t i = 0; i < k; ++i)
+        skin.push_back(kit::addSkin(ctx, "limb." + std::to_string(i), "", int(i) + 1, blend[i], frames[i], g.limb[i]));
+    if (legLike())
+        kit::addSkin(ctx, "ball", "toe", {}, end, frames[k], g.end);
+    if (ctx.optionBool("do_skin")) {
+        const char* segment[] = {"up", "dn"};
+        const char* option[] = {"twist_upper", "twist_lower"};
+        for (std::size_t s = 0; s < 2; ++s) {
+            const long long count = ctx.optionInt(option[s]);
+            for (long long t = 0; t < count; ++t) {
+                const double fraction = double(t + 1) / double(count + 1);
+                Mat4 frame = frames[s];
+                frame[3] = Vec4(glm::mix(g.points[s], g.points[s + 1], fraction), 1.0);
+                const auto joint = kit::addSkin(ctx, std::string(segment[s]) + "." + std::to_string(t), segment[s], int(t) + 1,
+                                                skin[s], frame, g.limb[s]);
+                ctx.addConstraint(ConstraintKind::Twist, "cns." + std::string(segment[s]) + "." + std::to_string(t), {joint},
+                                  {blend[s], blend[s + 1]}, {}, {{"fraction", fraction}});
+            }
+        }
+        if (ctx.optionBool("blend_joints"))
+            for (std::size_t i = 1; i < k; ++i) {
+                const auto joint = kit::addSkin(ctx, "mid." + std::to_string(i - 1), "mid", int(i), skin[i - 1], frames[i], g.limb[i]);
+                ctx.addConstraint(ConstraintKind::Orient, "cns.mid." + std::to_string(i - 1), {joint}, {blend[i - 1], blend[i]}, {},
+                                  {{"weight", 0.5}});
+            }
+    }
+
+    for (std::size_t i = 0; i < k; ++i)
+        ctx.setHook(g.limb[i], blend[i]);
+    ctx.setHook(g.end, end);
+    if (g.toe != model::kNoId)
+        ctx.setHook(g.toe, end);
+    for (const char* tag : {"heel", "bank_int", "bank_ext"})
+        for (JointId j : ctx.taggedJoints(tag))
+            ctx.setHook(j, blend.back());
+}
+
+void LimbBuilder::buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNodeIndex ikCtrl, const Vec3& normal,
+                                   RigNodeIndex& effector, RigNodeIndex& toeTap) const
+{
+    const Vec3 ankle = g.points[limbCount() - 1];
+    const Vec3 ball = ctx.guidePosition(g.end);
+    const Vec3 toe = ctx.guidePosition(g.toe);
+    const double ground = std::min(toe.y, ball.y);
+
+    // Forward along the ground, side = the leg's bend axis flattened.
+    Vec3 forward = toe - ankle;
+    forward.y = 0.0;
+    if (glm::length(forward) < 1e-6)
+        forward = Vec3(0.0, 0.0, 1.0);
+    forward = glm::normalize(forward);
+    Vec3 side = glm::cross(Vec3(0.0, 1.0, 0.0), forward);
+    if (glm::dot(side, normal) < 0.0)
+        side = -side;
+
+    auto pivot = [&](const char* tag, Vec3 fallback) {
+        const auto joints = ctx.taggedJoints(tag);
+        if (joints.empty()) {
+            ctx.warning(std::string("no guide is tagged '") + tag + "'; the " + tag +
+                        " pivot is placed from the foot (add a guide with tag '" + tag + "' under the ankle)");
+            return fallback;
+        }
+        if (joints.size() > 1)
+            ctx.warning(std::to_string(joints.size()) + " guides are tagged '" + tag + "'; using the first");
+        return ctx.guidePosition(joints.front());
+    };
+    const Vec3 heel = pivot("heel", Vec3(ankle.x, ground, ankle.z) - forward * 0.05);
+    const Vec3 bankInt = pivot("bank_int", Vec3(ball.x, ground, ball.z) - side * 0.04);
+    const Vec3 bankExt = pivot("bank_ext", Vec3(ball.x, ground, ball.z) + side * 0.04);
+
+    // Pivot frames: X forward, Y up, Z to the side; roll turns about Z, bank about X.
+    auto frameAt = [&](const Vec3& p) { return kit::aimFrame(p, forward, side); };
+    const std::string roll = ctx.addAttribute(ikCtrl, "roll", 0.0, -90.0, 90.0);
+    const std::string rollBreak = ctx.addAttribute(ikCtrl, "roll_break", 30.0, 0.0, 90.0);
+    const std::string bank = ctx.addAttribute(ikCtrl, "bank", 0.0, -90.0, 90.0);
+    const std::string heelTwist = ctx.addAttribute(ikCtrl, "heel_twist", 0.0, -90.0, 90.0);
+    const std::string toeTwist = ctx.addAttribute(ikCtrl, "toe_twist", 0.0, -90.0, 90.0);
+    const std::string tap = ctx.addAttribute(ikCtrl, "toe_tap", 0.0, -90.0, 90.0);
+
+    auto group = [&](const std::string& key, RigNodeIndex parent, const Vec3& p, JointId source) {
+        return kit::addSetup(ctx, RigNodeKind::Group, "rfoot." + key, key, {}, parent, frameAt(p), source);
+    };
+    auto drive = [&](const std::string& key, RigNodeIndex node, const std::string& value, double axis, double mode,
+                     double factor, double low, double high) {
+        std::map<std::string, std::string> attributes{{"value", value}};
+        if (mode != 0.0)
+            attributes["break"] = rollBreak;
+        ctx.addConstraint(ConstraintKind::Drive, "cns.rfoot." + key, {node}, {}, attributes,
+                          {{"axis", axis}, {"mode", mode}, {"factor", factor}, {"low", low}, {"high", high}});
+    };
+    const JointId ankleJoint = g.limb[limbCount() - 1];
+    const auto heelNode = group("heel", ikCtrl, heel, ankleJoint);
+    const auto toeNode = group("toe", heelNode, Vec3(toe.x, ground, toe.z), g.toe);
+    const auto extNode = group("bank_ext", toeNode, bankExt, ankleJoint);
+    const auto intNode = group("bank_int", extNode, bankInt, ankleJoint);
+    const auto ballNode = group("ball", intNode, ball, g.end);
+    toeTap = group("toe_tap", intNode, ball, g.end);
+    effector = kit::addSetup(ctx, RigNodeKind::Group, "rfoot.ankle", "ankle", {}, ballNode, frameAt(ankle), ankleJoint);
+
+    drive("heel_roll", heelNode, roll, 2, 0, -1.0, -90.0, 0.0);
+    drive("heel_twist", heelNode, heelTwist, 1, 0, 1.0, -90.0, 90.0);
+    drive("toe_roll", toeNode, roll, 2, 2, -1.0, 0.0, 90.0);
+    drive("toe_twist", toeNode, toeTwist, 1, 0, 1.0, -90.0, 90.0);
+    drive("bank_ext", extNode, bank, 0, 0, 1.0, 0.0, 90.0);
+    drive("bank_int", intNode, bank, 0, 0, 1.0, -90.0, 0.0);
+    drive("ball_roll", ballNode, roll, 2, 1, -1.0, 0.0, 90.0);
+    drive("toe_tap", toeTap, tap, 2, 0, -1.0, -90.0, 90.0);
+}
+
+} // namespace
+
+std::unique_ptr<TemplateBuilder> makeLimbBuilder(LimbKind kind) { return std::make_unique<LimbBuilder>(kind); }
+
+} // namespace rs::build
