@@ -114,7 +114,7 @@ public:
         const int count = std::max(1, static_cast<int>(kit::guideNumber(guides, "number", 2)));
         std::vector<GuideJointSpec> specs;
         int parent = kit::appendChain(specs, count, Vec3(0.0, 0.02, -0.01), Vec3(0.0, 0.06 / count, 0.01));
-        parent = kit::appendJoint(specs, parent, Vec3(0.0, count == 1 ? 0.1 : 0.04, 0.01));
+        parent = kit::appendJoint(specs, parent, Vec3(0.0, 0.1 - 0.06 * (count - 1) / count, 0.01)); // head 0.12 above the chest
         kit::appendJoint(specs, parent, Vec3(0.0, 0.18, 0.0));
         return specs;
     }
