@@ -67,10 +67,10 @@ std::optional<std::vector<std::string>> BuildContext::optionList(const std::stri
 
 std::optional<std::vector<model::JointId>> BuildContext::structure(const std::string& tag) const
 {
-    std::string message;
-    auto joints = templates::StructureResolver(m_manifest, m_instance).tag(tag, &message);
+    const auto& resolved = m_assembly.structureTag(m_manifest, m_instance, tag);
+    auto joints = resolved.joints;
     if (!joints)
-        error("structure '" + tag + "': " + message);
+        error("structure '" + tag + "': " + resolved.error);
     else if (joints->empty())
         error("structure '" + tag + "' resolves to no guide joint");
     if (joints && joints->empty())

@@ -6,6 +6,8 @@
 #include "templates/Structure.h"
 
 #include <cmath>
+#include <string_view>
+#include <unordered_map>
 
 namespace rs::build {
 
@@ -14,19 +16,18 @@ using model::RigNodeIndex;
 
 namespace {
 
-std::string tagOf(const model::RigNode& node) { return node.id.substr(node.id.find("::") + 2); }
-
 // Nodes of the instance registered under `id`: the node itself, or the id branch.
-std::vector<RigNodeIndex> nodesOf(const RigAssembly& a, const InstanceRecord& r, const std::string& id)
+std::vector<RigNodeIndex> nodesOf(const RigAssembly& a, const NodesByInstance& index, const InstanceRecord& r,
+                                  const std::string& id)
 {
     std::vector<RigNodeIndex> out;
-    const std::string prefix = r.instance->name + "::";
-    for (RigNodeIndex i = 0; i < a.rig.nodes.size(); ++i) {
-        const auto& n = a.rig.nodes[i];
-        if (n.id.compare(0, prefix.size(), prefix) != 0)
-            continue;
-        const std::string tag = tagOf(n);
-        if (tag == id || tag.rfind(id + ".", 0) == 0)
+    auto own = index.find(r.instance->name);
+    if (own == index.end())
+        return out;
+    for (RigNodeIndex i : own->second) {
+        const std::string_view nodeId = a.rig.nodes[i].id;
+        const std::string_view tag = nodeId.substr(r.instance->name.size() + 2);
+        if (tag.size() >= id.size() && tag.compare(0, id.size(), id) == 0 && (tag.size() == id.size() || tag[id.size()] == '.'))
             out.push_back(i);
     }
     return out;
@@ -57,16 +58,14 @@ void registerHooks(RigAssembly& a, const InstanceRecord& r, const templates::Hie
 {
     if (!rule.hook || nodes.empty())
         return;
-    templates::StructureResolver resolver(*r.manifest, *r.instance);
     std::vector<model::JointId> joints;
     for (const std::string& tag : *rule.hook) {
-        std::string error;
-        auto resolved = resolver.tag(tag, &error);
-        if (!resolved) {
-            a.report(Severity::Warning, r.instance, "hierarchy." + e.id + ".hook: " + error);
+        const auto& resolved = a.structureTag(*r.manifest, *r.instance, tag);
+        if (!resolved.joints) {
+            a.report(Severity::Warning, r.instance, "hierarchy." + e.id + ".hook: " + resolved.error);
             continue;
         }
-        joints.insert(joints.end(), resolved->begin(), resolved->end());
+        joints.insert(joints.end(), resolved.joints->begin(), resolved.joints->end());
     }
     // Counts that differ are resampled evenly along the nodes.
     for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -112,9 +111,10 @@ void buildVirtualHierarchy(RigAssembly& a)
         std::vector<RigNodeIndex> nodes;
     };
     std::vector<Pending> pending;
+    const NodesByInstance index = indexNodesByInstance(a.rig);
     for (const InstanceRecord& r : a.records)
         for (const auto& e : r.manifest->hierarchy) {
-            Pending p{&r, &e, effectiveRule(a, r, e), nodesOf(a, r, e.id)};
+            Pending p{&r, &e, effectiveRule(a, r, e), nodesOf(a, index, r, e.id)};
             registerHooks(a, r, e, p.rule, p.nodes);
             pending.push_back(std::move(p));
         }

@@ -6,9 +6,11 @@
 #include "templates/TemplateRegistry.h"
 
 #include <map>
+#include <optional>
 #include <memory>
 #include <vector>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 
 namespace rs::build {
@@ -37,6 +39,18 @@ struct RigAssembly {
     };
     std::unordered_map<model::JointId, GuideEntry> guideIndex;
 
+    // Structure lookups memoised per build (instance name + tag or address):
+    // builders, shapes and the hierarchy ask for the same tags many times.
+    struct Resolved {
+        std::optional<std::vector<model::JointId>> joints;
+        std::string error;
+    };
+    std::unordered_map<std::string, Resolved> structureCache;
+    const Resolved& structureTag(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
+                                 const std::string& tag);
+    const Resolved& structureAddress(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
+                                     const std::string& address);
+
     void indexGuide(); // also places mirrored branch copies
     model::JointId authoredJoint(model::JointId expandedJoint) const;
     const BranchCopy& copyOf(model::InstanceId expandedInstance) const { return expanded.copies.at(expandedInstance); }
@@ -50,6 +64,11 @@ struct RigAssembly {
     model::RigNodeIndex virtualHookFor(const std::string& domain, model::JointId joint) const;
     void report(Severity severity, const model::TemplateInstance* instance, const std::string& message);
 };
+
+// Node indices per instance name (the id before "::"), in node order, so a
+// stage scans only one instance's nodes. Views point into the rig's ids.
+using NodesByInstance = std::unordered_map<std::string_view, std::vector<model::RigNodeIndex>>;
+NodesByInstance indexNodesByInstance(const model::Rig& rig);
 
 // Stages run by buildRig after generation.
 void applyShapes(RigAssembly& assembly);

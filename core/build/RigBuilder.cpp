@@ -46,6 +46,44 @@ void RigAssembly::indexGuide()
     }
 }
 
+const RigAssembly::Resolved& RigAssembly::structureTag(const templates::TemplateManifest& manifest,
+                                                        const model::TemplateInstance& instance, const std::string& tag)
+{
+    std::string key = instance.name + "\nt" + tag;
+    auto it = structureCache.find(key);
+    if (it == structureCache.end()) {
+        Resolved r;
+        r.joints = templates::StructureResolver(manifest, instance).tag(tag, &r.error);
+        it = structureCache.emplace(std::move(key), std::move(r)).first;
+    }
+    return it->second;
+}
+
+const RigAssembly::Resolved& RigAssembly::structureAddress(const templates::TemplateManifest& manifest,
+                                                            const model::TemplateInstance& instance, const std::string& address)
+{
+    std::string key = instance.name + "\na" + address;
+    auto it = structureCache.find(key);
+    if (it == structureCache.end()) {
+        Resolved r;
+        r.joints = templates::StructureResolver(manifest, instance).address(address, &r.error);
+        it = structureCache.emplace(std::move(key), std::move(r)).first;
+    }
+    return it->second;
+}
+
+NodesByInstance indexNodesByInstance(const model::Rig& rig)
+{
+    NodesByInstance out;
+    for (RigNodeIndex i = 0; i < rig.nodes.size(); ++i) {
+        const std::string_view id = rig.nodes[i].id;
+        const auto sep = id.find("::");
+        if (sep != std::string_view::npos)
+            out[id.substr(0, sep)].push_back(i);
+    }
+    return out;
+}
+
 JointId RigAssembly::authoredJoint(JointId expandedJoint) const
 {
     auto it = expanded.original.find(expandedJoint);
@@ -199,7 +237,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 {
     Diagnostics branchDiagnostics;
     const ExpandedGuide expanded = expandBranches(guide, templates, branchDiagnostics);
-    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}};
+    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}, {}};
     a.rig.diagnostics = branchDiagnostics;
     a.indexGuide();
     model::RigNode root;
@@ -241,7 +279,6 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
         ctx.setHookNode(record.instance->parentJoint != model::kNoId ? a.physicalHookFor(record.instance->parentJoint) : 0);
         const std::size_t nodesBefore = a.rig.nodes.size();
         const std::size_t constraintsBefore = a.rig.constraints.size();
-        const auto hooksBefore = a.hooks;
         const auto spacesBefore = a.spaces;
         builder->generate(ctx);
         if (ctx.failed()) {
@@ -249,7 +286,8 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
                 a.rig.byId.erase(a.rig.nodes[i].id);
             a.rig.nodes.resize(nodesBefore);
             a.rig.constraints.resize(constraintsBefore);
-            a.hooks = hooksBefore;
+            for (const auto& joint : record.instance->joints) // setHook only takes the instance's own joints
+                a.hooks.erase(joint.id);
             a.spaces = spacesBefore;
             continue;
         }

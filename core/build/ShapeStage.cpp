@@ -122,12 +122,13 @@ Mat3 rotationBetween(const Vec3& from, const Vec3& to)
 // Places one shape: returns its frame in world space.
 class Placer {
 public:
-    Placer(RigAssembly& a, const InstanceRecord& r) : m_a(a), m_r(r), m_resolver(*r.manifest, *r.instance) {}
+    Placer(RigAssembly& a, const InstanceRecord& r) : m_a(a), m_r(r) {}
 
     std::optional<std::vector<Vec3>> positions(const std::string& address, const std::string& what)
     {
-        std::string error;
-        auto joints = m_resolver.address(address, &error);
+        const auto& resolved = m_a.structureAddress(*m_r.manifest, *m_r.instance, address);
+        const auto& joints = resolved.joints;
+        const std::string& error = resolved.error;
         if (!joints || joints->empty()) {
             warn(what + ": " + (joints ? "'" + address + "' resolves to no guide joint" : error));
             return std::nullopt;
@@ -158,8 +159,9 @@ public:
             return controllerWorld;
         Mat4 frame = controllerWorld;
         if (!spec.parent.empty()) {
-            std::string error;
-            auto joints = m_resolver.address(substitute(spec.parent, index), &error);
+            const auto& resolved = m_a.structureAddress(*m_r.manifest, *m_r.instance, substitute(spec.parent, index));
+            const auto& joints = resolved.joints;
+            const std::string& error = resolved.error;
             if (joints && !joints->empty()) {
                 Vec3 t, s;
                 Quat q;
@@ -237,7 +239,6 @@ private:
 
     RigAssembly& m_a;
     const InstanceRecord& m_r;
-    templates::StructureResolver m_resolver;
 };
 
 struct PendingClone {
@@ -277,6 +278,7 @@ void cloneCurves(RigAssembly& a, const PendingClone& c)
 // with the hue turned 120 degrees, as Mikan does.
 void mirrorBranchShapes(RigAssembly& a)
 {
+    const NodesByInstance byInstance = indexNodesByInstance(a.rig);
     for (const InstanceRecord& r : a.records) {
         const BranchCopy& copy = a.copyOf(r.instance->id);
         if (copy.mirror == Mat4(1.0))
@@ -284,8 +286,12 @@ void mirrorBranchShapes(RigAssembly& a)
         const std::string own = r.instance->name + "::";
         const std::string twin = a.guide.instance(copy.twin)->name + "::";
         const Mat3 m(copy.mirror);
-        for (auto& node : a.rig.nodes) {
-            if (node.kind != model::RigNodeKind::Controller || node.id.compare(0, own.size(), own) != 0)
+        auto ownNodes = byInstance.find(r.instance->name);
+        if (ownNodes == byInstance.end())
+            continue;
+        for (model::RigNodeIndex index : ownNodes->second) {
+            auto& node = a.rig.nodes[index];
+            if (node.kind != model::RigNodeKind::Controller)
                 continue;
             auto source = a.rig.find(twin + node.id.substr(own.size()));
             if (!source)

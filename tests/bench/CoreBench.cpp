@@ -98,15 +98,71 @@ void BM_ScanTemplateLibrary(benchmark::State& state)
 }
 BENCHMARK(BM_ScanTemplateLibrary)->Arg(100)->Unit(benchmark::kMillisecond);
 
+// What a build made, as JSON counters next to the time.
+void countRig(benchmark::State& state, const model::Rig& rig)
+{
+    state.counters["nodes"] = double(rig.nodes.size());
+    state.counters["controllers"] = double(rig.count(model::RigNodeKind::Controller));
+    state.counters["skin_joints"] = double(rig.skinJointCount());
+    state.counters["constraints"] = double(rig.constraints.size());
+    state.counters["diagnostics"] = double(rig.diagnostics.size());
+}
+
 void BM_BuildBipedRig(benchmark::State& state)
 {
     const auto doc = biped();
     const auto& templates = registry();
     for (auto _ : state)
         benchmark::DoNotOptimize(build::buildRig(doc, templates));
-    state.counters["nodes"] = double(build::buildRig(doc, templates).nodes.size());
+    countRig(state, build::buildRig(doc, templates));
 }
 BENCHMARK(BM_BuildBipedRig)->Unit(benchmark::kMicrosecond);
+
+void BM_BuildSampleRig(benchmark::State& state, const std::string& sample)
+{
+    const auto doc = io::readGuideFile(kSource + "/resources/samples/" + sample + ".yml").take();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(build::buildRig(doc, registry()));
+    countRig(state, build::buildRig(doc, registry()));
+}
+BENCHMARK_CAPTURE(BM_BuildSampleRig, quadruped, std::string("quadruped"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_BuildSampleRig, prop, std::string("prop"))->Unit(benchmark::kMicrosecond);
+
+// N bipeds side by side in one guide (fresh ids and names per copy): how the
+// build scales past the ~900 nodes of a production biped.
+model::GuideDocument crowd(int copies)
+{
+    const auto one = biped();
+    model::GuideDocument out;
+    out.name = "crowd";
+    const auto instanceStride = one.nextInstanceId(), jointStride = one.nextJointId();
+    for (int k = 0; k < copies; ++k)
+        for (model::TemplateInstance instance : one.instances()) {
+            auto shift = [&](model::JointId j) { return j == model::kNoId ? j : j + model::JointId(k) * jointStride; };
+            instance.id += model::InstanceId(k) * instanceStride;
+            if (instance.parent != model::kNoId)
+                instance.parent += model::InstanceId(k) * instanceStride;
+            instance.parentJoint = shift(instance.parentJoint);
+            instance.name += k == 0 ? "" : "_" + std::to_string(k);
+            for (auto& joint : instance.joints) {
+                joint.id = shift(joint.id);
+                joint.parent = shift(joint.parent);
+            }
+            if (instance.parent == model::kNoId)
+                instance.joints.front().local.translate.x += 2.0 * k;
+            out.insertInstance(std::move(instance), out.instances().size());
+        }
+    return out;
+}
+
+void BM_BuildBipedCrowd(benchmark::State& state)
+{
+    const auto doc = crowd(static_cast<int>(state.range(0)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(build::buildRig(doc, registry()));
+    countRig(state, build::buildRig(doc, registry()));
+}
+BENCHMARK(BM_BuildBipedCrowd)->Arg(3)->Arg(10)->Unit(benchmark::kMicrosecond);
 
 void BM_DumpBipedRig(benchmark::State& state)
 {
