@@ -6,6 +6,8 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <QFileDialog>
 #include <QMenuBar>
 #include <QToolBar>
@@ -84,6 +86,21 @@ void MainWindow::createActions()
     updateUndo();
 
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    // File > New: an empty guide or a copy of a bundled sample (biped, quadruped, prop).
+    QMenu* newMenu = file->addMenu(tr("&New"));
+    newMenu->setObjectName("newMenu");
+    QAction* empty = makeAction(this, "new:empty", tr("&Empty guide"), QKeySequence::New);
+    connect(empty, &QAction::triggered, this, [this] { newFromSample(QString()); });
+    newMenu->addAction(empty);
+    newMenu->addSeparator();
+    const QDir samples(QString::fromStdString(samplesDirectory()));
+    for (const QFileInfo& sample : samples.entryInfoList({"*.yml"}, QDir::Files, QDir::Name)) {
+        QAction* a = makeAction(this, "new:" + sample.completeBaseName(), sample.completeBaseName(), {});
+        a->setToolTip(tr("A new guide starting from the %1 sample").arg(sample.completeBaseName()));
+        const QString path = sample.absoluteFilePath();
+        connect(a, &QAction::triggered, this, [this, path] { newFromSample(path); });
+        newMenu->addAction(a);
+    }
     file->addActions({open, save, saveAs});
     file->addSeparator();
     file->addAction(exportGlb);

@@ -40,6 +40,28 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
     return true;
 }
 
+bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagnostics)
+{
+    model::GuideDocument document;
+    document.name = "untitled";
+    if (!templatePath.isEmpty()) {
+        auto loaded = io::readGuideFile(templatePath.toStdString());
+        diagnostics = loaded.takeDiagnostics();
+        if (!loaded)
+            return false;
+        document = loaded.take();
+    }
+    m_filePath.clear();
+    m_selection = {};
+    m_rig.reset();
+    m_rigStale = false;
+    m_history.reset(std::move(document));
+    m_history.setClean();
+    emit rigChanged();
+    emit selectionChanged();
+    return true;
+}
+
 bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
 {
     diagnostics = io::saveGuideFile(m_document, path.toStdString());

@@ -38,6 +38,10 @@ public:
 
     // A failed load reports why and leaves the open document untouched.
     bool open(const QString& path, Diagnostics& diagnostics);
+    // File > New: a copy of a guide (a bundled sample) as an untitled document,
+    // so saving asks where and never overwrites the sample; an empty path gives
+    // an empty guide.
+    bool newDocument(const QString& templatePath, Diagnostics& diagnostics);
     bool save(const QString& path, Diagnostics& diagnostics);
     // Builds the rig; returns the build time in milliseconds.
     double build();

@@ -143,6 +143,19 @@ bool MainWindow::openFile(const QString& path)
     return ok;
 }
 
+bool MainWindow::newFromSample(const QString& samplePath)
+{
+    Diagnostics diagnostics;
+    const bool ok = m_session.newDocument(samplePath, diagnostics);
+    const QString what = samplePath.isEmpty() ? tr("an empty guide") : tr("the %1 sample").arg(QFileInfo(samplePath).completeBaseName());
+    report(ok ? tr("New guide from %1").arg(what) : tr("Could not start from %1; the open guide is unchanged").arg(what), diagnostics);
+    if (ok) {
+        updateTitle();
+        m_viewport->frameAll();
+    }
+    return ok;
+}
+
 bool MainWindow::saveFile(const QString& path)
 {
     Diagnostics diagnostics;

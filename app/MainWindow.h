@@ -25,6 +25,8 @@ public:
     QAction* action(const QString& objectName) const;
 
     bool openFile(const QString& path);
+    // File > New: an untitled copy of a sample (empty path: an empty guide).
+    bool newFromSample(const QString& samplePath);
     bool saveFile(const QString& path);
     bool exportTo(const QString& path);
     void buildRig();

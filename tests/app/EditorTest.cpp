@@ -188,3 +188,28 @@ int main(int argc, char** argv)
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
+
+TEST(Editor, FileNewListsTheSamplesAndStartsAnUntitledCopy)
+{
+    Editor e;
+    app::MainWindow& w = e.window;
+    auto* newMenu = w.findChild<QMenu*>("newMenu");
+    ASSERT_NE(newMenu, nullptr);
+    QStringList entries;
+    for (QAction* a : newMenu->actions())
+        if (!a->isSeparator())
+            entries << a->objectName();
+    EXPECT_EQ(entries.join(", ").toStdString(), "new:empty, new:biped, new:prop, new:quadruped");
+
+    w.action("new:quadruped")->trigger();
+    EXPECT_TRUE(w.session().filePath().isEmpty()) << "a copy: saving never overwrites the sample";
+    EXPECT_EQ(w.session().document().name, "quadruped");
+    EXPECT_NE(w.session().document().instanceNamed("tail"), nullptr);
+    w.action("build")->trigger();
+    ASSERT_NE(w.session().rig(), nullptr);
+    EXPECT_TRUE(w.session().rig()->diagnostics.empty()) << formatAll(w.session().rig()->diagnostics);
+    EXPECT_TRUE(w.session().rig()->find("hind_leg.R::rfoot.heel"));
+
+    w.action("new:empty")->trigger();
+    EXPECT_TRUE(w.session().document().instances().empty());
+}
