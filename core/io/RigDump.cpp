@@ -66,6 +66,8 @@ std::string writeRigDump(const model::Rig& rig)
         out << "    r: " << list({r.x, r.y, r.z, r.w}) << "\n";
         if (glm::length(s - Vec3(1.0)) > 1e-9)
             out << "    s: " << list({s.x, s.y, s.z}) << "\n";
+        if (n.guide != model::kNoId)
+            out << "    guide: " << n.guide << "\n";
         if (n.hidden)
             out << "    hidden: true\n";
         for (std::size_t i = 0; i < n.attributes.size(); ++i) {
