@@ -47,9 +47,17 @@ struct RigAssembly {
     };
     std::unordered_map<std::string, Resolved> structureCache;
     const Resolved& structureTag(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
-                                 const std::string& tag);
+                                 const std::string& tag)
+    {
+        return resolveStructure(manifest, instance, true, tag);
+    }
     const Resolved& structureAddress(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
-                                     const std::string& address);
+                                     const std::string& address)
+    {
+        return resolveStructure(manifest, instance, false, address);
+    }
+    const Resolved& resolveStructure(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
+                                     bool isTag, const std::string& text);
 
     void indexGuide(); // also places mirrored branch copies
     model::JointId authoredJoint(model::JointId expandedJoint) const;

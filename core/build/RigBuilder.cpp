@@ -46,27 +46,16 @@ void RigAssembly::indexGuide()
     }
 }
 
-const RigAssembly::Resolved& RigAssembly::structureTag(const templates::TemplateManifest& manifest,
-                                                        const model::TemplateInstance& instance, const std::string& tag)
+const RigAssembly::Resolved& RigAssembly::resolveStructure(const templates::TemplateManifest& manifest,
+                                                            const model::TemplateInstance& instance, bool isTag,
+                                                            const std::string& text)
 {
-    std::string key = instance.name + "\nt" + tag;
+    std::string key = instance.name + (isTag ? "\nt" : "\na") + text;
     auto it = structureCache.find(key);
     if (it == structureCache.end()) {
         Resolved r;
-        r.joints = templates::StructureResolver(manifest, instance).tag(tag, &r.error);
-        it = structureCache.emplace(std::move(key), std::move(r)).first;
-    }
-    return it->second;
-}
-
-const RigAssembly::Resolved& RigAssembly::structureAddress(const templates::TemplateManifest& manifest,
-                                                            const model::TemplateInstance& instance, const std::string& address)
-{
-    std::string key = instance.name + "\na" + address;
-    auto it = structureCache.find(key);
-    if (it == structureCache.end()) {
-        Resolved r;
-        r.joints = templates::StructureResolver(manifest, instance).address(address, &r.error);
+        const templates::StructureResolver resolver(manifest, instance);
+        r.joints = isTag ? resolver.tag(text, &r.error) : resolver.address(text, &r.error);
         it = structureCache.emplace(std::move(key), std::move(r)).first;
     }
     return it->second;

@@ -18,13 +18,7 @@ using model::RigNodeKind;
 
 namespace {
 
-const model::RigNode& node(const model::Rig& rig, const std::string& id)
-{
-    auto index = rig.find(id);
-    EXPECT_TRUE(index.has_value()) << "no rig node " << id;
-    static const model::RigNode none;
-    return index ? rig.nodes[*index] : none;
-}
+using test::node;
 
 const model::RigConstraint* constraint(const model::Rig& rig, const std::string& id)
 {

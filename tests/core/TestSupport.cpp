@@ -41,6 +41,14 @@ model::GuideDocument loadSample(const std::string& name)
     return doc.ok() ? doc.take() : model::GuideDocument{};
 }
 
+const model::RigNode& node(const model::Rig& rig, const std::string& id)
+{
+    auto index = rig.find(id);
+    EXPECT_TRUE(index.has_value()) << "no rig node " << id;
+    static const model::RigNode none;
+    return index ? rig.nodes[*index] : none;
+}
+
 model::GuideDocument loadGuide(const std::string& dataRelativePath)
 {
     auto doc = io::readGuideFile(dataPath(dataRelativePath));

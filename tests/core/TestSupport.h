@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers for core tests: paths of test data, samples and golden files.
 #include "model/GuideDocument.h"
+#include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
 #include <memory>
@@ -20,5 +21,7 @@ inline model::GuideDocument loadChains() { return loadGuide("RigBuilder/chains/g
 // Compares `actual` with the golden file; RIGSMITH_UPDATE_GOLDEN=1 rewrites it.
 void expectMatchesGolden(const std::string& actual, const std::string& goldenRelativePath);
 std::string temporaryPath(const std::string& name);
+// A rig node by id; fails the test (and returns an empty node) when it is missing.
+const model::RigNode& node(const model::Rig& rig, const std::string& id);
 
 } // namespace rs::test

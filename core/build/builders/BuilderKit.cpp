@@ -121,6 +121,24 @@ std::optional<std::vector<Vec3>> positions(const BuildContext& ctx, const std::v
     return out;
 }
 
+std::optional<std::vector<model::JointId>> chainOfAtLeast(const BuildContext& ctx, std::size_t minimum, const std::string& what,
+                                                          const std::string& parts)
+{
+    auto chain = ctx.structure("chain");
+    if (!chain)
+        return std::nullopt;
+    if (chain->size() < minimum) {
+        ctx.error(what + " needs at least " + std::to_string(minimum) + " guide joints" + parts + "; it has " +
+                  std::to_string(chain->size()), "number");
+        return std::nullopt;
+    }
+    std::string name = what;
+    if (name.rfind("the ", 0) == 0) name = name.substr(4);
+    else if (name.rfind("a ", 0) == 0) name = name.substr(2);
+    checkSpacing(ctx, *chain, name);
+    return chain;
+}
+
 bool checkSpacing(const BuildContext& ctx, const std::vector<model::JointId>& joints, const std::string& what)
 {
     bool ok = true;

@@ -45,6 +45,11 @@ model::RigNodeIndex addSetup(BuildContext& ctx, model::RigNodeKind kind, const s
 
 // Guide positions of a structure tag; nullopt (with the error reported) when it fails.
 std::optional<std::vector<Vec3>> positions(const BuildContext& ctx, const std::vector<model::JointId>& joints);
+// The `chain` structure tag with at least `minimum` joints (else an error naming
+// the `number` option: "<what> needs at least N guide joints<parts>; it has M"),
+// spacing checked.
+std::optional<std::vector<model::JointId>> chainOfAtLeast(const BuildContext& ctx, std::size_t minimum, const std::string& what,
+                                                          const std::string& parts = {});
 // Warns about consecutive guides closer than 1 mm; returns false when any overlap.
 bool checkSpacing(const BuildContext& ctx, const std::vector<model::JointId>& joints, const std::string& what);
 

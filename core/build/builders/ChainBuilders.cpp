@@ -22,20 +22,6 @@ Vec3 rootNormal(const BuildContext& ctx, JointId root)
     return glm::length(z) > 1e-9 ? glm::normalize(z) : Vec3(0.0, 0.0, 1.0);
 }
 
-std::optional<std::vector<JointId>> chainWithAtLeast(const BuildContext& ctx, std::size_t minimum, const std::string& what)
-{
-    auto chain = ctx.structure("chain");
-    if (!chain)
-        return std::nullopt;
-    if (chain->size() < minimum) {
-        ctx.error(what + " needs at least " + std::to_string(minimum) + " guide joints; it has " + std::to_string(chain->size()),
-                  "number");
-        return std::nullopt;
-    }
-    kit::checkSpacing(ctx, *chain, what);
-    return chain;
-}
-
 class DigitBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
@@ -51,7 +37,7 @@ public:
         return specs;
     }
 
-    bool gather(const BuildContext& ctx) const override { return chainWithAtLeast(ctx, 2, "a digit").has_value(); }
+    bool gather(const BuildContext& ctx) const override { return kit::chainOfAtLeast(ctx, 2, "a digit").has_value(); }
 
     void generate(BuildContext& ctx) const override
     {
@@ -93,7 +79,7 @@ public:
         return specs;
     }
 
-    bool gather(const BuildContext& ctx) const override { return chainWithAtLeast(ctx, 3, "a spline chain").has_value(); }
+    bool gather(const BuildContext& ctx) const override { return kit::chainOfAtLeast(ctx, 3, "a spline chain").has_value(); }
 
     void generate(BuildContext& ctx) const override
     {

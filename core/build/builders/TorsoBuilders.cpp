@@ -40,16 +40,7 @@ public:
 
     bool gather(const BuildContext& ctx) const override
     {
-        auto chain = ctx.structure("chain");
-        if (!chain)
-            return false;
-        if (chain->size() < 3) {
-            ctx.error("the spine needs at least 3 guide joints (hips, one spine joint, chest); it has " +
-                      std::to_string(chain->size()), "number");
-            return false;
-        }
-        kit::checkSpacing(ctx, *chain, "spine");
-        return true;
+        return kit::chainOfAtLeast(ctx, 3, "the spine", " (hips, one spine joint, chest)").has_value();
     }
 
     void generate(BuildContext& ctx) const override
@@ -121,16 +112,7 @@ public:
 
     bool gather(const BuildContext& ctx) const override
     {
-        auto chain = ctx.structure("chain");
-        if (!chain)
-            return false;
-        if (chain->size() < 3) {
-            ctx.error("the neck needs a neck joint, a head and a head tip; it has " + std::to_string(chain->size()) +
-                      " guide joints", "number");
-            return false;
-        }
-        kit::checkSpacing(ctx, *chain, "neck");
-        return true;
+        return kit::chainOfAtLeast(ctx, 3, "the neck", " (a neck joint, the head, the head tip)").has_value();
     }
 
     void generate(BuildContext& ctx) const override
