@@ -29,15 +29,20 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
     diagnostics = loaded.takeDiagnostics();
     if (!loaded)
         return false;
+    replaceDocument(loaded.take(), path);
+    return true;
+}
+
+void EditorSession::replaceDocument(model::GuideDocument document, const QString& path)
+{
     m_filePath = path;
     m_selection = {};
     m_rig.reset();
     m_rigStale = false;
-    m_history.reset(loaded.take());
+    m_history.reset(std::move(document));
     m_history.setClean();
     emit rigChanged();
     emit selectionChanged();
-    return true;
 }
 
 bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagnostics)
@@ -51,14 +56,7 @@ bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagno
             return false;
         document = loaded.take();
     }
-    m_filePath.clear();
-    m_selection = {};
-    m_rig.reset();
-    m_rigStale = false;
-    m_history.reset(std::move(document));
-    m_history.setClean();
-    emit rigChanged();
-    emit selectionChanged();
+    replaceDocument(std::move(document), QString());
     return true;
 }
 

@@ -66,6 +66,9 @@ signals:
     void templatesReloaded();
 
 private:
+    // Replaces the open document (selection, rig and history start over).
+    void replaceDocument(model::GuideDocument document, const QString& path);
+
     model::GuideDocument m_document;
     edit::History m_history{m_document};
     std::shared_ptr<templates::TemplateRegistry> m_templates;

@@ -6,6 +6,12 @@ namespace rs::build::kit {
 
 Vec3 positionOf(const Mat4& m) { return Vec3(m[3]); }
 
+Vec3 guideAxis(const BuildContext& ctx, model::JointId joint, int column, const Vec3& fallback)
+{
+    const Vec3 axis = Vec3(ctx.guideWorldMatrix(joint)[column]);
+    return glm::length(axis) > 1e-9 ? glm::normalize(axis) : fallback;
+}
+
 Mat4 aimFrame(const Vec3& origin, const Vec3& aim, const Vec3& normal)
 {
     Vec3 x = glm::length(aim) > 1e-12 ? glm::normalize(aim) : Vec3(1.0, 0.0, 0.0);

@@ -25,6 +25,8 @@ Mat4 uprightFrame(const Vec3& origin);
 // axis (spines and necks, whose S-curves would flip a bend normal).
 std::vector<Mat4> sideFrames(const std::vector<Vec3>& points, const Vec3& side);
 Vec3 positionOf(const Mat4& m);
+// Unit axis `column` (0 x, 1 y, 2 z) of a guide joint's world matrix, or `fallback`.
+Vec3 guideAxis(const BuildContext& ctx, model::JointId joint, int column, const Vec3& fallback);
 
 // An offset group with a controller under it: the pattern of every animatable
 // control. Without `do_ctrl` only the group is made and drives the rig.

@@ -16,11 +16,7 @@ using model::RigNodeIndex;
 using model::RigNodeKind;
 
 // The Z axis of a chain's root guide: the bend axis used where the chain is straight.
-Vec3 rootNormal(const BuildContext& ctx, JointId root)
-{
-    const Vec3 z = Vec3(ctx.guideWorldMatrix(root)[2]);
-    return glm::length(z) > 1e-9 ? glm::normalize(z) : Vec3(0.0, 0.0, 1.0);
-}
+Vec3 rootNormal(const BuildContext& ctx, JointId root) { return kit::guideAxis(ctx, root, 2, Vec3(0.0, 0.0, 1.0)); }
 
 class DigitBuilder final : public TemplateBuilder {
 public:

@@ -15,11 +15,7 @@ using model::RigNodeKind;
 
 // The side axis of a vertical chain: the X axis of its root guide (world X
 // unless the rigger turned the root), so spines and necks never flip.
-Vec3 sideAxis(const BuildContext& ctx, model::JointId root)
-{
-    const Vec3 x = Vec3(ctx.guideWorldMatrix(root)[0]);
-    return glm::length(x) > 1e-9 ? glm::normalize(x) : Vec3(1.0, 0.0, 0.0);
-}
+Vec3 sideAxis(const BuildContext& ctx, model::JointId root) { return kit::guideAxis(ctx, root, 0, Vec3(1.0, 0.0, 0.0)); }
 
 class SpineBuilder final : public TemplateBuilder {
 public:
