@@ -116,6 +116,20 @@ std::string BuildContext::addAttribute(model::RigNodeIndex index, const std::str
     return node.id + "." + name;
 }
 
+std::string BuildContext::addEnumAttribute(model::RigNodeIndex index, const std::string& name, int value,
+                                          std::vector<std::string> labels)
+{
+    const double last = labels.empty() ? 0.0 : double(labels.size() - 1);
+    const std::string path = addAttribute(index, name, value, 0.0, last);
+    m_assembly.rig.nodes.at(index).attributes.back().labels = std::move(labels);
+    return path;
+}
+
+model::ChannelSettings& BuildContext::channels(model::RigNodeIndex index)
+{
+    return m_assembly.rig.nodes.at(index).channels;
+}
+
 void BuildContext::addConstraint(model::ConstraintKind kind, const std::string& tag, std::vector<model::RigNodeIndex> driven,
                                  std::vector<model::RigNodeIndex> targets, std::map<std::string, std::string> attributes,
                                  std::map<std::string, double> values)
@@ -188,6 +202,8 @@ model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std:
     node.owner = m_assembly.copyOf(m_instance.id).original;
     node.worldMatrix = mirror * worldMatrix * mirror;
     node.guide = source == model::kNoId ? model::kNoId : m_assembly.authoredJoint(source);
+    if (kind == model::RigNodeKind::Controller)
+        node.channels = model::ChannelSettings::controllerDefaults();
     if (m_assembly.rig.find(node.id)) {
         error("rig node id '" + node.id + "' is created twice");
         return *m_assembly.rig.find(node.id);

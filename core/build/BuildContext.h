@@ -66,6 +66,10 @@ public:
     void setHidden(model::RigNodeIndex index);
     // Adds an animatable attribute and returns its path "<node id>.<name>".
     std::string addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min, double max);
+    // An enum attribute: one label per value 0, 1, 2...
+    std::string addEnumAttribute(model::RigNodeIndex index, const std::string& name, int value, std::vector<std::string> labels);
+    // A controller's transform channels (locks, limits, rotate order).
+    model::ChannelSettings& channels(model::RigNodeIndex index);
     void addConstraint(model::ConstraintKind kind, const std::string& tag, std::vector<model::RigNodeIndex> driven,
                        std::vector<model::RigNodeIndex> targets, std::map<std::string, std::string> attributes = {},
                        std::map<std::string, double> values = {});

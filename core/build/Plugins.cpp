@@ -1,5 +1,6 @@
 // Built-in generator plugins: cross-cutting work that needs the whole rig.
 #include "build/RigAssembly.h"
+#include "eval/RigProgram.h"
 
 #include <cctype>
 #include <map>
@@ -80,6 +81,37 @@ private:
     }
 };
 
+// Seed 004's cleanup, the part a rig model needs: FK chains compensate the
+// parent segment's scale (scaling the upper arm control lengthens the upper arm,
+// the forearm keeps its size and follows the elbow).
+class SegmentScalePlugin final : public GeneratorPlugin {
+public:
+    const char* name() const override { return "segment scale"; }
+    void finalize(RigAssembly& a) const override
+    {
+        for (auto& node : a.rig.nodes) {
+            if (node.parent == model::kNoNode || node.id.find("::roots.fk.") == std::string::npos)
+                continue;
+            const auto& parent = a.rig.nodes[node.parent];
+            node.scaleCompensate = parent.kind == model::RigNodeKind::Controller &&
+                                   parent.id.find("::ctrls.fk.") != std::string::npos;
+        }
+    }
+};
+
+// The rig must evaluate: constraint cycles and dangling attribute paths are
+// build errors, reported here rather than when the animator first moves a control.
+class EvaluationCheckPlugin final : public GeneratorPlugin {
+public:
+    const char* name() const override { return "evaluation check"; }
+    void finalize(RigAssembly& a) const override
+    {
+        const auto program = eval::RigProgram::compile(a.rig);
+        for (const Diagnostic& d : program.diagnostics())
+            a.report(d.severity, nullptr, d.message);
+    }
+};
+
 } // namespace
 
 const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
@@ -89,6 +121,8 @@ const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
         list.push_back(std::make_unique<ControllerSetPlugin>());
         list.push_back(std::make_unique<SkinRootPlugin>());
         list.push_back(std::make_unique<NamingCheckPlugin>());
+        list.push_back(std::make_unique<SegmentScalePlugin>());
+        list.push_back(std::make_unique<EvaluationCheckPlugin>());
         return list;
     }();
     return plugins;

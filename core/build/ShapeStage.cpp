@@ -273,7 +273,8 @@ void cloneCurves(RigAssembly& a, const PendingClone& c)
     }
 }
 
-// A mirrored branch copy shows its twin's curves reflected (negative scale in the
+// Pairs every node of a mirrored branch copy with its twin, and a mirrored
+// branch copy shows its twin's curves reflected (negative scale in the
 // controller's space, which is M * p for W' = M W M) and, on a flipped branch,
 // with the hue turned 120 degrees, as Mikan does.
 void mirrorBranchShapes(RigAssembly& a)
@@ -289,12 +290,21 @@ void mirrorBranchShapes(RigAssembly& a)
         auto ownNodes = byInstance.find(r.instance->name);
         if (ownNodes == byInstance.end())
             continue;
+        int plane = -1, reflections = 0;
+        for (int axis = 0; axis < 3; ++axis)
+            if (copy.mirror[axis][axis] < 0.0) { plane = axis; ++reflections; }
         for (model::RigNodeIndex index : ownNodes->second) {
             auto& node = a.rig.nodes[index];
-            if (node.kind != model::RigNodeKind::Controller)
-                continue;
             auto source = a.rig.find(twin + node.id.substr(own.size()));
             if (!source)
+                continue;
+            if (reflections == 1) { // pose mirroring pairs the two sides
+                node.twin = *source;
+                node.mirrorPlane = plane;
+                a.rig.nodes[*source].twin = index;
+                a.rig.nodes[*source].mirrorPlane = plane;
+            }
+            if (node.kind != model::RigNodeKind::Controller)
                 continue;
             const model::RigNode& from = a.rig.nodes[*source];
             node.shape = from.shape;

@@ -25,6 +25,19 @@ std::string vec3Text(const Vec3& v)
     return formatValue(Value(v));
 }
 
+// pose: {"arm.L::ctrls.fk.0": {rz: 30}, ...}: the rigger's test pose.
+void readPose(YamlReader& r, const YAML::Node& node, model::PoseValues& pose)
+{
+    if (node.IsNull() || !r.expectMap(node, "pose")) return;
+    for (const auto& entry : node) {
+        const std::string id = entry.first.Scalar();
+        if (!r.expectMap(entry.second, "pose of '" + id + "'")) continue;
+        for (const auto& channel : entry.second)
+            if (auto value = r.number(channel.second, "pose channel '" + id + "." + channel.first.Scalar() + "'"))
+                pose[id][channel.first.Scalar()] = *value;
+    }
+}
+
 void readJoint(YamlReader& r, const YAML::Node& node, TemplateInstance& instance, bool& ok)
 {
     const std::string what = "joint of instance '" + instance.name + "'";
@@ -177,6 +190,7 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
         if (key == kFormatKey) continue;
         if (key == "name") { if (auto s = r.string(kv.second, "name")) doc.name = *s; }
         else if (key == "naming") readNaming(r, kv.second, doc.naming);
+        else if (key == "pose") readPose(r, kv.second, doc.pose);
         else if (key == "instances") {
             if (kv.second.IsNull()) continue;
             if (!r.expectSequence(kv.second, "instances")) continue;
@@ -262,6 +276,18 @@ std::string writeGuideText(const GuideDocument& doc)
                 for (std::size_t k = 0; k < j.tags.size(); ++k)
                     out << (k ? ", " : "") << quoteIfNeeded(j.tags[k]);
                 out << "]";
+            }
+            out << "}\n";
+        }
+    }
+    if (!doc.pose.empty()) {
+        out << "pose:\n";
+        for (const auto& [id, channels] : doc.pose) {
+            out << "  " << quoteIfNeeded(id) << ": {";
+            bool first = true;
+            for (const auto& [channel, value] : channels) {
+                out << (first ? "" : ", ") << quoteIfNeeded(channel) << ": " << formatNumber(value);
+                first = false;
             }
             out << "}\n";
         }

@@ -21,6 +21,19 @@ std::string fixed(double v)
     return text;
 }
 
+std::string channelsText(const model::ChannelSettings& c)
+{
+    std::string locked, limits;
+    for (int i = 0; i < model::ChannelSettings::kCount; ++i) {
+        if (c.isLocked(i))
+            locked += std::string(locked.empty() ? "" : ", ") + model::channelName(i);
+        if (c.isLimited(i))
+            limits += std::string(limits.empty() ? "" : ", ") + model::channelName(i) + ": [" + fixed(c.minimum[i]) + ", " +
+                      fixed(c.maximum[i]) + "]";
+    }
+    return std::string("{order: ") + model::rotateOrderName(c.rotateOrder) + ", locked: [" + locked + "], limits: {" + limits + "}}";
+}
+
 std::string list(std::initializer_list<double> values)
 {
     std::string out = "[";
@@ -73,8 +86,17 @@ std::string writeRigDump(const model::Rig& rig)
         for (std::size_t i = 0; i < n.attributes.size(); ++i) {
             const auto& a = n.attributes[i];
             out << (i == 0 ? "    attributes:\n" : "") << "      - {name: " << quoteIfNeeded(a.name) << ", value: " << fixed(a.value)
-                << ", min: " << fixed(a.min) << ", max: " << fixed(a.max) << "}\n";
+                << ", min: " << fixed(a.min) << ", max: " << fixed(a.max);
+            for (std::size_t l = 0; l < a.labels.size(); ++l)
+                out << (l == 0 ? ", labels: [" : ", ") << quoteIfNeeded(a.labels[l]) << (l + 1 == a.labels.size() ? "]" : "");
+            out << "}\n";
         }
+        if (n.kind == model::RigNodeKind::Controller && n.channels != model::ChannelSettings::controllerDefaults())
+            out << "    channels: " << channelsText(n.channels) << "\n";
+        if (n.scaleCompensate)
+            out << "    scale_compensate: true\n";
+        if (n.twin != model::kNoNode)
+            out << "    twin: " << quoteIfNeeded(rig.nodes[n.twin].id) << "\n";
         if (!n.shape.empty()) {
             out << "    shape: " << quoteIfNeeded(n.shape) << "\n";
             out << "    curves:\n";

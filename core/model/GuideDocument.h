@@ -22,6 +22,11 @@ using InstanceId = std::uint32_t;
 using JointId = std::uint32_t;
 constexpr std::uint32_t kNoId = 0;
 
+// The rigger's test pose of the built rig: node id -> channel name -> value,
+// only values that differ from the defaults. Ids are stable across rebuilds, so
+// the pose survives them; values of nodes a rebuild no longer makes stay unused.
+using PoseValues = std::map<std::string, std::map<std::string, double>>;
+
 struct GuideJoint {
     JointId id = kNoId;
     JointId parent = kNoId;          // kNoId for the instance root
@@ -81,6 +86,7 @@ public:
 
     std::string name;                // asset name
     NamingRules naming;              // how rig nodes are named (preset "mikan" unless the file says)
+    PoseValues pose;                 // edited through rs::edit::SetPose
     bool operator==(const GuideDocument&) const = default;
 
 private:

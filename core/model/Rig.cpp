@@ -26,8 +26,51 @@ const char* constraintKindName(ConstraintKind kind)
     case ConstraintKind::Spline: return "spline";
     case ConstraintKind::Space: return "space";
     case ConstraintKind::Drive: return "drive";
+    case ConstraintKind::Aim: return "aim";
+    case ConstraintKind::Scale: return "scale";
     }
     return "parent";
+}
+
+namespace {
+constexpr const char* kRotateOrders[] = {"xyz", "yzx", "zxy", "xzy", "yxz", "zyx"};
+constexpr const char* kChannels[] = {"tx", "ty", "tz", "rx", "ry", "rz", "sx", "sy", "sz"};
+} // namespace
+
+const char* rotateOrderName(RotateOrder order) { return kRotateOrders[static_cast<int>(order)]; }
+
+std::optional<RotateOrder> parseRotateOrder(const std::string& name)
+{
+    for (int i = 0; i < 6; ++i)
+        if (name == kRotateOrders[i])
+            return static_cast<RotateOrder>(i);
+    return std::nullopt;
+}
+
+const char* channelName(int channel)
+{
+    return channel >= 0 && channel < ChannelSettings::kCount ? kChannels[channel] : "?";
+}
+
+ChannelSettings ChannelSettings::controllerDefaults()
+{
+    ChannelSettings c;
+    for (int axis = 6; axis < 9; ++axis)
+        c.limit(axis, 0.01, 100.0);
+    return c;
+}
+
+void ChannelSettings::lock(int first, int count)
+{
+    for (int i = first; i < first + count; ++i)
+        locked = static_cast<std::uint16_t>(locked | (1u << i));
+}
+
+void ChannelSettings::limit(int channel, double low, double high)
+{
+    limited = static_cast<std::uint16_t>(limited | (1u << channel));
+    minimum[channel] = low;
+    maximum[channel] = high;
 }
 
 const RigAttribute* RigNode::attribute(const std::string& attributeName) const

@@ -8,6 +8,7 @@
 #include "base/Math.h"
 #include "model/GuideDocument.h"
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -31,12 +32,44 @@ struct ControllerCurve {
 
 // An animatable custom attribute of a node: `ik_blend` on a limb's switch
 // controller, `roll` on a foot. Value, min and max are in the attribute's unit.
+// An enum attribute (`space`) has one label per integer value from min to max.
+// Attributes on nodes other than controllers are locked for animators
+// (`post_scale` is set by the rigger, not animated).
 struct RigAttribute {
     std::string name;
-    double value = 0.0;
+    double value = 0.0;                 // the default
     double min = 0.0;
     double max = 1.0;
+    std::vector<std::string> labels;    // enum labels; empty for a number
 };
+
+// Rotate orders as Maya names them: the first letter is applied first
+// ("xyz": R = Rz * Ry * Rx for column vectors).
+enum class RotateOrder : std::uint8_t { Xyz, Yzx, Zxy, Xzy, Yxz, Zyx };
+const char* rotateOrderName(RotateOrder order);
+std::optional<RotateOrder> parseRotateOrder(const std::string& name);
+
+// The transform channels of a controller, in the controller's rest frame:
+// translate x y z (metres), rotate x y z (degrees), scale x y z. Channel index
+// i: 0-2 translate, 3-5 rotate, 6-8 scale. Defaults are 0 and scale 1.
+struct ChannelSettings {
+    static constexpr int kCount = 9;
+    RotateOrder rotateOrder = RotateOrder::Xyz;
+    std::uint16_t locked = 0;           // bit i: channel i cannot be animated
+    std::uint16_t limited = 0;          // bit i: channel i is clamped to [minimum[i], maximum[i]]
+    std::array<double, kCount> minimum{};
+    std::array<double, kCount> maximum{};
+
+    // What a new controller gets: every channel free, scale kept in [0.01, 100]
+    // (a zero or negative scale would collapse or turn the rig inside out).
+    static ChannelSettings controllerDefaults();
+    bool isLocked(int channel) const { return (locked >> channel) & 1u; }
+    bool isLimited(int channel) const { return (limited >> channel) & 1u; }
+    void lock(int first, int count = 1);
+    void limit(int channel, double low, double high);
+    bool operator==(const ChannelSettings&) const = default;
+};
+const char* channelName(int channel); // "tx" ... "sz"
 
 struct RigNode {
     std::string id;                    // unique: "<instance>::<tag>"
@@ -52,6 +85,15 @@ struct RigNode {
     std::vector<RigAttribute> attributes;
     JointId guide = kNoId;             // authored guide joint the node derives from (kNoId: none)
     bool hidden = false;               // setup nodes the animator never sees
+    ChannelSettings channels;          // controllers only: locks, limits and rotate order
+    // Segment scale compensation: the node ignores its parent's channel scale
+    // (an FK child keeps its size when the parent control is scaled; its
+    // position still follows the scaled parent).
+    bool scaleCompensate = false;
+    // The node's mirror image on the other branch of an L/R pair (rest world
+    // matrices are exact reflections), kNoNode on centre nodes.
+    RigNodeIndex twin = kNoNode;
+    int mirrorPlane = -1;              // reflection plane with the twin: 0 x, 1 y, 2 z; -1 none
 
     const RigAttribute* attribute(const std::string& attributeName) const;
 
@@ -79,7 +121,15 @@ enum class ConstraintKind {
              //   mode 0: factor * clamp(value, low, high)
              //   mode 1: factor * clamp(value, 0, break)     (ball roll; "break" attribute)
              //   mode 2: factor * max(value - break, 0)      (toe roll after the break)
+             // or, with value `channel` 1, scales it uniformly by factor * clamp(value, low, high).
+    Aim,     // driven's `aim` axis (0 x, 1 y, 2 z) points at targets[0]; its `up` axis towards
+             // targets[1] when given, else world Y; rest offset kept
+    Scale,   // driven's scale follows the targets' (weighted), rest ratio kept
 };
+// Settings every kind of point/orient/parent/aim/scale constraint understands:
+// values "weight" (two targets: the share of targets[1], default 0.5) or
+// "weight.<i>" per target (default 1, normalised); "offset" 0 snaps to the
+// targets instead of keeping the rest offset (default 1).
 const char* constraintKindName(ConstraintKind kind);
 
 struct RigConstraint {

@@ -183,6 +183,8 @@ void LimbBuilder::generate(BuildContext& ctx) const
     Mat4 switchFrame = frames[k - 1];
     switchFrame[3] = Vec4(g.points[k - 1] - poleDirection * 0.12, 1.0);
     const auto settings = kit::addControl(ctx, "switch", "switch", {}, limbGroup, switchFrame, g.limb[k - 1]).ctrl;
+    if (ctx.node(settings).kind == model::RigNodeKind::Controller)
+        ctx.channels(settings).lock(0, model::ChannelSettings::kCount); // a settings holder: custom channels only
     const std::string weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
     const std::string stretch = ctx.addAttribute(settings, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
     const std::string soft = ctx.addAttribute(settings, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
@@ -195,6 +197,8 @@ void LimbBuilder::generate(BuildContext& ctx) const
         chainLength += glm::length(g.points[i] - g.points[i - 1]);
     const Vec3 polePosition = g.points[1] + poleDirection * std::max(chainLength * 0.75, 0.05);
     const auto poleCtrl = kit::addControl(ctx, "pole", "pole", {}, world, kit::uprightFrame(polePosition), g.limb[1]).ctrl;
+    if (ctx.node(poleCtrl).kind == model::RigNodeKind::Controller)
+        ctx.channels(poleCtrl).lock(3, 6); // only its position matters
     RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
     if (legLike())
         buildReverseFoot(ctx, g, ikCtrl, normal, effector, toeTap);

@@ -155,7 +155,8 @@ public:
                 index = static_cast<double>(i);
             targets.push_back(target);
         }
-        const std::string space = ctx.addAttribute(*headCtrl, "space", index, 0.0, double(kHeadSpaces.size() - 1));
+        const std::string space = ctx.addEnumAttribute(*headCtrl, "space", int(index),
+                                                       std::vector<std::string>(kHeadSpaces.begin(), kHeadSpaces.end()));
         ctx.addConstraint(ConstraintKind::Space, "cns.head_space", {*group}, targets, {{"space", space}}, {{"orient_only", 1.0}});
     }
 };

@@ -60,7 +60,11 @@ public:
         if (ctx.optionBool("do_scale"))
             top = control("scale", top, worldFrame, world);
         const auto post = ctx.createNode(RigNodeKind::Group, "grps.post", ctx.nodeName(NameRole::Group, "post"), top, worldFrame);
-        ctx.addAttribute(post, "post_scale", 1.0, 0.0001, 1000.0);
+        // Seed 004's post transform: the rigger's overall scale of the character,
+        // set once (not animated) and applied below the animators' controls.
+        const std::string postScale = ctx.addAttribute(post, "post_scale", 1.0, 0.0001, 1000.0);
+        ctx.addConstraint(model::ConstraintKind::Drive, "cns.post_scale", {post}, {}, {{"value", postScale}},
+                          {{"channel", 1.0}, {"factor", 1.0}, {"low", 0.0001}, {"high", 1000.0}});
         model::RigNodeIndex anchor = post;
         if (ctx.optionBool("do_fly"))
             anchor = control("fly", post, rootFrame, root);

@@ -1,0 +1,174 @@
+#include "eval/Channels.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rs::eval {
+
+namespace {
+
+// Axis sequence of each rotate order, first applied first.
+constexpr int kOrderAxes[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+
+Mat3 axisRotation(int axis, double radians)
+{
+    const double c = std::cos(radians), s = std::sin(radians);
+    Mat3 m(1.0);
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    m[a][a] = c; // column a, row a
+    m[a][b] = s;
+    m[b][a] = -s;
+    m[b][b] = c;
+    return m;
+}
+
+} // namespace
+
+ChannelLayout::ChannelLayout(const model::Rig& rig)
+    : m_transform(rig.nodes.size(), -1), m_first(rig.nodes.size(), 0), m_count(rig.nodes.size(), 0)
+{
+    for (model::RigNodeIndex n = 0; n < rig.nodes.size(); ++n) {
+        const model::RigNode& node = rig.nodes[n];
+        m_first[n] = int(m_channels.size());
+        const bool animatable = node.kind == model::RigNodeKind::Controller && !node.hidden;
+        if (node.kind == model::RigNodeKind::Controller) {
+            m_transform[n] = int(m_channels.size());
+            for (int i = 0; i < model::ChannelSettings::kCount; ++i) {
+                Channel c;
+                c.node = n;
+                c.name = model::channelName(i);
+                c.transform = i;
+                c.defaultValue = i >= 6 ? 1.0 : 0.0;
+                c.limited = node.channels.isLimited(i);
+                c.min = node.channels.minimum[i];
+                c.max = node.channels.maximum[i];
+                c.locked = !animatable || node.channels.isLocked(i);
+                m_channels.push_back(std::move(c));
+            }
+        }
+        for (const auto& attribute : node.attributes) {
+            Channel c;
+            c.node = n;
+            c.name = attribute.name;
+            c.defaultValue = attribute.value;
+            c.limited = true;
+            c.min = attribute.min;
+            c.max = attribute.max;
+            c.locked = !animatable;
+            c.labels = &attribute.labels;
+            m_channels.push_back(std::move(c));
+        }
+        m_count[n] = int(m_channels.size()) - m_first[n];
+    }
+}
+
+std::optional<int> ChannelLayout::find(model::RigNodeIndex node, const std::string& name) const
+{
+    if (node >= m_first.size())
+        return std::nullopt;
+    for (int i = m_first[node]; i < m_first[node] + m_count[node]; ++i)
+        if (m_channels[i].name == name)
+            return i;
+    return std::nullopt;
+}
+
+std::optional<int> ChannelLayout::findPath(const model::Rig& rig, const std::string& path) const
+{
+    const auto dot = path.rfind('.');
+    if (dot == std::string::npos)
+        return std::nullopt;
+    const auto node = rig.find(path.substr(0, dot));
+    if (!node)
+        return std::nullopt;
+    return find(*node, path.substr(dot + 1));
+}
+
+Pose ChannelLayout::defaults() const
+{
+    Pose pose(m_channels.size());
+    for (std::size_t i = 0; i < m_channels.size(); ++i)
+        pose[i] = m_channels[i].defaultValue;
+    return pose;
+}
+
+double ChannelLayout::clamp(int channel, double value) const
+{
+    const Channel& c = m_channels[channel];
+    if (c.isEnum())
+        value = std::round(value);
+    return c.limited ? std::clamp(value, c.min, c.max) : value;
+}
+
+Mat3 eulerRotation(const Vec3& degrees, model::RotateOrder order)
+{
+    const int* axes = kOrderAxes[static_cast<int>(order)];
+    Mat3 r = axisRotation(axes[0], glm::radians(degrees[axes[0]]));
+    r = axisRotation(axes[1], glm::radians(degrees[axes[1]])) * r;
+    return axisRotation(axes[2], glm::radians(degrees[axes[2]])) * r;
+}
+
+Vec3 eulerDegrees(const Mat3& rotation, model::RotateOrder order)
+{
+    // R = Rk(c) Rj(b) Ri(a) with (i, j, k) the order; sign +1 for the cyclic orders.
+    const int* axes = kOrderAxes[static_cast<int>(order)];
+    const int i = axes[0], j = axes[1], k = axes[2];
+    const double sign = (j == (i + 1) % 3) ? 1.0 : -1.0;
+    auto at = [&](int row, int column) { return rotation[column][row]; };
+    Vec3 out(0.0);
+    const double sinB = std::clamp(-sign * at(k, i), -1.0, 1.0);
+    const double b = std::asin(sinB);
+    double a, c;
+    if (std::abs(sinB) < 1.0 - 1e-12) {
+        a = std::atan2(sign * at(k, j), at(k, k));
+        c = std::atan2(sign * at(j, i), at(i, i));
+    } else { // gimbal lock: only a - c (or a + c) is defined; put it all in a
+        a = std::atan2(-sign * at(j, k), at(j, j));
+        c = 0.0;
+    }
+    out[i] = glm::degrees(a);
+    out[j] = glm::degrees(b);
+    out[k] = glm::degrees(c);
+    return out;
+}
+
+Mat4 channelMatrix(const Pose& pose, int first, model::RotateOrder order)
+{
+    const double* v = pose.data() + first;
+    const Mat3 r = eulerRotation({v[3], v[4], v[5]}, order);
+    Mat4 m(Mat3(r[0] * v[6], r[1] * v[7], r[2] * v[8]));
+    m[3] = Vec4(v[0], v[1], v[2], 1.0);
+    return m;
+}
+
+Pose poseFromValues(const model::Rig& rig, const ChannelLayout& layout, const model::PoseValues& values)
+{
+    Pose pose = layout.defaults();
+    for (const auto& [id, channels] : values) {
+        const auto node = rig.find(id);
+        if (!node)
+            continue;
+        for (const auto& [name, value] : channels)
+            if (auto index = layout.find(*node, name); index && !layout[*index].locked)
+                pose[*index] = layout.clamp(*index, value);
+    }
+    return pose;
+}
+
+model::PoseValues valuesFromPose(const model::Rig& rig, const ChannelLayout& layout, const Pose& pose,
+                                 model::PoseValues values)
+{
+    for (std::size_t i = 0; i < layout.size(); ++i) {
+        const Channel& c = layout[i];
+        const std::string& id = rig.nodes[c.node].id;
+        if (std::abs(pose[i] - c.defaultValue) > 1e-12) {
+            values[id][c.name] = pose[i];
+        } else if (auto it = values.find(id); it != values.end()) {
+            it->second.erase(c.name);
+            if (it->second.empty())
+                values.erase(it);
+        }
+    }
+    return values;
+}
+
+} // namespace rs::eval

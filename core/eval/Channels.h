@@ -1,0 +1,72 @@
+#pragma once
+// The animatable channels of a built rig, laid out flat so a pose is one
+// std::vector<double>: every controller's nine transform channels (tx ty tz,
+// rx ry rz in degrees, sx sy sz, in the controller's rest frame) followed by
+// its custom channels (the node's attributes: ik_blend, space, roll...).
+// Attributes of other nodes (post_scale) are channels too, locked for
+// animators. Nodes that are not controllers have no transform channels: they
+// are locked by construction (seed 004's cleanup).
+#include "model/GuideDocument.h"
+#include "model/Rig.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::eval {
+
+using Pose = std::vector<double>;
+
+struct Channel {
+    model::RigNodeIndex node = model::kNoNode;
+    std::string name;               // "tx".."sz" or the attribute name
+    int transform = -1;             // 0..8 for a transform channel, -1 for a custom one
+    double defaultValue = 0.0;
+    double min = 0.0, max = 0.0;    // meaningful when `limited`
+    bool limited = false;
+    bool locked = false;            // animators cannot change it (tools keep it too)
+    const std::vector<std::string>* labels = nullptr; // enum labels (points into the rig)
+    bool isEnum() const { return labels && !labels->empty(); }
+};
+
+class ChannelLayout {
+public:
+    ChannelLayout() = default;
+    explicit ChannelLayout(const model::Rig& rig);
+
+    const std::vector<Channel>& channels() const { return m_channels; }
+    std::size_t size() const { return m_channels.size(); }
+    const Channel& operator[](std::size_t i) const { return m_channels[i]; }
+    // Index of a node's `tx` channel, -1 when the node has no transform channels.
+    int transformOf(model::RigNodeIndex node) const { return m_transform[node]; }
+    // All channels of a node: [first, first + count).
+    int firstOf(model::RigNodeIndex node) const { return m_first[node]; }
+    int countOf(model::RigNodeIndex node) const { return m_count[node]; }
+    std::optional<int> find(model::RigNodeIndex node, const std::string& name) const;
+    // "<node id>.<attribute>" as the rig's constraints write it.
+    std::optional<int> findPath(const model::Rig& rig, const std::string& path) const;
+
+    Pose defaults() const;
+    double clamp(int channel, double value) const;
+
+private:
+    std::vector<Channel> m_channels;
+    std::vector<int> m_transform, m_first, m_count;
+};
+
+// Rotation of Euler angles in degrees applied in `order` (first letter first).
+Mat3 eulerRotation(const Vec3& degrees, model::RotateOrder order);
+// The Euler angles (degrees) of a rotation for `order`; the inverse of eulerRotation.
+Vec3 eulerDegrees(const Mat3& rotation, model::RotateOrder order);
+// translate * rotate * scale of the nine transform channels starting at `first`.
+Mat4 channelMatrix(const Pose& pose, int first, model::RotateOrder order);
+
+// The document keeps the rigger's test pose by node id and channel name, only
+// where it differs from the default, so it survives rebuilds.
+Pose poseFromValues(const model::Rig& rig, const ChannelLayout& layout, const model::PoseValues& values);
+// `values` with every channel of `pose` written in (defaults erased); entries
+// for nodes this rig does not have are kept.
+model::PoseValues valuesFromPose(const model::Rig& rig, const ChannelLayout& layout, const Pose& pose,
+                                 model::PoseValues values = {});
+
+} // namespace rs::eval

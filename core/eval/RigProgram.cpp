@@ -1,0 +1,231 @@
+#include "eval/RigProgram.h"
+
+#include "eval/Solvers.h"
+
+#include <deque>
+
+namespace rs::eval {
+
+namespace {
+
+Affine channelAffine(const Pose& pose, int first, model::RotateOrder order)
+{
+    const double* v = pose.data() + first;
+    Mat3 r(1.0);
+    if (v[3] != 0.0 || v[4] != 0.0 || v[5] != 0.0) // most controls are not rotated: skip the trigonometry
+        r = eulerRotation({v[3], v[4], v[5]}, order);
+    return {Mat3(r[0] * v[6], r[1] * v[7], r[2] * v[8]), Vec3(v[0], v[1], v[2])};
+}
+
+std::string attributeError(const model::RigConstraint& c, const std::string& role, const std::string& path)
+{
+    return "constraint '" + c.id + "': " + role + " attribute '" + path + "' is not a channel of the rig";
+}
+
+} // namespace
+
+RigProgram::RigProgram() = default;
+RigProgram::RigProgram(RigProgram&&) noexcept = default;
+RigProgram& RigProgram::operator=(RigProgram&&) noexcept = default;
+RigProgram::~RigProgram() = default;
+
+Result<RigProgram> RigProgram::compile(const model::Rig& rig)
+{
+    RigProgram p;
+    Diagnostics diagnostics;
+    p.m_channels = ChannelLayout(rig);
+    const std::size_t n = rig.nodes.size();
+    std::vector<Affine> rest(n);
+    p.m_nodes.resize(n);
+    for (model::RigNodeIndex i = 0; i < n; ++i) {
+        const model::RigNode& node = rig.nodes[i];
+        NodeStep& s = p.m_nodes[i];
+        rest[i] = Affine::fromMatrix(node.worldMatrix);
+        s.parent = node.parent;
+        s.restWorld = rest[i];
+        s.restLocal = node.parent == model::kNoNode ? rest[i] : rest[node.parent].inverse() * rest[i];
+        s.channels = p.m_channels.transformOf(i);
+        s.order = node.channels.rotateOrder;
+        s.scaleCompensate = node.scaleCompensate && node.parent != model::kNoNode;
+        if (s.scaleCompensate)
+            s.parentChannels = p.m_channels.transformOf(node.parent);
+    }
+
+    // Constraints: resolve attribute paths, then the rest data of each solver.
+    for (const model::RigConstraint& rc : rig.constraints) {
+        CompiledConstraint c;
+        c.kind = rc.kind;
+        c.driven = rc.driven;
+        c.targets = rc.targets;
+        bool ok = !c.driven.empty();
+        if (!ok)
+            diagnostics.push_back(makeError({}, "constraint '" + rc.id + "' drives no node"));
+        for (const auto& [role, path] : rc.attributes) {
+            const auto channel = p.m_channels.findPath(rig, path);
+            if (!channel) {
+                diagnostics.push_back(makeError({}, attributeError(rc, role, path)));
+                ok = false;
+                continue;
+            }
+            int* slot = role == "weight" ? &c.weightChannel : role == "stretch" ? &c.stretchChannel
+                      : role == "soft"   ? &c.softChannel   : role == "value"   ? &c.valueChannel
+                      : role == "break"  ? &c.breakChannel  : role == "space"   ? &c.spaceChannel : nullptr;
+            if (slot) *slot = *channel;
+        }
+        auto value = [&](const char* key, double fallback) {
+            auto it = rc.values.find(key);
+            return it == rc.values.end() ? fallback : it->second;
+        };
+        c.axis = value("axis", 0.0);
+        c.mode = value("mode", 0.0);
+        c.factor = value("factor", 1.0);
+        c.low = value("low", -1e300);
+        c.high = value("high", 1e300);
+        c.fraction = value("fraction", 0.0);
+        c.orientOnly = value("orient_only", 0.0) != 0.0;
+        c.scaleDrive = value("channel", 0.0) == 1.0;
+        c.aimAxis = int(value("aim", 0.0));
+        c.upAxis = int(value("up", 1.0));
+        const std::size_t t = c.targets.size();
+        c.weights.assign(t, 1.0);
+        if (t == 2 && rc.values.count("weight")) {
+            c.weights[1] = value("weight", 0.5);
+            c.weights[0] = 1.0 - c.weights[1];
+        }
+        for (std::size_t k = 0; k < t; ++k)
+            c.weights[k] = value(("weight." + std::to_string(k)).c_str(), c.weights[k]);
+        double total = 0.0;
+        for (double w : c.weights) total += w;
+        for (double& w : c.weights) w = total > 0.0 ? w / total : 1.0 / double(t);
+        const bool keepOffset = value("offset", 1.0) != 0.0;
+        for (std::size_t k = 0; ok && k < t; ++k)
+            c.offsets.push_back(keepOffset ? rest[c.targets[k]].inverse() * rest[c.driven.front()] : Affine{});
+        if (ok) {
+            // A degenerate setup (overlapping guides, already warned about by the
+            // builder) leaves the driven nodes where their parents put them.
+            if (std::string error = prepareConstraint(c, rig, rest); !error.empty()) {
+                diagnostics.push_back(makeWarning({}, "constraint '" + rc.id + "': " + error + "; it is not evaluated"));
+                ok = false;
+            }
+        }
+        if (!ok)
+            c.driven.clear(); // keeps indices aligned with rig.constraints; never run
+        p.m_maxSamples = std::max(p.m_maxSamples, c.kind == model::ConstraintKind::Spline
+                                                      ? std::size_t(c.samplesPerSegment) * c.targets.size() + 1
+                                                      : std::size_t(0));
+        p.m_constraints.push_back(std::move(c));
+    }
+    if (hasErrors(diagnostics))
+        return Result<RigProgram>::failure(diagnostics);
+
+    // Writers of each node, in order: its own placement (unless a chain solver
+    // replaces it), then every constraint that drives it.
+    const std::size_t ops = n + p.m_constraints.size();
+    std::vector<std::vector<std::uint32_t>> writers(n);
+    std::vector<bool> placed(n, true);
+    for (const CompiledConstraint& c : p.m_constraints)
+        if (c.kind == model::ConstraintKind::Ik || c.kind == model::ConstraintKind::Spline)
+            for (std::size_t k = 1; k < c.driven.size(); ++k)
+                if (rig.nodes[c.driven[k]].parent == c.driven[k - 1])
+                    placed[c.driven[k]] = false;
+    for (model::RigNodeIndex i = 0; i < n; ++i)
+        if (placed[i]) writers[i].push_back(i);
+    for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k)
+        for (model::RigNodeIndex d : p.m_constraints[k].driven)
+            writers[d].push_back(std::uint32_t(n + k));
+    std::vector<std::vector<std::uint32_t>> dependents(ops);
+    std::vector<int> pending(ops, 0);
+    auto depend = [&](std::uint32_t op, std::uint32_t on) {
+        dependents[on].push_back(op);
+        ++pending[op];
+    };
+    for (model::RigNodeIndex i = 0; i < n; ++i)
+        if (placed[i] && rig.nodes[i].parent != model::kNoNode && !writers[rig.nodes[i].parent].empty())
+            depend(i, writers[rig.nodes[i].parent].back());
+    for (model::RigNodeIndex i = 0; i < n; ++i)
+        for (std::size_t w = 1; w < writers[i].size(); ++w)
+            depend(writers[i][w], writers[i][w - 1]);
+    for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k) {
+        const CompiledConstraint& c = p.m_constraints[k];
+        if (c.driven.empty())
+            continue;
+        if (!placed[c.driven.front()] && writers[c.driven.front()].front() == n + k) {
+            const auto parent = rig.nodes[c.driven.front()].parent;
+            if (parent != model::kNoNode) depend(n + k, writers[parent].back());
+        }
+        if (c.chainParent != model::kNoNode && !writers[c.chainParent].empty())
+            depend(n + k, writers[c.chainParent].back());
+        for (model::RigNodeIndex target : c.targets)
+            if (!writers[target].empty() && writers[target].back() != n + k)
+                depend(n + k, writers[target].back());
+    }
+    std::deque<std::uint32_t> ready;
+    for (std::uint32_t op = 0; op < ops; ++op)
+        if (pending[op] == 0 && (op >= n ? !p.m_constraints[op - n].driven.empty() : placed[op]))
+            ready.push_back(op);
+    while (!ready.empty()) {
+        const std::uint32_t op = ready.front();
+        ready.pop_front();
+        p.m_steps.push_back({op < n, op < n ? op : std::uint32_t(op - n)});
+        for (std::uint32_t next : dependents[op])
+            if (--pending[next] == 0)
+                ready.push_back(next);
+    }
+    std::size_t expected = 0;
+    for (model::RigNodeIndex i = 0; i < n; ++i) expected += placed[i] ? 1 : 0;
+    for (const auto& c : p.m_constraints) expected += c.driven.empty() ? 0 : 1;
+    if (p.m_steps.size() != expected) {
+        std::string list;
+        int shown = 0;
+        for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k)
+            if (pending[n + k] > 0 && shown++ < 6)
+                list += (list.empty() ? "" : ", ") + rig.constraints[k].id;
+        diagnostics.push_back(makeError({}, "the rig's constraints form a cycle (a node depends on itself through " + list +
+                                                "); the rig cannot be evaluated"));
+        return Result<RigProgram>::failure(diagnostics);
+    }
+    return Result<RigProgram>(std::move(p), std::move(diagnostics));
+}
+
+EvalState RigProgram::makeState() const
+{
+    EvalState state;
+    state.world.resize(m_nodes.size());
+    for (std::size_t i = 0; i < m_nodes.size(); ++i)
+        state.world[i] = m_nodes[i].restWorld;
+    state.arcLengths.resize(m_maxSamples);
+    return state;
+}
+
+void RigProgram::evaluate(const Pose& pose, EvalState& state) const
+{
+    std::vector<Affine>& world = state.world;
+    for (const Step& step : m_steps) {
+        if (!step.isNode) {
+            solveConstraint(m_constraints[step.index], pose, state);
+            continue;
+        }
+        const NodeStep& s = m_nodes[step.index];
+        const Affine local = s.channels >= 0 ? s.restLocal * channelAffine(pose, s.channels, s.order) : s.restLocal;
+        if (s.parent == model::kNoNode) {
+            world[step.index] = local;
+        } else if (s.scaleCompensate && s.parentChannels >= 0) {
+            // The parent's channel scale is the last factor of its world: divide it
+            // out of the orientation, keep it on the position.
+            const Affine& parent = world[s.parent];
+            const double* sp = pose.data() + s.parentChannels + 6;
+            const Mat3 unscaled(parent.linear[0] / sp[0], parent.linear[1] / sp[1], parent.linear[2] / sp[2]);
+            world[step.index] = {unscaled * local.linear, parent.linear * local.translation + parent.translation};
+        } else {
+            world[step.index] = world[s.parent] * local;
+        }
+    }
+}
+
+Affine RigProgram::channelFrame(model::RigNodeIndex node, const Pose&, const EvalState& state) const
+{
+    const NodeStep& s = m_nodes[node];
+    return s.parent == model::kNoNode ? s.restLocal : state.world[s.parent] * s.restLocal;
+}
+
+} // namespace rs::eval

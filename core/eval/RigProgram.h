@@ -1,0 +1,78 @@
+#pragma once
+// The evaluation engine: a built rig compiled into a flat program of steps in
+// dependency order (ozz-style jobs: compile validates once, evaluate runs). A
+// step either places one node (parent world * rest local * channels, with the
+// parent's channel scale removed on segment-scale-compensated nodes) or solves
+// one constraint (model::ConstraintKind documents each kind). Attribute paths
+// and ids are resolved to indices at compile time; evaluate() does no name
+// lookup and no allocation once the state is made.
+//
+// Compile fails with a diagnostic when the constraints form a cycle (a node
+// that, through its targets, depends on itself) or reference channels the rig
+// does not have. A constraint whose rest setup is degenerate (IK joints on one
+// spot) is skipped with a warning. Units: metres, degrees in channels, radians inside.
+#include "base/Result.h"
+#include "eval/Affine.h"
+#include "eval/Channels.h"
+#include "model/Rig.h"
+
+#include <vector>
+
+namespace rs::eval {
+
+struct CompiledConstraint; // RigProgram.cpp / Solvers
+
+// Everything an evaluation writes: one world transform per rig node, plus the
+// scratch the spline solver reuses. Make it with RigProgram::makeState().
+struct EvalState {
+    std::vector<Affine> world;
+    std::vector<double> arcLengths;
+    Mat4 worldMatrix(model::RigNodeIndex node) const { return world[node].matrix(); }
+};
+
+class RigProgram {
+public:
+    RigProgram();
+    RigProgram(RigProgram&&) noexcept;
+    RigProgram& operator=(RigProgram&&) noexcept;
+    ~RigProgram();
+
+    static Result<RigProgram> compile(const model::Rig& rig);
+
+    const ChannelLayout& channels() const { return m_channels; }
+    std::size_t nodeCount() const { return m_nodes.size(); }
+    std::size_t stepCount() const { return m_steps.size(); }
+    EvalState makeState() const;
+    // Evaluates every node's world transform for `pose` (m_channels.size() values).
+    void evaluate(const Pose& pose, EvalState& state) const;
+
+    // What pose tools need to invert a node's placement: the world transform
+    // the node's channels act in (parent world * rest local, compensated), so
+    // that world = frame * channelMatrix.
+    Affine channelFrame(model::RigNodeIndex node, const Pose& pose, const EvalState& state) const;
+    const Affine& restWorld(model::RigNodeIndex node) const { return m_nodes[node].restWorld; }
+
+    struct NodeStep {
+        model::RigNodeIndex parent = model::kNoNode;
+        Affine restLocal;
+        Affine restWorld;
+        int channels = -1;          // first transform channel, -1 when none
+        int parentChannels = -1;    // the parent's, for segment scale compensation
+        bool scaleCompensate = false;
+        model::RotateOrder order = model::RotateOrder::Xyz;
+    };
+
+private:
+    struct Step {
+        bool isNode = true;
+        std::uint32_t index = 0;
+    };
+
+    ChannelLayout m_channels;
+    std::vector<NodeStep> m_nodes;
+    std::vector<CompiledConstraint> m_constraints;
+    std::vector<Step> m_steps;
+    std::size_t m_maxSamples = 0;
+};
+
+} // namespace rs::eval

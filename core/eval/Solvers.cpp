@@ -1,0 +1,210 @@
+// The constraint solvers. Every solver reproduces the rest pose exactly at the
+// default channels: offsets, bone frames and curve parameters are measured on
+// the rest pose at compile time and re-applied at evaluation.
+#include "eval/Solvers.h"
+
+#include "eval/IkSolver.h"
+#include "eval/RigProgram.h"
+#include "eval/SplineCurve.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace rs::eval {
+
+namespace {
+
+using model::ConstraintKind;
+
+Vec3 axisVector(int axis) { Vec3 v(0.0); v[std::clamp(axis, 0, 2)] = 1.0; return v; }
+
+// Weighted average of rotations (normalised linear blend, signs aligned to the first).
+Quat averageRotation(const Quat* rotations, const double* weights, std::size_t count)
+{
+    if (count == 2)
+        return glm::slerp(rotations[0], rotations[1], weights[1]);
+    Quat sum(0, 0, 0, 0);
+    for (std::size_t k = 0; k < count; ++k) {
+        const Quat q = glm::dot(rotations[k], rotations[0]) < 0.0 ? -rotations[k] : rotations[k];
+        sum = sum + q * weights[k];
+    }
+    return glm::normalize(sum);
+}
+
+constexpr std::size_t kMaxTargets = 16;
+
+void solveBlendLike(const CompiledConstraint& c, std::vector<Affine>& world, bool position, bool rotation, bool scale)
+{
+    const std::size_t n = std::min(c.targets.size(), kMaxTargets);
+    std::array<Quat, kMaxTargets> rotations;
+    Vec3 translation(0.0), scales(0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Affine placed = world[c.targets[k]] * c.offsets[k];
+        rotations[k] = rotationOf(placed);
+        translation += placed.translation * c.weights[k];
+        scales += placed.scale() * c.weights[k];
+    }
+    Affine& driven = world[c.driven.front()];
+    const Mat3 r = rotation ? glm::mat3_cast(averageRotation(rotations.data(), c.weights.data(), n)) : driven.rotation();
+    driven = compose(r, scale ? scales : driven.scale(), position ? translation : driven.translation);
+}
+
+void solveFkIkBlend(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
+{
+    const double w = c.weightChannel >= 0 ? std::clamp(pose[c.weightChannel], 0.0, 1.0) : 0.5;
+    const Affine a = world[c.targets[0]] * c.offsets[0];
+    const Affine b = world[c.targets[1]] * c.offsets[1];
+    if (w <= 0.0) { world[c.driven.front()] = a; return; }
+    if (w >= 1.0) { world[c.driven.front()] = b; return; }
+    const Mat3 r = glm::mat3_cast(glm::slerp(rotationOf(a), rotationOf(b), w));
+    world[c.driven.front()] = compose(r, glm::mix(a.scale(), b.scale(), w), glm::mix(a.translation, b.translation, w));
+}
+
+void solveAim(const CompiledConstraint& c, std::vector<Affine>& world)
+{
+    Affine& driven = world[c.driven.front()];
+    const Vec3 origin = driven.translation;
+    const Vec3 aim = world[c.targets[0]].translation - origin;
+    const Vec3 up = c.targets.size() > 1 ? world[c.targets[1]].translation - origin : Vec3(0, 1, 0);
+    if (glm::length(aim) < 1e-12)
+        return;
+    // Frame with the aim axis on `aim` and the up axis towards `up`, then the rest offset.
+    const Vec3 x = glm::normalize(aim);
+    Vec3 y = up - x * glm::dot(up, x);
+    y = glm::length(y) < 1e-12 ? glm::normalize(glm::cross(x, Vec3(0, 0, 1))) : glm::normalize(y);
+    Mat3 frame;
+    frame[c.aimAxis] = x;
+    frame[c.upAxis] = y;
+    const int third = 3 - c.aimAxis - c.upAxis;
+    const bool cyclic = (c.upAxis == (c.aimAxis + 1) % 3);
+    frame[third] = cyclic ? glm::cross(x, y) : glm::cross(y, x);
+    driven = compose(frame * c.offsets[0].linear, driven.scale(), origin);
+}
+
+void solveTwist(const CompiledConstraint& c, std::vector<Affine>& world)
+{
+    const Affine& a = world[c.targets[0]];
+    const Affine& b = world[c.targets[1]];
+    const Quat qa = rotationOf(a);
+    // The change of b relative to a since rest, then its twist about the bone.
+    const Quat delta = glm::inverse(c.restRelative) * (glm::inverse(qa) * rotationOf(b));
+    const double along = glm::dot(Vec3(delta.x, delta.y, delta.z), c.twistAxis);
+    const double angle = 2.0 * std::atan2(along, delta.w);
+    const Mat3 r = glm::mat3_cast(qa * glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
+    Affine& driven = world[c.driven.front()];
+    const Vec3 position = glm::mix(a.translation, b.translation, c.fraction) + a.rotation() * c.restDelta * a.scale().x;
+    driven = compose(r, driven.scale(), position);
+}
+
+void solveSpace(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
+{
+    const int last = int(c.targets.size()) - 1;
+    const int k = c.spaceChannel >= 0 ? std::clamp(int(std::lround(pose[c.spaceChannel])), 0, last) : 0;
+    const Affine placed = world[c.targets[k]] * c.offsets[k];
+    Affine& driven = world[c.driven.front()];
+    driven = c.orientOnly ? compose(placed.rotation(), driven.scale(), driven.translation) : placed;
+}
+
+void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
+{
+    const double v = c.valueChannel >= 0 ? pose[c.valueChannel] : 0.0;
+    const double breakAt = c.breakChannel >= 0 ? pose[c.breakChannel] : 0.0;
+    double amount;
+    if (c.mode == 1.0) amount = c.factor * std::clamp(v, 0.0, std::max(breakAt, 0.0));
+    else if (c.mode == 2.0) amount = c.factor * std::max(v - breakAt, 0.0);
+    else amount = c.factor * std::clamp(v, c.low, c.high);
+    Affine& driven = world[c.driven.front()];
+    if (c.scaleDrive) {
+        driven.linear = driven.linear * amount;
+        return;
+    }
+    if (amount == 0.0)
+        return;
+    driven.linear = driven.linear * glm::mat3_cast(glm::angleAxis(glm::radians(amount), axisVector(int(c.axis))));
+}
+
+} // namespace
+
+Quat rotationOf(const Affine& a) { return glm::normalize(glm::quat_cast(a.rotation())); }
+
+Mat3 frameFromAxes(const Vec3& x, const Vec3& normal)
+{
+    const Vec3 ax = glm::normalize(x);
+    Vec3 z = normal - ax * glm::dot(normal, ax);
+    z = glm::normalize(z);
+    return Mat3(ax, glm::cross(z, ax), z);
+}
+
+std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, const std::vector<Affine>& rest)
+{
+    const std::size_t t = c.targets.size();
+    c.chainParent = rig.nodes[c.driven.front()].parent;
+    if (c.chainParent != model::kNoNode)
+    {
+        c.restParentScale = rest[c.chainParent].scale().x;
+        c.restParentRotation = rest[c.chainParent].rotation();
+    }
+    switch (c.kind) {
+    case ConstraintKind::Parent: case ConstraintKind::Orient: case ConstraintKind::Point: case ConstraintKind::Scale:
+    case ConstraintKind::Space:
+        if (t == 0) return "needs at least one target";
+        if (t > kMaxTargets) return "has more than 16 targets";
+        return {};
+    case ConstraintKind::Blend:
+        return t == 2 ? std::string() : "needs two targets (FK, IK)";
+    case ConstraintKind::Aim: {
+        if (t == 0) return "needs an aim target";
+        if (c.aimAxis == c.upAxis || c.aimAxis < 0 || c.aimAxis > 2 || c.upAxis < 0 || c.upAxis > 2)
+            return "aim and up axes must be two different axes of x, y, z";
+        c.offsets.resize(1);
+        CompiledConstraint probe = c; // the aim frame at rest, to keep the driven's rest orientation
+        std::vector<Affine> world = rest;
+        probe.offsets[0] = Affine{};
+        solveAim(probe, world);
+        c.offsets[0].linear = glm::transpose(world[c.driven.front()].rotation()) * rest[c.driven.front()].rotation();
+        return {};
+    }
+    case ConstraintKind::Twist: {
+        if (t != 2) return "needs two targets (start, end)";
+        const Affine& a = rest[c.targets[0]];
+        const Affine& b = rest[c.targets[1]];
+        const Affine& d = rest[c.driven.front()];
+        c.restRelative = glm::inverse(rotationOf(a)) * rotationOf(b);
+        const Vec3 bone = b.translation - a.translation;
+        if (glm::length(bone) < 1e-9) return "its two targets are at the same place";
+        c.twistAxis = glm::normalize(glm::transpose(a.rotation()) * bone);
+        c.restDelta = glm::transpose(a.rotation()) * (d.translation - glm::mix(a.translation, b.translation, c.fraction)) /
+                      a.scale().x;
+        c.offsets[0].linear = glm::transpose(a.rotation()) * d.rotation();
+        return {};
+    }
+    case ConstraintKind::Drive:
+        return c.valueChannel >= 0 ? std::string() : "needs a value attribute";
+    case ConstraintKind::Ik:
+        return prepareIk(c, rest);
+    case ConstraintKind::Spline:
+        return prepareSpline(c, rest);
+    }
+    return {};
+}
+
+void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& state)
+{
+    std::vector<Affine>& world = state.world;
+    switch (c.kind) {
+    case ConstraintKind::Parent: solveBlendLike(c, world, true, true, true); break;
+    case ConstraintKind::Orient: solveBlendLike(c, world, false, true, false); break;
+    case ConstraintKind::Point: solveBlendLike(c, world, true, false, false); break;
+    case ConstraintKind::Scale: solveBlendLike(c, world, false, false, true); break;
+    case ConstraintKind::Blend: solveFkIkBlend(c, pose, world); break;
+    case ConstraintKind::Aim: solveAim(c, world); break;
+    case ConstraintKind::Twist: solveTwist(c, world); break;
+    case ConstraintKind::Space: solveSpace(c, pose, world); break;
+    case ConstraintKind::Drive: solveDrive(c, pose, world); break;
+    case ConstraintKind::Ik: solveIk(c, pose, world); break;
+    case ConstraintKind::Spline: solveSpline(c, pose, state); break;
+    }
+}
+
+} // namespace rs::eval

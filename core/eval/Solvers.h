@@ -1,0 +1,63 @@
+#pragma once
+// Internal to rs::eval: one constraint compiled for the evaluator (indices,
+// rest offsets and rest lengths precomputed) and the solver of each kind. See
+// model::ConstraintKind for the semantics; RigProgram orders and runs them.
+#include "eval/Affine.h"
+#include "eval/Channels.h"
+#include "model/Rig.h"
+
+#include <string>
+#include <vector>
+
+namespace rs::eval {
+
+struct EvalState;
+
+struct CompiledConstraint {
+    model::ConstraintKind kind = model::ConstraintKind::Parent;
+    std::vector<model::RigNodeIndex> driven, targets;
+    std::vector<double> weights;       // normalised, one per target
+    std::vector<Affine> offsets;       // per target: inverse(target rest) * driven rest
+    int weightChannel = -1, stretchChannel = -1, softChannel = -1, valueChannel = -1, breakChannel = -1,
+        spaceChannel = -1;
+    double axis = 0, mode = 0, factor = 1, low = -1e300, high = 1e300, fraction = 0;
+    bool orientOnly = false, scaleDrive = false;
+    model::RigNodeIndex chainParent = model::kNoNode; // parent of driven[0]
+    double restParentScale = 1.0;
+    Mat3 restParentRotation{1.0};
+
+    // IK: rest positions/rotations of the chain, rest lengths, rest pole and effector.
+    std::vector<Vec3> restPositions;
+    std::vector<Mat3> restRotations;
+    std::vector<double> lengths;
+    Vec3 restPole{0.0};
+    Mat3 restEffectorRotation{1.0};
+    std::vector<Mat3> restBoneFrames;  // per bone: (bone dir, plane normal) frames at rest
+    Vec3 midOffset{0.0};               // 3-segment IK: joint 2 in the rest virtual-bone frame
+
+    // Twist: rest relative rotation of targets[1] to targets[0], twist axis in targets[0]'s frame.
+    Quat restRelative{1, 0, 0, 0};
+    Vec3 twistAxis{1, 0, 0};
+    Vec3 restDelta{0.0};
+
+    // Spline: rest tangents in each control's frame, per-driven curve parameter,
+    // rest arc length and offset from the curve frame.
+    std::vector<Vec3> localTangents;
+    std::vector<double> parameters, restArc;
+    std::vector<Affine> curveOffsets;
+    int samplesPerSegment = 12;
+
+    // Aim: axes and rest offset.
+    int aimAxis = 0, upAxis = 1;
+};
+
+// Fills the rest data of `c` (offsets, lengths, spline parameters) from the rig's
+// rest pose; returns an error message, empty when the constraint is usable.
+std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, const std::vector<Affine>& restWorld);
+void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& state);
+
+// Rotation helpers shared with the pose tools.
+Quat rotationOf(const Affine& a);
+Mat3 frameFromAxes(const Vec3& x, const Vec3& normal); // X along x, Z as close to normal as X allows
+
+} // namespace rs::eval
