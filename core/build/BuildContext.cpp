@@ -142,6 +142,17 @@ void BuildContext::addConstraint(model::ConstraintKind kind, const std::string& 
     c.targets = std::move(targets);
     c.attributes = std::move(attributes);
     c.values = std::move(values);
+    // Builders work in authored space. On a mirrored copy a rotation about a
+    // local axis comes out reversed (M Rk(a) M = Rk(-a) unless k is the mirror
+    // axis), so the drive's factor turns with it and the sides stay mirror images.
+    if (kind == model::ConstraintKind::Drive && c.values["channel"] == 0.0) {
+        const Mat4& mirror = m_assembly.copyOf(m_instance.id).mirror;
+        const int axis = std::clamp(int(c.values["axis"]), 0, 2);
+        const double sign = mirror[(axis + 1) % 3][(axis + 1) % 3] * mirror[(axis + 2) % 3][(axis + 2) % 3];
+        c.values["factor"] = (c.values.count("factor") ? c.values["factor"] : 1.0) * sign;
+    }
+    if (c.values["channel"] == 0.0)
+        c.values.erase("channel");
     for (auto index : c.driven)
         if (index == model::kNoNode) {
             error("constraint '" + c.id + "' has no driven node");

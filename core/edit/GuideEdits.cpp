@@ -60,6 +60,19 @@ private:
     std::string m_from, m_to;
 };
 
+class SetPose final : public Command {
+public:
+    SetPose(model::PoseValues from, model::PoseValues to, std::string what)
+        : m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what)) {}
+    std::string text() const override { return m_what; }
+    void redo(GuideDocument& d) override { d.pose = m_to; }
+    void undo(GuideDocument& d) override { d.pose = m_from; }
+
+private:
+    model::PoseValues m_from, m_to;
+    std::string m_what;
+};
+
 class SetJointTransform final : public Command {
 public:
     SetJointTransform(InstanceId owner, model::JointId joint, Transform from, Transform to)
@@ -178,6 +191,14 @@ Error setOption(History& history, InstanceId id, const std::string& option, cons
     if (before == after)
         return std::nullopt;
     history.push(std::make_unique<SetOption>(id, option, before, after));
+    return std::nullopt;
+}
+
+Error setPose(History& history, model::PoseValues pose, const std::string& what)
+{
+    if (pose == history.document().pose)
+        return "the pose did not change";
+    history.push(std::make_unique<SetPose>(history.document().pose, std::move(pose), what));
     return std::nullopt;
 }
 

@@ -22,6 +22,11 @@ Error setJointTransform(History& history, model::JointId joint, const Transform&
 Error setOption(History& history, model::InstanceId id, const std::string& option, const Value& value,
                 const Value& defaultValue);
 
+// Replaces the document's test pose (one undo step per pose tool or gizmo drag);
+// `what` names the step ("Rotate c_arm1_L", "Mirror pose"). Refused when
+// nothing changes, so no empty step lands on the stack.
+Error setPose(History& history, model::PoseValues pose, const std::string& what);
+
 bool isValidInstanceName(const std::string& name);
 
 } // namespace rs::edit

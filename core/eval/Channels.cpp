@@ -10,16 +10,19 @@ namespace {
 // Axis sequence of each rotate order, first applied first.
 constexpr int kOrderAxes[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
 
-Mat3 axisRotation(int axis, double radians)
+// Left-multiplies `m` by the rotation about `axis`: only two rows change, which
+// is much cheaper than a full matrix product (this runs for every controller).
+void rotateRows(Mat3& m, int axis, double radians)
 {
+    if (radians == 0.0)
+        return;
     const double c = std::cos(radians), s = std::sin(radians);
-    Mat3 m(1.0);
     const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    m[a][a] = c; // column a, row a
-    m[a][b] = s;
-    m[b][a] = -s;
-    m[b][b] = c;
-    return m;
+    for (int column = 0; column < 3; ++column) {
+        const double ra = m[column][a], rb = m[column][b];
+        m[column][a] = c * ra - s * rb;
+        m[column][b] = s * ra + c * rb;
+    }
 }
 
 } // namespace
@@ -102,9 +105,10 @@ double ChannelLayout::clamp(int channel, double value) const
 Mat3 eulerRotation(const Vec3& degrees, model::RotateOrder order)
 {
     const int* axes = kOrderAxes[static_cast<int>(order)];
-    Mat3 r = axisRotation(axes[0], glm::radians(degrees[axes[0]]));
-    r = axisRotation(axes[1], glm::radians(degrees[axes[1]])) * r;
-    return axisRotation(axes[2], glm::radians(degrees[axes[2]])) * r;
+    Mat3 r(1.0);
+    for (int k = 0; k < 3; ++k)
+        rotateRows(r, axes[k], glm::radians(degrees[axes[k]]));
+    return r;
 }
 
 Vec3 eulerDegrees(const Mat3& rotation, model::RotateOrder order)

@@ -79,7 +79,7 @@ void solveIk(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>&
     const double distance = glm::length(target - root);
     Vec3 dir = distance > 1e-12 ? (target - root) / distance : c.restBoneFrames[0][0];
     const double softness = c.softChannel >= 0 ? std::clamp(pose[c.softChannel], 0.0, 1.0) * (a + b) : 0.0;
-    double reach = softReach(distance, a + b, softness);
+    double reach = softness > 0.0 ? softReach(distance, a + b, softness) : std::min(distance, a + b);
     double stretch = 1.0;
     if (c.stretchChannel >= 0 && distance > reach && reach > 1e-12) {
         stretch = 1.0 + std::clamp(pose[c.stretchChannel], 0.0, 1.0) * (distance / reach - 1.0);

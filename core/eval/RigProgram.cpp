@@ -44,6 +44,9 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         s.parent = node.parent;
         s.restWorld = rest[i];
         s.restLocal = node.parent == model::kNoNode ? rest[i] : rest[node.parent].inverse() * rest[i];
+        s.identityLocal = maxAbsDifference(s.restLocal.matrix(), Mat4(1.0)) < 1e-12;
+        if (s.identityLocal)
+            s.restLocal = Affine{};
         s.channels = p.m_channels.transformOf(i);
         s.order = node.channels.rotateOrder;
         s.scaleCompensate = node.scaleCompensate && node.parent != model::kNoNode;
@@ -100,6 +103,8 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         const bool keepOffset = value("offset", 1.0) != 0.0;
         for (std::size_t k = 0; ok && k < t; ++k)
             c.offsets.push_back(keepOffset ? rest[c.targets[k]].inverse() * rest[c.driven.front()] : Affine{});
+        for (const Affine& offset : c.offsets)
+            c.identityOffset.push_back(maxAbsDifference(offset.matrix(), Mat4(1.0)) < 1e-12);
         if (ok) {
             // A degenerate setup (overlapping guides, already warned about by the
             // builder) leaves the driven nodes where their parents put them.
@@ -206,7 +211,13 @@ void RigProgram::evaluate(const Pose& pose, EvalState& state) const
             continue;
         }
         const NodeStep& s = m_nodes[step.index];
-        const Affine local = s.channels >= 0 ? s.restLocal * channelAffine(pose, s.channels, s.order) : s.restLocal;
+        if (s.parent != model::kNoNode && s.identityLocal && s.channels < 0 && !s.scaleCompensate) {
+            world[step.index] = world[s.parent];
+            continue;
+        }
+        const Affine local = s.channels < 0 ? s.restLocal
+                             : s.identityLocal ? channelAffine(pose, s.channels, s.order)
+                                               : s.restLocal * channelAffine(pose, s.channels, s.order);
         if (s.parent == model::kNoNode) {
             world[step.index] = local;
         } else if (s.scaleCompensate && s.parentChannels >= 0) {

@@ -59,6 +59,7 @@ public:
         int channels = -1;          // first transform channel, -1 when none
         int parentChannels = -1;    // the parent's, for segment scale compensation
         bool scaleCompensate = false;
+        bool identityLocal = false;  // at its parent's place (controllers under their offset groups): one product less
         model::RotateOrder order = model::RotateOrder::Xyz;
     };
 

@@ -34,16 +34,23 @@ Quat averageRotation(const Quat* rotations, const double* weights, std::size_t c
 
 constexpr std::size_t kMaxTargets = 16;
 
+// A target's world with the constraint's rest offset applied (most offsets are
+// the identity: FK controls and IK joints sit where the blend joints do).
+Affine placed(const CompiledConstraint& c, const std::vector<Affine>& world, std::size_t k)
+{
+    return c.identityOffset[k] ? world[c.targets[k]] : world[c.targets[k]] * c.offsets[k];
+}
+
 void solveBlendLike(const CompiledConstraint& c, std::vector<Affine>& world, bool position, bool rotation, bool scale)
 {
     const std::size_t n = std::min(c.targets.size(), kMaxTargets);
     std::array<Quat, kMaxTargets> rotations;
     Vec3 translation(0.0), scales(0.0);
     for (std::size_t k = 0; k < n; ++k) {
-        const Affine placed = world[c.targets[k]] * c.offsets[k];
-        rotations[k] = rotationOf(placed);
-        translation += placed.translation * c.weights[k];
-        scales += placed.scale() * c.weights[k];
+        const Affine target = placed(c, world, k);
+        rotations[k] = rotationOf(target);
+        translation += target.translation * c.weights[k];
+        scales += target.scale() * c.weights[k];
     }
     Affine& driven = world[c.driven.front()];
     const Mat3 r = rotation ? glm::mat3_cast(averageRotation(rotations.data(), c.weights.data(), n)) : driven.rotation();
@@ -53,12 +60,19 @@ void solveBlendLike(const CompiledConstraint& c, std::vector<Affine>& world, boo
 void solveFkIkBlend(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
 {
     const double w = c.weightChannel >= 0 ? std::clamp(pose[c.weightChannel], 0.0, 1.0) : 0.5;
-    const Affine a = world[c.targets[0]] * c.offsets[0];
-    const Affine b = world[c.targets[1]] * c.offsets[1];
+    const Affine a = placed(c, world, 0);
+    const Affine b = placed(c, world, 1);
     if (w <= 0.0) { world[c.driven.front()] = a; return; }
     if (w >= 1.0) { world[c.driven.front()] = b; return; }
-    const Mat3 r = glm::mat3_cast(glm::slerp(rotationOf(a), rotationOf(b), w));
-    world[c.driven.front()] = compose(r, glm::mix(a.scale(), b.scale(), w), glm::mix(a.translation, b.translation, w));
+    // Normalised lerp of the two rotations: the same end points and path as a
+    // slerp, without its inverse cosine and sines (the blend runs per limb joint).
+    const Vec3 sa = a.scale(), sb = b.scale();
+    const Quat qa = glm::quat_cast(Mat3(a.linear[0] / sa.x, a.linear[1] / sa.y, a.linear[2] / sa.z));
+    Quat qb = glm::quat_cast(Mat3(b.linear[0] / sb.x, b.linear[1] / sb.y, b.linear[2] / sb.z));
+    if (glm::dot(qa, qb) < 0.0)
+        qb = -qb;
+    const Mat3 r = glm::mat3_cast(glm::normalize(qa * (1.0 - w) + qb * w));
+    world[c.driven.front()] = compose(r, glm::mix(sa, sb, w), glm::mix(a.translation, b.translation, w));
 }
 
 void solveAim(const CompiledConstraint& c, std::vector<Affine>& world)
@@ -86,14 +100,17 @@ void solveTwist(const CompiledConstraint& c, std::vector<Affine>& world)
 {
     const Affine& a = world[c.targets[0]];
     const Affine& b = world[c.targets[1]];
-    const Quat qa = rotationOf(a);
+    const Mat3 ra = a.rotation();
+    const Quat qa = glm::quat_cast(ra);
     // The change of b relative to a since rest, then its twist about the bone.
-    const Quat delta = glm::inverse(c.restRelative) * (glm::inverse(qa) * rotationOf(b));
+    Quat delta = glm::conjugate(c.restRelative) * (glm::conjugate(qa) * rotationOf(b));
+    if (delta.w < 0.0)
+        delta = -delta; // the shorter way round: the twist stays within +-180 degrees
     const double along = glm::dot(Vec3(delta.x, delta.y, delta.z), c.twistAxis);
     const double angle = 2.0 * std::atan2(along, delta.w);
     const Mat3 r = glm::mat3_cast(qa * glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
     Affine& driven = world[c.driven.front()];
-    const Vec3 position = glm::mix(a.translation, b.translation, c.fraction) + a.rotation() * c.restDelta * a.scale().x;
+    const Vec3 position = glm::mix(a.translation, b.translation, c.fraction) + a.linear * c.restDelta;
     driven = compose(r, driven.scale(), position);
 }
 
@@ -101,9 +118,9 @@ void solveSpace(const CompiledConstraint& c, const Pose& pose, std::vector<Affin
 {
     const int last = int(c.targets.size()) - 1;
     const int k = c.spaceChannel >= 0 ? std::clamp(int(std::lround(pose[c.spaceChannel])), 0, last) : 0;
-    const Affine placed = world[c.targets[k]] * c.offsets[k];
+    const Affine target = placed(c, world, std::size_t(k));
     Affine& driven = world[c.driven.front()];
-    driven = c.orientOnly ? compose(placed.rotation(), driven.scale(), driven.translation) : placed;
+    driven = c.orientOnly ? compose(target.rotation(), driven.scale(), driven.translation) : target;
 }
 
 void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
@@ -121,7 +138,12 @@ void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affin
     }
     if (amount == 0.0)
         return;
-    driven.linear = driven.linear * glm::mat3_cast(glm::angleAxis(glm::radians(amount), axisVector(int(c.axis))));
+    // Right-multiplying by a rotation about local axis k mixes the other two columns.
+    const int k = std::clamp(int(c.axis), 0, 2), a = (k + 1) % 3, b = (k + 2) % 3;
+    const double cosine = std::cos(glm::radians(amount)), sine = std::sin(glm::radians(amount));
+    const Vec3 columnA = driven.linear[a], columnB = driven.linear[b];
+    driven.linear[a] = columnA * cosine + columnB * sine;
+    driven.linear[b] = columnB * cosine - columnA * sine;
 }
 
 } // namespace

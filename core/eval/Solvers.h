@@ -18,6 +18,7 @@ struct CompiledConstraint {
     std::vector<model::RigNodeIndex> driven, targets;
     std::vector<double> weights;       // normalised, one per target
     std::vector<Affine> offsets;       // per target: inverse(target rest) * driven rest
+    std::vector<bool> identityOffset;  // per target: the offset is the identity (skipped)
     int weightChannel = -1, stretchChannel = -1, softChannel = -1, valueChannel = -1, breakChannel = -1,
         spaceChannel = -1;
     double axis = 0, mode = 0, factor = 1, low = -1e300, high = 1e300, fraction = 0;

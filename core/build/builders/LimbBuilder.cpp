@@ -299,8 +299,11 @@ void LimbBuilder::buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNod
     const Vec3 bankInt = pivot("bank_int", Vec3(ball.x, ground, ball.z) - side * 0.04);
     const Vec3 bankExt = pivot("bank_ext", Vec3(ball.x, ground, ball.z) + side * 0.04);
 
-    // Pivot frames: X forward, Y up, Z to the side; roll turns about Z, bank about X.
-    auto frameAt = [&](const Vec3& p) { return kit::aimFrame(p, forward, side); };
+    // Pivot frames: X forward, Y up, Z = X x Y; a positive turn about Z lifts the
+    // toes, about X tilts the foot towards Z. Roll lifts the heel (negative about
+    // Z), a negative roll rocks back on the heel; bank rolls onto the outer edge.
+    const Vec3 lateral = glm::normalize(glm::cross(forward, Vec3(0.0, 1.0, 0.0)));
+    auto frameAt = [&](const Vec3& p) { return kit::aimFrame(p, forward, lateral); };
     const std::string roll = ctx.addAttribute(ikCtrl, "roll", 0.0, -90.0, 90.0);
     const std::string rollBreak = ctx.addAttribute(ikCtrl, "roll_break", 30.0, 0.0, 90.0);
     const std::string bank = ctx.addAttribute(ikCtrl, "bank", 0.0, -90.0, 90.0);
@@ -332,10 +335,11 @@ void LimbBuilder::buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNod
     drive("heel_twist", heelNode, heelTwist, 1, 0, 1.0, -90.0, 90.0);
     drive("toe_roll", toeNode, roll, 2, 2, -1.0, 0.0, 90.0);
     drive("toe_twist", toeNode, toeTwist, 1, 0, 1.0, -90.0, 90.0);
-    drive("bank_ext", extNode, bank, 0, 0, 1.0, 0.0, 90.0);
-    drive("bank_int", intNode, bank, 0, 0, 1.0, -90.0, 0.0);
+    const double outward = glm::dot(lateral, bankExt - bankInt) >= 0.0 ? 1.0 : -1.0;
+    drive("bank_ext", extNode, bank, 0, 0, outward, 0.0, 90.0);
+    drive("bank_int", intNode, bank, 0, 0, outward, -90.0, 0.0);
     drive("ball_roll", ballNode, roll, 2, 1, -1.0, 0.0, 90.0);
-    drive("toe_tap", toeTap, tap, 2, 0, -1.0, -90.0, 90.0);
+    drive("toe_tap", toeTap, tap, 2, 0, 1.0, -90.0, 90.0);
 }
 
 } // namespace

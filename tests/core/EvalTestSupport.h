@@ -1,0 +1,37 @@
+#pragma once
+// A sample built and compiled for evaluation tests, with shorthands by node id.
+#include "TestSupport.h"
+#include "build/RigBuilder.h"
+#include "eval/Pickwalk.h"
+#include "eval/PoseTools.h"
+
+#include <memory>
+#include <string>
+
+namespace rs::test {
+
+class PosedRig {
+public:
+    explicit PosedRig(const std::string& sample);
+    PosedRig(const PosedRig&) = delete;
+    PosedRig& operator=(const PosedRig&) = delete;
+
+    bool ok() const { return program != nullptr; }
+    eval::Pose defaults() const { return program->channels().defaults(); }
+    model::RigNodeIndex index(const std::string& id) const;
+    // A channel index by node id and channel name; fails the test when missing.
+    int channel(const std::string& id, const std::string& name) const;
+    const eval::EvalState& evaluate(const eval::Pose& pose) { return posing->evaluate(pose); }
+    const eval::EvalState& state() const { return posing->state(); } // the last evaluation
+    Vec3 position(const std::string& id) const;      // in the last evaluation
+    Vec3 restPosition(const std::string& id) const;
+    // Moves `control` so that `measured` (at the same rest place or offset from
+    // it) would sit at `target`, keeping its orientation.
+    eval::Pose moveTo(const eval::Pose& pose, const std::string& control, const Vec3& target, const std::string& measured);
+
+    model::Rig rig;
+    std::unique_ptr<eval::RigProgram> program;
+    std::unique_ptr<eval::Posing> posing;
+};
+
+} // namespace rs::test

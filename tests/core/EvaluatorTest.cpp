@@ -1,0 +1,250 @@
+// The evaluation engine on the bundled samples: rest reproduction, IK reach,
+// stretch and soft IK, global and segment scale, spline IK, reverse foot, and
+// compile-time rejection of cycles.
+#include "EvalTestSupport.h"
+#include "eval/IkSolver.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace rs {
+namespace {
+
+using eval::Pose;
+using test::PosedRig;
+
+class SampleEvaluation : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SampleEvaluation, DefaultPoseReproducesTheRestPose)
+{
+    PosedRig r(GetParam());
+    ASSERT_TRUE(r.ok());
+    const auto& state = r.evaluate(r.defaults());
+    for (model::RigNodeIndex i = 0; i < r.rig.nodes.size(); ++i)
+        EXPECT_LT(maxAbsDifference(state.worldMatrix(i), r.rig.nodes[i].worldMatrix), 1e-9) << r.rig.nodes[i].id;
+}
+
+TEST_P(SampleEvaluation, GlobalScaleScalesEverySkinJointAboutTheWorldControl)
+{
+    PosedRig r(GetParam());
+    Pose pose = r.defaults();
+    for (const char* c : {"sx", "sy", "sz"})
+        pose[r.channel("world::ctrls.world", c)] = 2.0;
+    const auto& state = r.evaluate(pose);
+    for (model::RigNodeIndex i = 0; i < r.rig.nodes.size(); ++i) {
+        if (r.rig.nodes[i].domain() != "skin")
+            continue;
+        EXPECT_LT(glm::length(translationOf(state.worldMatrix(i)) - 2.0 * translationOf(r.rig.nodes[i].worldMatrix)), 1e-9)
+            << r.rig.nodes[i].id;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Samples, SampleEvaluation, ::testing::Values("biped", "quadruped", "prop"));
+
+TEST(Evaluator, IkReachesEveryReachableTarget)
+{
+    PosedRig r("biped");
+    for (const char* limb : {"arm.L", "leg.R"}) {
+        const std::string id(limb);
+        Pose pose = r.defaults();
+        pose[r.channel(id + "::ctrls.switch", "ik_blend")] = 1.0;
+        pose[r.channel(id + "::ctrls.switch", "stretch")] = 0.0;
+        const Vec3 root = r.restPosition(id + "::ik.0");
+        const double reach = glm::length(r.restPosition(id + "::ik.1") - root) +
+                             glm::length(r.restPosition(id + "::ik.2") - r.restPosition(id + "::ik.1"));
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0);
+        for (int trial = 0; trial < 50; ++trial) {
+            Vec3 direction(unit(random), unit(random), unit(random));
+            if (glm::length(direction) < 0.1) continue;
+            const Vec3 target = root + glm::normalize(direction) * reach * (0.25 + 0.74 * (unit(random) + 1.0) / 2.0);
+            pose = r.moveTo(pose, id + "::ctrls.ik", target, id + "::ik.2");
+            const auto& state = r.evaluate(pose);
+            EXPECT_LT(glm::length(translationOf(state.worldMatrix(r.index(id + "::ik.2"))) - target), 1e-5) << limb << " " << trial;
+            EXPECT_LT(glm::length(translationOf(state.worldMatrix(r.index(id + "::skin.limb.2"))) - target), 1e-5);
+            // Segment lengths never change without stretch.
+            EXPECT_NEAR(glm::length(r.position(id + "::ik.1") - r.position(id + "::ik.0")),
+                        glm::length(r.restPosition(id + "::ik.1") - root), 1e-9);
+        }
+    }
+}
+
+TEST(Evaluator, IkStretchesBeyondReachOnlyWhenStretchIsOn)
+{
+    PosedRig r("biped");
+    Pose pose = r.defaults();
+    pose[r.channel("arm.L::ctrls.switch", "ik_blend")] = 1.0;
+    const Vec3 root = r.restPosition("arm.L::ik.0");
+    const Vec3 wrist = r.restPosition("arm.L::ik.2");
+    const double reach = glm::length(r.restPosition("arm.L::ik.1") - root) + glm::length(wrist - r.restPosition("arm.L::ik.1"));
+    const Vec3 target = root + glm::normalize(wrist - root) * reach * 1.3;
+    pose = r.moveTo(pose, "arm.L::ctrls.ik", target, "arm.L::ik.2");
+    pose[r.channel("arm.L::ctrls.switch", "stretch")] = 1.0;
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("arm.L::ik.2") - target), 1e-5);
+    pose[r.channel("arm.L::ctrls.switch", "stretch")] = 0.0;
+    r.evaluate(pose);
+    EXPECT_NEAR(glm::length(r.position("arm.L::ik.2") - root), reach, 1e-9); // fully extended, short of the target
+}
+
+TEST(Evaluator, SoftIkEasesTheLastPartOfTheReach)
+{
+    PosedRig r("biped");
+    Pose pose = r.defaults();
+    pose[r.channel("arm.L::ctrls.switch", "ik_blend")] = 1.0;
+    pose[r.channel("arm.L::ctrls.switch", "stretch")] = 0.0;
+    pose[r.channel("arm.L::ctrls.switch", "soft_ik")] = 0.1;
+    const Vec3 root = r.restPosition("arm.L::ik.0");
+    const Vec3 wrist = r.restPosition("arm.L::ik.2");
+    const double reach = glm::length(r.restPosition("arm.L::ik.1") - root) + glm::length(wrist - r.restPosition("arm.L::ik.1"));
+    pose = r.moveTo(pose, "arm.L::ctrls.ik", root + glm::normalize(wrist - root) * reach, "arm.L::ik.2");
+    r.evaluate(pose);
+    const double reached = glm::length(r.position("arm.L::ik.2") - root);
+    EXPECT_LT(reached, reach - 1e-4);                    // never snaps straight
+    EXPECT_GT(reached, reach - 0.1 * reach);             // but gets most of the way
+    EXPECT_NEAR(reached, eval::softReach(reach, reach, 0.1 * reach), 1e-9);
+}
+
+TEST(Evaluator, FkBlendFollowsTheFkControlsAndSegmentScaleKeepsChildrenUnscaled)
+{
+    PosedRig r("biped");
+    Pose pose = r.defaults();
+    pose[r.channel("arm.L::ctrls.switch", "ik_blend")] = 0.0;
+    pose[r.channel("arm.L::ctrls.fk.0", "rz")] = 40.0;
+    pose[r.channel("arm.L::ctrls.fk.0", "sx")] = 1.5;
+    r.evaluate(pose);
+    const Vec3 shoulder = r.position("arm.L::skin.limb.0");
+    const double upper = glm::length(r.restPosition("arm.L::ik.1") - r.restPosition("arm.L::ik.0"));
+    EXPECT_NEAR(glm::length(r.position("arm.L::skin.limb.1") - shoulder), 1.5 * upper, 1e-9); // the upper arm stretched
+    const Vec3 forearmScale = r.state().world[r.index("arm.L::ctrls.fk.1")].scale();
+    EXPECT_LT(glm::length(forearmScale - Vec3(1.0)), 1e-9); // the forearm did not
+    EXPECT_LT(maxAbsDifference(r.state().worldMatrix(r.index("arm.L::blend.1")),
+                               r.state().worldMatrix(r.index("arm.L::ctrls.fk.1"))), 1e-9);
+}
+
+TEST(Evaluator, SplineSpineKeepsItsLengthWithoutStretchAndFollowsTheChestWithIt)
+{
+    PosedRig r("biped");
+    Pose pose = r.defaults();
+    const Vec3 chest = r.restPosition("spine::ctrls.ik_chest");
+    pose = r.moveTo(pose, "spine::ctrls.ik_chest", chest + Vec3(0.0, 0.2, 0.1), "spine::ctrls.ik_chest");
+    auto length = [&] {
+        double total = 0.0;
+        for (int i = 1; i < 5; ++i)
+            total += glm::length(r.position("spine::ik." + std::to_string(i)) - r.position("spine::ik." + std::to_string(i - 1)));
+        return total;
+    };
+    double restLength = 0.0;
+    for (int i = 1; i < 5; ++i)
+        restLength += glm::length(r.restPosition("spine::ik." + std::to_string(i)) - r.restPosition("spine::ik." + std::to_string(i - 1)));
+    pose[r.channel("spine::ctrls.ik_chest", "stretch")] = 1.0;
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("spine::ik.4") - (chest + Vec3(0.0, 0.2, 0.1))), 1e-6);
+    EXPECT_GT(length(), restLength + 0.1);
+    pose[r.channel("spine::ctrls.ik_chest", "stretch")] = 0.0;
+    r.evaluate(pose);
+    EXPECT_NEAR(length(), restLength, 0.01 * restLength); // chords of a curve: within 1 %
+}
+
+TEST(Evaluator, FootRollPivotsOnTheBallThenTheToeAndBackOnTheHeel)
+{
+    PosedRig r("biped");
+    Pose pose = r.defaults();
+    pose[r.channel("leg.L::ctrls.switch", "ik_blend")] = 1.0;
+    const int roll = r.channel("leg.L::ctrls.ik", "roll");
+    const Vec3 ball = r.restPosition("leg.L::rfoot.ball"), toe = r.restPosition("leg.L::rfoot.toe"),
+               heel = r.restPosition("leg.L::rfoot.heel"), ankle = r.restPosition("leg.L::ik.2");
+    pose[roll] = 20.0; // below the break: the heel lifts about the ball
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("leg.L::rfoot.ball") - ball), 1e-9);
+    EXPECT_GT(r.position("leg.L::ik.2").y, ankle.y + 0.01);
+    pose[roll] = 60.0; // past the break: the toe pivot rolls too, the toe tip stays put
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("leg.L::rfoot.toe") - toe), 1e-9);
+    EXPECT_GT(r.position("leg.L::rfoot.ball").y, ball.y + 0.01);
+    pose[roll] = -30.0; // back on the heel
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("leg.L::rfoot.heel") - heel), 1e-9);
+    EXPECT_GT(r.position("leg.L::rfoot.toe").y, toe.y + 0.01);
+}
+
+TEST(Evaluator, PostScaleScalesTheRigBelowTheControls)
+{
+    PosedRig r("prop");
+    Pose pose = r.defaults();
+    pose[r.channel("world::grps.post", "post_scale")] = 3.0;
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("lid::skin.xform") - 3.0 * r.restPosition("lid::skin.xform")), 1e-9);
+    EXPECT_TRUE(r.program->channels()[r.channel("world::grps.post", "post_scale")].locked); // the rigger's, not animators'
+}
+
+TEST(Evaluator, CompileRejectsConstraintCyclesWithTheirIds)
+{
+    PosedRig r("prop");
+    model::Rig rig = r.rig;
+    const auto chest = *rig.find("chest::ctrls.xform"), lid = *rig.find("lid::ctrls.xform");
+    rig.constraints.push_back({"test::cns.a", model::ConstraintKind::Parent, model::kNoId, {chest}, {lid}, {}, {}});
+    const auto program = eval::RigProgram::compile(rig);
+    ASSERT_FALSE(program.ok());
+    EXPECT_NE(program.diagnostics().front().message.find("cycle"), std::string::npos);
+    EXPECT_NE(program.diagnostics().front().message.find("test::cns.a"), std::string::npos);
+}
+
+TEST(Evaluator, CompileRejectsAttributePathsThatAreNotChannels)
+{
+    PosedRig r("prop");
+    model::Rig rig = r.rig;
+    rig.constraints.back().attributes["weight"] = "chest::ctrls.xform.nothing";
+    const auto program = eval::RigProgram::compile(rig);
+    ASSERT_FALSE(program.ok());
+    EXPECT_NE(program.diagnostics().front().message.find("'chest::ctrls.xform.nothing' is not a channel"), std::string::npos);
+}
+
+TEST(Evaluator, AimPointScaleConstraintsFollowTheirTargets)
+{
+    PosedRig r("prop");
+    model::Rig rig = r.rig;
+    const auto antenna = *rig.find("antenna::skin.3"), lid = *rig.find("lid::ctrls.xform"), chest = *rig.find("chest::ctrls.xform");
+    rig.constraints.push_back({"t::aim", model::ConstraintKind::Aim, model::kNoId, {antenna}, {lid}, {}, {{"aim", 1.0}, {"up", 0.0}}});
+    rig.constraints.push_back({"t::point", model::ConstraintKind::Point, model::kNoId, {*rig.find("antenna::skin.0")}, {chest, lid}, {}, {}});
+    rig.constraints.push_back({"t::scale", model::ConstraintKind::Scale, model::kNoId, {*rig.find("antenna::skin.1")}, {chest}, {}, {}});
+    auto program = eval::RigProgram::compile(rig);
+    ASSERT_TRUE(program.ok());
+    auto state = program->makeState();
+    Pose pose = program->channels().defaults();
+    program->evaluate(pose, state);
+    for (model::RigNodeIndex i = 0; i < rig.nodes.size(); ++i)
+        ASSERT_LT(maxAbsDifference(state.worldMatrix(i), rig.nodes[i].worldMatrix), 1e-9) << rig.nodes[i].id;
+    const int lidTx = program->channels().transformOf(lid), chestTx = program->channels().transformOf(chest);
+    pose[lidTx + 0] = 0.4;     // the lid moves sideways
+    pose[chestTx + 6] = 2.0;   // the chest scales in x
+    program->evaluate(pose, state);
+    const Vec3 origin = translationOf(state.worldMatrix(antenna));
+    const Vec3 aim = glm::normalize(translationOf(state.worldMatrix(lid)) - origin);
+    const Mat3 restAimFrame = Mat3(rig.nodes[antenna].worldMatrix);
+    const Vec3 restAim = glm::normalize(translationOf(rig.nodes[lid].worldMatrix) - translationOf(rig.nodes[antenna].worldMatrix));
+    // The antenna keeps its rest angle to the lid direction.
+    EXPECT_NEAR(glm::dot(Mat3(state.worldMatrix(antenna)) * (glm::transpose(restAimFrame) * restAim), aim), 1.0, 1e-9);
+    EXPECT_NEAR(Vec3(state.worldMatrix(*rig.find("antenna::skin.1"))[0]).x, 2.0, 1e-9);
+    EXPECT_GT(translationOf(state.worldMatrix(*rig.find("antenna::skin.0"))).x, 0.1); // half of the lid's move, weighted
+}
+
+TEST(Evaluator, EulerAnglesRoundTripInEveryRotateOrder)
+{
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> angle(-179.0, 179.0);
+    for (int order = 0; order < 6; ++order)
+        for (int trial = 0; trial < 200; ++trial) {
+            Vec3 degrees(angle(random), angle(random) / 2.0, angle(random));
+            if (trial == 0) degrees.y = 90.0; // gimbal lock still gives the same rotation
+            const auto o = static_cast<model::RotateOrder>(order);
+            const Mat3 r = eval::eulerRotation(degrees, o);
+            const Mat3 back = eval::eulerRotation(eval::eulerDegrees(r, o), o);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_LT(glm::length(r[c] - back[c]), 1e-9) << model::rotateOrderName(o) << " " << trial;
+        }
+}
+
+} // namespace
+} // namespace rs
