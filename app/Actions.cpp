@@ -2,9 +2,12 @@
 // stays a thin composition root.
 #include "MainWindow.h"
 
+#include "LogPanel.h"
+#include "ViewportWidget.h"
 #include "base/Paths.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -119,6 +122,62 @@ void MainWindow::createActions()
     bar->addActions({build, exportGlb});
     bar->addSeparator();
     bar->addActions({undo, redo});
+    createPoseActions();
+}
+
+void MainWindow::createPoseActions()
+{
+    QAction* guideMode = makeAction(this, "modeGuide", tr("&Guide mode"), QKeySequence(Qt::Key_F3));
+    QAction* rigMode = makeAction(this, "modeRig", tr("&Rig mode"), QKeySequence(Qt::Key_F4));
+    guideMode->setToolTip(tr("Author guides (F3)"));
+    rigMode->setToolTip(tr("Pose the built rig as an animator would (F4); Build switches to it"));
+    auto* modes = new QActionGroup(this);
+    for (QAction* a : {guideMode, rigMode}) {
+        a->setCheckable(true);
+        modes->addAction(a);
+    }
+    guideMode->setChecked(true);
+    connect(guideMode, &QAction::triggered, this, [this] { m_session.setMode(EditorMode::Guide); });
+    connect(rigMode, &QAction::triggered, this, [this] {
+        if (!m_session.rig() || m_session.isRigStale())
+            buildRig();
+        m_session.setMode(EditorMode::Rig);
+    });
+    connect(&m_session, &EditorSession::modeChanged, this, [this, guideMode, rigMode] {
+        (m_session.mode() == EditorMode::Rig ? rigMode : guideMode)->setChecked(true);
+    });
+
+    const std::tuple<const char*, QString, QKeySequence, PoseTool> tools[] = {
+        {"resetSelected", tr("Reset &Selected"), QKeySequence(tr("Ctrl+Shift+R")), PoseTool::ResetSelected},
+        {"resetAll", tr("Reset &All"), QKeySequence(), PoseTool::ResetAll},
+        {"mirrorPose", tr("&Mirror Pose"), QKeySequence(tr("Ctrl+Shift+M")), PoseTool::Mirror},
+        {"flipPose", tr("&Flip Pose"), QKeySequence(tr("Ctrl+Shift+F")), PoseTool::Flip},
+        {"ikToFk", tr("Match &FK to IK (switch to FK)"), QKeySequence(), PoseTool::IkToFk},
+        {"fkToIk", tr("Match &IK to FK (switch to IK)"), QKeySequence(), PoseTool::FkToIk}};
+    QMenu* pose = menuBar()->addMenu(tr("&Pose"));
+    pose->addActions({guideMode, rigMode});
+    pose->addSeparator();
+    for (const auto& [name, text, shortcut, tool] : tools) {
+        QAction* a = makeAction(this, name, text, shortcut);
+        const PoseTool t = tool;
+        connect(a, &QAction::triggered, this, [this, t] {
+            if (const QString error = m_session.applyPoseTool(t); !error.isEmpty())
+                m_log->addMessage(error, Severity::Warning);
+        });
+        pose->addAction(a);
+        if (t == PoseTool::ResetAll || t == PoseTool::Flip)
+            pose->addSeparator();
+    }
+    QAction* worldGizmo = makeAction(this, "gizmoWorld", tr("Gizmo in &World Space"), QKeySequence(tr("Ctrl+Shift+W")));
+    worldGizmo->setCheckable(true);
+    worldGizmo->setToolTip(tr("Translate and rotate along world axes instead of the control's own"));
+    connect(worldGizmo, &QAction::toggled, this, [this](bool on) { m_viewport->setGizmoWorldSpace(on); });
+    pose->addSeparator();
+    pose->addAction(worldGizmo);
+
+    QToolBar* bar = findChild<QToolBar*>("mainToolBar");
+    bar->addSeparator();
+    bar->addActions({guideMode, rigMode});
 }
 
 } // namespace rs::app

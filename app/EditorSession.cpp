@@ -9,15 +9,26 @@
 
 namespace rs::app {
 
+namespace {
+
+// The guide without its test pose: what a build depends on.
+bool sameGuide(const model::GuideDocument& a, const model::GuideDocument& b)
+{
+    return a.name == b.name && a.naming == b.naming && a.instances() == b.instances();
+}
+
+} // namespace
+
 EditorSession::EditorSession(QObject* parent) : QObject(parent)
 {
     qRegisterMetaType<rs::Diagnostics>();
     m_templates = templates::TemplateRegistry::loadDefault(m_templateDiagnostics);
     m_history.addListener([this] {
-        m_rigStale = m_rig.has_value();
+        m_rigStale = m_rig.has_value() && !sameGuide(m_document, m_builtFrom); // posing does not age the rig
         if (m_selection.instance != model::kNoId && !m_document.instance(m_selection.instance))
             m_selection = {};
         emit documentChanged();
+        poseFromDocument();
     });
 }
 
@@ -39,6 +50,8 @@ void EditorSession::replaceDocument(model::GuideDocument document, const QString
     m_selection = {};
     m_rig.reset();
     m_rigStale = false;
+    compileRig();
+    setMode(EditorMode::Guide);
     m_history.reset(std::move(document));
     m_history.setClean();
     emit rigChanged();
@@ -73,11 +86,23 @@ bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
 double EditorSession::build()
 {
     const auto start = std::chrono::steady_clock::now();
+    // Rebuilding keeps the selected controllers (by id: indices may move).
+    std::vector<std::string> selectedIds;
+    if (m_rig)
+        for (auto n : m_selection.nodes)
+            selectedIds.push_back(m_rig->nodes[n].id);
     m_rig = build::buildRig(m_document, *m_templates);
+    compileRig();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     m_rigStale = false;
-    if (m_selection.node != model::kNoNode && m_selection.node >= m_rig->nodes.size())
-        m_selection.node = model::kNoNode;
+    m_builtFrom = m_document;
+    m_selection.nodes.clear();
+    m_selection.node = model::kNoNode;
+    for (const auto& id : selectedIds)
+        if (auto n = m_rig->find(id)) {
+            m_selection.nodes.push_back(*n);
+            m_selection.node = *n;
+        }
     emit rigChanged();
     emit diagnosticsReported(m_rig->diagnostics);
     return ms;

@@ -4,6 +4,8 @@
 // rs::edit on the history; this object only adds Qt signals so the views can
 // follow. It holds no widgets.
 #include "edit/History.h"
+#include "eval/Pickwalk.h"
+#include "eval/PoseTools.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
@@ -18,8 +20,12 @@ namespace rs::app {
 struct Selection {
     model::InstanceId instance = model::kNoId;
     model::JointId joint = model::kNoId;
-    model::RigNodeIndex node = model::kNoNode;
+    model::RigNodeIndex node = model::kNoNode;     // the current controller (rig mode)
+    std::vector<model::RigNodeIndex> nodes;        // every selected controller, `node` among them
 };
+
+enum class EditorMode { Guide, Rig };
+enum class PoseTool { ResetSelected, ResetAll, Mirror, Flip, IkToFk, FkToIk };
 
 class EditorSession : public QObject {
     Q_OBJECT
@@ -58,16 +64,42 @@ public:
     void select(const Selection& selection);
     model::InstanceId instanceNamed(const QString& name) const;
 
+    // Rig mode: the built rig posed by the document's pose (Build switches to it).
+    EditorMode mode() const { return m_mode; }
+    void setMode(EditorMode mode);
+    const eval::RigProgram* program() const { return m_program.get(); }
+    const eval::Pose& pose() const { return m_pose; }
+    // The posed rig; null without a compiled rig.
+    const eval::EvalState* evaluation() const { return m_program ? &m_evaluation : nullptr; }
+    // Controllers: click (add toggles), box select, pickwalk.
+    void selectControllers(const std::vector<model::RigNodeIndex>& nodes, bool add);
+    // Over controllers in Rig mode, else (or with `instances`) over template instances.
+    void pickwalk(eval::WalkDirection direction, bool instances = false);
+    // A gizmo drag: begin keeps the pose it started from, drag previews (no
+    // history), end records one undo step.
+    void beginDrag(model::RigNodeIndex node);
+    void dragTo(model::RigNodeIndex node, const Mat4& world);
+    void endDrag(model::RigNodeIndex node, const QString& what);
+    // One channel from the channel box; a space enum switches with matching when asked.
+    QString setChannel(int channel, double value, bool matchSpace);
+    QString applyPoseTool(PoseTool tool);
+
 signals:
     void documentChanged();
     void rigChanged();
     void selectionChanged();
     void diagnosticsReported(const rs::Diagnostics& diagnostics);
     void templatesReloaded();
+    void modeChanged();
+    void poseChanged();
 
 private:
     // Replaces the open document (selection, rig and history start over).
     void replaceDocument(model::GuideDocument document, const QString& path);
+    void compileRig();          // after a build: program, pose, evaluation
+    void poseFromDocument();    // after any edit (undo included)
+    void previewPose(eval::Pose pose);
+    QString commitPose(const eval::Pose& pose, const QString& what);
 
     model::GuideDocument m_document;
     edit::History m_history{m_document};
@@ -77,6 +109,13 @@ private:
     bool m_rigStale = false;
     QString m_filePath;
     Selection m_selection;
+    model::GuideDocument m_builtFrom; // the guide of the last build
+    EditorMode m_mode = EditorMode::Guide;
+    std::unique_ptr<eval::RigProgram> m_program;
+    std::unique_ptr<eval::Posing> m_posing;
+    eval::Pose m_pose;
+    eval::EvalState m_evaluation;
+    std::optional<eval::Pose> m_dragStart;
 };
 
 } // namespace rs::app

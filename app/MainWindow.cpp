@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "ChannelBox.h"
 #include "LogPanel.h"
 #include "OutlinerView.h"
 #include "ViewportWidget.h"
@@ -37,6 +38,13 @@ void MainWindow::createDocks()
     logDock->setObjectName("logDock");
     logDock->setWidget(m_log);
     addDockWidget(Qt::BottomDockWidgetArea, logDock);
+
+    m_channelBox = new widgets::ChannelBox(this);
+    m_channelBox->setObjectName("channelBox");
+    auto* channelDock = new QDockWidget(tr("Channel box"), this);
+    channelDock->setObjectName("channelBoxDock");
+    channelDock->setWidget(m_channelBox);
+    addDockWidget(Qt::RightDockWidgetArea, channelDock);
 
     m_status = new QLabel(this);
     statusBar()->addPermanentWidget(m_status);
@@ -79,11 +87,12 @@ void MainWindow::connectDocument()
     });
     connect(m_viewport, &viewport::ViewportWidget::guideJointPicked, this,
             [this](quint32 joint, quint32 owner) { m_session.select({owner, joint, model::kNoNode}); });
-    connect(m_viewport, &viewport::ViewportWidget::controllerPicked, this, [this](quint32 node) {
-        const auto* rig = m_session.rig();
-        m_session.select({rig ? rig->nodes[node].owner : model::kNoId, model::kNoId, node});
-    });
+    connect(m_viewport, &viewport::ViewportWidget::controllerPicked, this,
+            [this](quint32 node, bool add) { m_session.selectControllers({node}, add); });
     connect(m_viewport, &viewport::ViewportWidget::nothingPicked, this, [this] { m_session.select({}); });
+    connect(m_outliner, &widgets::OutlinerView::walkRequested, this,
+            [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction), true); });
+    connectRigMode();
 
     m_log->addDiagnostics(m_session.templateDiagnostics());
     refreshViews();
@@ -97,11 +106,45 @@ void MainWindow::refreshViews()
     refreshScene();
 }
 
+void MainWindow::connectRigMode()
+{
+    connect(&m_session, &EditorSession::modeChanged, this, [this] {
+        m_viewport->setRigMode(m_session.mode() == EditorMode::Rig);
+        refreshScene();
+    });
+    connect(&m_session, &EditorSession::poseChanged, this, &MainWindow::refreshScene);
+    connect(m_viewport, &viewport::ViewportWidget::controllersBoxSelected, this, [this](const QList<quint32>& nodes, bool add) {
+        m_session.selectControllers(std::vector<model::RigNodeIndex>(nodes.begin(), nodes.end()), add);
+    });
+    connect(m_viewport, &viewport::ViewportWidget::pickwalkRequested, this,
+            [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction)); });
+    connect(m_viewport, &viewport::ViewportWidget::gizmoDragStarted, this, [this](quint32 node) { m_session.beginDrag(node); });
+    connect(m_viewport, &viewport::ViewportWidget::gizmoDragged, this,
+            [this](quint32 node, const glm::dmat4& world) { m_session.dragTo(node, world); });
+    connect(m_viewport, &viewport::ViewportWidget::gizmoDragFinished, this, [this](quint32 node) {
+        static const char* verbs[] = {"Move", "Rotate", "Scale"};
+        const auto* rig = m_session.rig();
+        const QString name = rig && node < rig->nodes.size() ? QString::fromStdString(rig->nodes[node].name) : QString();
+        m_session.endDrag(node, QString("%1 %2").arg(verbs[int(m_viewport->gizmoMode())], name));
+    });
+    connect(m_channelBox, &widgets::ChannelBox::channelEdited, this, [this](int channel, double value, bool match) {
+        if (const QString error = m_session.setChannel(channel, value, match); !error.isEmpty())
+            m_log->addMessage(error, Severity::Error);
+    });
+}
+
 void MainWindow::refreshScene()
 {
     const Selection& s = m_session.selection();
-    m_viewport->setScene(viewport::makeScene(m_session.document(), m_session.rig(), {s.instance, s.joint, s.node}));
+    const bool rigMode = m_session.mode() == EditorMode::Rig;
+    const eval::EvalState* pose = rigMode ? m_session.evaluation() : nullptr;
+    m_viewport->setScene(viewport::makeScene(m_session.document(), m_session.rig(), {s.instance, s.joint, s.node, s.nodes}, pose));
     const auto* rig = m_session.rig();
+    const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();
+    m_viewport->setGizmoTarget(hasNode ? s.node : model::kNoNode, hasNode ? pose->worldMatrix(s.node) : glm::dmat4(1.0));
+    m_channelBox->showNode(rigMode && m_session.program() ? &m_session.program()->channels() : nullptr,
+                           hasNode ? s.node : model::kNoNode, hasNode ? QString::fromStdString(rig->nodes[s.node].name) : QString(),
+                           &m_session.pose());
     if (!rig)
         m_status->setText(tr("Guide: %1 templates").arg(m_session.document().instances().size()));
     else
@@ -181,6 +224,7 @@ void MainWindow::buildRig()
     m_log->addMessage(tr("Built %1 nodes in %2 ms").arg(rig->nodes.size()).arg(ms, 0, 'f', 2),
                       hasErrors(rig->diagnostics) ? Severity::Error : Severity::Note);
     statusBar()->showMessage(tr("Build: %1 ms").arg(ms, 0, 'f', 2), 5000);
+    m_session.setMode(EditorMode::Rig); // a build is for checking the rig as an animator will use it
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -9,7 +9,7 @@ class QAction;
 class QLabel;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; }
 
 namespace rs::app {
 
@@ -22,6 +22,7 @@ public:
     viewport::ViewportWidget* viewportWidget() const { return m_viewport; }
     widgets::OutlinerView* outliner() const { return m_outliner; }
     widgets::LogPanel* log() const { return m_log; }
+    widgets::ChannelBox* channelBox() const { return m_channelBox; }
     QAction* action(const QString& objectName) const;
 
     bool openFile(const QString& path);
@@ -37,8 +38,10 @@ protected:
 
 private:
     void createActions();   // Actions.cpp
+    void createPoseActions(); // Actions.cpp: Guide/Rig mode, pose tools, gizmo space
     void createDocks();
     void connectDocument();
+    void connectRigMode();  // viewport picks, walks and drags, channel box
     void refreshViews();
     void refreshScene();
     void updateTitle();
@@ -48,6 +51,7 @@ private:
     viewport::ViewportWidget* m_viewport = nullptr;
     widgets::OutlinerView* m_outliner = nullptr;
     widgets::LogPanel* m_log = nullptr;
+    widgets::ChannelBox* m_channelBox = nullptr;
     QLabel* m_status = nullptr;
 };
 

@@ -5,8 +5,6 @@
 
 namespace rs::viewport {
 
-namespace {
-
 double distanceToSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b)
 {
     const glm::dvec2 ab = b - a;
@@ -14,8 +12,6 @@ double distanceToSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b)
     const double t = lengthSquared > 0.0 ? std::clamp(glm::dot(p - a, ab) / lengthSquared, 0.0, 1.0) : 0.0;
     return glm::length(p - (a + t * ab));
 }
-
-} // namespace
 
 PickResult pick(const Scene& scene, const Camera& camera, double width, double height, glm::dvec2 cursor,
                 double jointRadius, double curveRadius)
@@ -47,6 +43,29 @@ PickResult pick(const Scene& scene, const Camera& camera, double width, double h
     if (best.kind == PickResult::Kind::Nothing)
         best.distancePixels = 0.0;
     return best;
+}
+
+std::vector<model::RigNodeIndex> boxPick(const Scene& scene, const Camera& camera, double width, double height,
+                                         glm::dvec2 cornerA, glm::dvec2 cornerB)
+{
+    const glm::dmat4 viewProjection = camera.projectionMatrix(width / height) * camera.viewMatrix();
+    const glm::dvec2 lo = glm::min(cornerA, cornerB), hi = glm::max(cornerA, cornerB);
+    std::vector<model::RigNodeIndex> out;
+    for (const auto& c : scene.curves) {
+        if (!out.empty() && out.back() == c.node)
+            continue;
+        for (const auto& point : c.points) {
+            glm::dvec2 p;
+            if (projectToPixels(viewProjection, point, width, height, p) && p.x >= lo.x && p.x <= hi.x && p.y >= lo.y &&
+                p.y <= hi.y) {
+                if (std::find(out.begin(), out.end(), c.node) == out.end())
+                    out.push_back(c.node);
+                break;
+            }
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 } // namespace rs::viewport

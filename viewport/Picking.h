@@ -18,4 +18,10 @@ struct PickResult {
 PickResult pick(const Scene& scene, const Camera& camera, double width, double height, glm::dvec2 cursorPixels,
                 double jointRadiusPixels = 10.0, double curveRadiusPixels = 6.0);
 
+// Distance in pixels from p to the segment a-b.
+double distanceToSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b);
+// Controllers with any curve point inside the pixel rectangle (box select), in node order.
+std::vector<model::RigNodeIndex> boxPick(const Scene& scene, const Camera& camera, double width, double height,
+                                         glm::dvec2 cornerA, glm::dvec2 cornerB);
+
 } // namespace rs::viewport

@@ -1,5 +1,7 @@
 #include "Scene.h"
 
+#include <algorithm>
+
 namespace rs::viewport {
 
 bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const
@@ -14,9 +16,11 @@ bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const
     return any;
 }
 
-Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection)
+Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
+                const eval::EvalState* pose)
 {
     Scene scene;
+    scene.showGuides = pose == nullptr;
     for (const auto& instance : guide.instances())
         for (const auto& joint : instance.joints) {
             SceneJoint j;
@@ -33,26 +37,31 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
         }
     if (!rig)
         return scene;
+    const bool posed = pose && pose->world.size() == rig->nodes.size();
+    auto world = [&](model::RigNodeIndex i) { return posed ? pose->worldMatrix(i) : rig->nodes[i].worldMatrix; };
     for (model::RigNodeIndex i = 0; i < rig->nodes.size(); ++i) {
         const model::RigNode& node = rig->nodes[i];
+        const glm::dmat4 nodeWorld = world(i);
         if (node.kind == model::RigNodeKind::Controller)
             for (const auto& curve : node.curves) {
                 SceneCurve c;
                 c.node = i;
                 c.color = curve.color;
-                c.selected = i == selection.node || (selection.node == model::kNoNode && node.owner == selection.instance &&
-                                                     selection.instance != model::kNoId);
+                c.selected = i == selection.node ||
+                             std::find(selection.nodes.begin(), selection.nodes.end(), i) != selection.nodes.end() ||
+                             (!posed && selection.node == model::kNoNode && node.owner == selection.instance &&
+                              selection.instance != model::kNoId);
                 for (const auto& p : curve.points)
-                    c.points.push_back(glm::dvec3(node.worldMatrix * glm::dvec4(p, 1.0)));
+                    c.points.push_back(glm::dvec3(nodeWorld * glm::dvec4(p, 1.0)));
                 scene.curves.push_back(std::move(c));
             }
         if (node.kind == model::RigNodeKind::Joint && !node.hidden && node.domain() == "skin") {
             SceneJoint j;
             j.owner = node.owner;
-            j.position = translationOf(node.worldMatrix);
+            j.position = translationOf(nodeWorld);
             if (node.virtualParent != model::kNoNode) {
                 j.hasParent = true;
-                j.parentPosition = translationOf(rig->nodes[node.virtualParent].worldMatrix);
+                j.parentPosition = translationOf(world(node.virtualParent));
             }
             scene.skinJoints.push_back(j);
         }

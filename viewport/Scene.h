@@ -2,6 +2,7 @@
 // What the viewport draws, in world space, derived from the guide and the built
 // rig: guide joints with their bones, controller curves, skin joints. Pure data;
 // the Renderer turns it into GL buffers and Picking hit-tests it.
+#include "eval/RigProgram.h"
 #include "model/GuideDocument.h"
 #include "model/Rig.h"
 
@@ -30,19 +31,23 @@ struct SceneSelection {
     model::InstanceId instance = model::kNoId;
     model::JointId joint = model::kNoId;
     model::RigNodeIndex node = model::kNoNode;
+    std::vector<model::RigNodeIndex> nodes; // every selected controller (rig mode)
 };
 
 struct Scene {
     std::vector<SceneJoint> guideJoints;
     std::vector<SceneCurve> curves;
     std::vector<SceneJoint> skinJoints;   // id unused; owner = instance
+    std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo)
     bool showGuides = true;
 
     // Bounds of everything drawn; false when the scene is empty.
     bool bounds(glm::dvec3& lo, glm::dvec3& hi) const;
 };
 
-// `rig` may be null (not built yet).
-Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection);
+// `rig` may be null (not built yet). With `pose` (an evaluation of the rig) the
+// controllers and skin joints are drawn posed and the guides hidden: Rig mode.
+Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
+                const eval::EvalState* pose = nullptr);
 
 } // namespace rs::viewport

@@ -2,8 +2,11 @@
 
 #include "render/Renderer.h"
 
+#include "eval/Pickwalk.h"
+
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QRubberBand>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -62,6 +65,46 @@ QPoint ViewportWidget::toWidgetPixels(const glm::dvec3& world) const
     return QPoint(int(std::lround(p.x)), int(std::lround(p.y)));
 }
 
+void ViewportWidget::setRigMode(bool on)
+{
+    m_rigMode = on;
+    if (!on)
+        m_gizmoNode = model::kNoNode;
+    update();
+}
+
+void ViewportWidget::setGizmoTarget(model::RigNodeIndex node, const glm::dmat4& world)
+{
+    m_gizmoNode = m_rigMode ? node : model::kNoNode;
+    if (!m_gizmoDrag) // mid-drag the gizmo stays where the drag began
+        m_gizmo.target = world;
+    update();
+}
+
+void ViewportWidget::setGizmoMode(GizmoMode mode)
+{
+    if (m_gizmo.mode == mode)
+        return;
+    m_gizmo.mode = mode;
+    emit gizmoModeChanged(int(mode));
+    update();
+}
+
+void ViewportWidget::setGizmoWorldSpace(bool world)
+{
+    m_gizmo.worldSpace = world;
+    update();
+}
+
+std::optional<Gizmo> ViewportWidget::gizmo() const
+{
+    if (m_gizmoNode == model::kNoNode)
+        return std::nullopt;
+    Gizmo g = m_gizmo;
+    g.size = Gizmo::sizeFor(m_camera, g.origin(), height());
+    return g;
+}
+
 void ViewportWidget::initializeGL()
 {
     m_renderer = std::make_unique<Renderer>();
@@ -75,6 +118,9 @@ void ViewportWidget::initializeGL()
 
 void ViewportWidget::paintGL()
 {
+    m_scene.overlay.clear();
+    if (const auto g = gizmo())
+        m_scene.overlay = gizmoCurves(*g, m_activeHandle);
     if (m_renderer)
         m_renderer->render(m_scene, m_camera, int(width() * devicePixelRatio()), int(height() * devicePixelRatio()));
 }
@@ -84,6 +130,20 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
     m_pressPosition = m_lastPosition = event->position().toPoint();
     m_dragButton = event->button();
     m_dragged = false;
+    m_orbiting = event->modifiers() & Qt::AltModifier || !m_rigMode;
+    if (event->button() != Qt::LeftButton || !m_rigMode || (event->modifiers() & Qt::AltModifier))
+        return;
+    const glm::dvec2 pixel(event->position().x(), event->position().y());
+    if (const auto g = gizmo()) {
+        const int handle = pickGizmoHandle(*g, m_camera, width(), height(), pixel);
+        if (handle >= 0) {
+            m_gizmoDrag.emplace(*g, handle, rayThroughPixel(m_camera, width(), height(), pixel));
+            m_activeHandle = handle;
+            m_orbiting = false;
+            emit gizmoDragStarted(m_gizmoNode);
+            update();
+        }
+    }
 }
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
@@ -95,7 +155,19 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         m_dragged = true;
     if (!m_dragged)
         return;
+    if (m_gizmoDrag) {
+        const Ray ray = rayThroughPixel(m_camera, width(), height(), glm::dvec2(p.x(), p.y()));
+        emit gizmoDragged(m_gizmoNode, m_gizmoDrag->worldFor(ray));
+        return;
+    }
     const bool alt = event->modifiers() & Qt::AltModifier;
+    if (m_dragButton == Qt::LeftButton && !m_orbiting) { // Rig mode: box select
+        if (!m_rubberBand)
+            m_rubberBand = new QRubberBand(QRubberBand::Rectangle, this);
+        m_rubberBand->setGeometry(QRect(m_pressPosition, p).normalized());
+        m_rubberBand->show();
+        return;
+    }
     if (m_dragButton == Qt::LeftButton)
         m_camera.orbit(delta.x(), delta.y());
     else if (m_dragButton == Qt::MiddleButton)
@@ -107,17 +179,29 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton && !m_dragged) {
+    const bool add = event->modifiers() & Qt::ShiftModifier;
+    if (m_gizmoDrag) {
+        m_gizmoDrag.reset();
+        m_activeHandle = -1;
+        emit gizmoDragFinished(m_gizmoNode);
+    } else if (event->button() == Qt::LeftButton && m_dragged && !m_orbiting) {
+        if (m_rubberBand)
+            m_rubberBand->hide();
+        const auto nodes = boxPick(m_scene, m_camera, width(), height(), glm::dvec2(m_pressPosition.x(), m_pressPosition.y()),
+                                   glm::dvec2(event->position().x(), event->position().y()));
+        emit controllersBoxSelected(QList<quint32>(nodes.begin(), nodes.end()), add);
+    } else if (event->button() == Qt::LeftButton && !m_dragged) {
         const PickResult hit = pick(m_scene, m_camera, width(), height(),
                                     glm::dvec2(event->position().x(), event->position().y()));
         if (hit.kind == PickResult::Kind::GuideJoint)
             emit guideJointPicked(hit.joint, hit.owner);
         else if (hit.kind == PickResult::Kind::Controller)
-            emit controllerPicked(hit.node);
-        else
+            emit controllerPicked(hit.node, add);
+        else if (!add)
             emit nothingPicked();
     }
     m_dragButton = Qt::NoButton;
+    update();
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event)
@@ -131,6 +215,24 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
     if (event->key() == Qt::Key_A || event->key() == Qt::Key_F) {
         frameAll();
         return;
+    }
+    const std::pair<int, GizmoMode> gizmoKeys[] = {
+        {Qt::Key_W, GizmoMode::Translate}, {Qt::Key_E, GizmoMode::Rotate}, {Qt::Key_R, GizmoMode::Scale}};
+    for (const auto& [key, mode] : gizmoKeys)
+        if (event->key() == key && event->modifiers() == Qt::NoModifier) {
+            setGizmoMode(mode);
+            return;
+        }
+    if (m_rigMode) {
+        using eval::WalkDirection;
+        const std::pair<int, WalkDirection> walkKeys[] = {{Qt::Key_Up, WalkDirection::Up},     {Qt::Key_Down, WalkDirection::Down},
+                                                          {Qt::Key_Left, WalkDirection::Left}, {Qt::Key_Right, WalkDirection::Right},
+                                                          {Qt::Key_M, WalkDirection::Mirror}};
+        for (const auto& [key, direction] : walkKeys)
+            if (event->key() == key) {
+                emit pickwalkRequested(int(direction));
+                return;
+            }
     }
     QOpenGLWidget::keyPressEvent(event);
 }

@@ -1,5 +1,7 @@
 #include "OutlinerView.h"
 
+#include "eval/Pickwalk.h"
+
 #include "build/RigBuilder.h"
 
 #include <QHeaderView>
@@ -151,6 +153,16 @@ void OutlinerView::keyPressEvent(QKeyEvent* event)
         emit removeRequested(selectedInstance());
         return;
     }
+    // Pickwalk, as in the viewport: Up parent, Down first child, Left/Right siblings.
+    const std::pair<int, eval::WalkDirection> walks[] = {{Qt::Key_Up, eval::WalkDirection::Up},
+                                                         {Qt::Key_Down, eval::WalkDirection::Down},
+                                                         {Qt::Key_Left, eval::WalkDirection::Left},
+                                                         {Qt::Key_Right, eval::WalkDirection::Right}};
+    for (const auto& [key, direction] : walks)
+        if (event->key() == key && event->modifiers() == Qt::NoModifier && selectedInstance() != model::kNoId) {
+            emit walkRequested(int(direction));
+            return;
+        }
     QTreeView::keyPressEvent(event);
 }
 

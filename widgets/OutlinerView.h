@@ -2,7 +2,8 @@
 // The outliner: template instances as a tree (children under the instance they
 // hang from), with the manifest's ui.icon. Its context menu offers "Add template"
 // with one entry per hook of the instance's ui.hooks, then the templates by
-// category; it only emits requests, the app turns them into edits.
+// category; it only emits requests, the app turns them into edits. The arrow
+// keys pickwalk over instances (parent, first child, siblings).
 #include "model/GuideDocument.h"
 #include "templates/TemplateRegistry.h"
 
@@ -31,6 +32,7 @@ signals:
     void addTemplateRequested(const QString& templateId, quint32 hookJoint);
     void removeRequested(quint32 instance);
     void renameRequested(quint32 instance, const QString& newName);
+    void walkRequested(int direction); // arrow keys: an rs::eval::WalkDirection over instances
 
 private:
     void addTemplateEntries(QMenu* menu, model::JointId hookJoint);

@@ -36,6 +36,7 @@ public:
 
     const std::vector<Channel>& channels() const { return m_channels; }
     std::size_t size() const { return m_channels.size(); }
+    std::size_t nodeCount() const { return m_first.size(); }
     const Channel& operator[](std::size_t i) const { return m_channels[i]; }
     // Index of a node's `tx` channel, -1 when the node has no transform channels.
     int transformOf(model::RigNodeIndex node) const { return m_transform[node]; }

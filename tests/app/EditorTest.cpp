@@ -1,5 +1,5 @@
 // GUI tests that drive the real editor widgets under Xvfb (QTest + GoogleTest).
-#include "MainWindow.h"
+#include "EditorTestSupport.h"
 
 #include "LogPanel.h"
 #include "OutlinerView.h"
@@ -19,17 +19,9 @@
 #include <fstream>
 
 using namespace rs;
+using namespace rs::test;
 
 namespace {
-
-const QString kSample = QString(RIGSMITH_SOURCE_DIR) + "/resources/samples/biped.yml";
-
-std::string outputPath(const std::string& name)
-{
-    const auto dir = std::filesystem::temp_directory_path() / "rigsmith-editor-tests";
-    std::filesystem::create_directories(dir);
-    return (dir / name).string();
-}
 
 void clickInstance(app::MainWindow& w, const QString& name)
 {
@@ -40,17 +32,6 @@ void clickInstance(app::MainWindow& w, const QString& name)
     outliner->scrollTo(found.front());
     QTest::mouseClick(outliner->viewport(), Qt::LeftButton, {}, outliner->visualRect(found.front()).center());
 }
-
-struct Editor {
-    app::MainWindow window;
-    Editor()
-    {
-        window.setProperty("skipUnsavedPrompt", true);
-        window.show();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
-        EXPECT_TRUE(window.openFile(kSample));
-    }
-};
 
 } // namespace
 

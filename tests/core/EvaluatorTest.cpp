@@ -70,6 +70,24 @@ TEST(Evaluator, IkReachesEveryReachableTarget)
     }
 }
 
+TEST(Evaluator, IkBendsTowardsThePoleOnBothSides)
+{
+    PosedRig r("biped");
+    for (const std::string limb : {"leg.L", "leg.R", "arm.L", "arm.R"}) {
+        Pose pose = r.defaults();
+        pose[r.channel(limb + "::ctrls.switch", "ik_blend")] = 1.0;
+        const Vec3 root = r.restPosition(limb + "::ik.0"), end = r.restPosition(limb + "::ik.2");
+        pose = r.moveTo(pose, limb + "::ctrls.ik", end + (root - end) * 0.3, limb + "::ik.2"); // bend the limb a lot
+        r.evaluate(pose);
+        const Vec3 knee = r.position(limb + "::ik.1"), target = r.position(limb + "::ik.2");
+        const Vec3 pole = r.position(limb + "::ctrls.pole");
+        const Vec3 line = glm::normalize(target - root);
+        auto away = [&](const Vec3& p) { return (p - root) - line * glm::dot(p - root, line); };
+        EXPECT_GT(glm::dot(glm::normalize(away(knee)), glm::normalize(away(pole))), 0.99) << limb;
+        EXPECT_GT(glm::length(away(knee)), 0.1) << limb;
+    }
+}
+
 TEST(Evaluator, IkStretchesBeyondReachOnlyWhenStretchIsOn)
 {
     PosedRig r("biped");

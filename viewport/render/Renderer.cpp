@@ -189,6 +189,15 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     draw(curves, GL_LINES, 1.0f);
     draw(skinPoints, GL_POINTS, 6.0f);
     draw(guidePoints, GL_POINTS, 10.0f);
+    std::vector<Vertex> overlay;
+    for (const auto& c : scene.overlay)
+        for (std::size_t i = 1; i < c.points.size(); ++i) {
+            push(overlay, c.points[i - 1], c.color);
+            push(overlay, c.points[i], c.color);
+        }
+    glLineWidth(2.0f); // core profiles may clamp this to 1; the gizmo colours still stand out
+    draw(overlay, GL_LINES, 1.0f);
+    glLineWidth(1.0f);
     glBindVertexArray(0);
     glUseProgram(0);
 }
