@@ -70,6 +70,43 @@ TEST(Evaluator, IkReachesEveryReachableTarget)
     }
 }
 
+TEST(Evaluator, QuadrupedHindLegIkReachesWithItsFourJointChain)
+{
+    PosedRig r("quadruped");
+    for (const std::string limb : {"hind_leg.L", "hind_leg.R"}) {
+        Pose pose = r.defaults();
+        pose[r.channel(limb + "::ctrls.switch", "ik_blend")] = 1.0;
+        pose[r.channel(limb + "::ctrls.switch", "stretch")] = 0.0;
+        const Vec3 end = r.restPosition(limb + "::ik.3");
+        std::vector<double> lengths;
+        for (int i = 0; i < 3; ++i)
+            lengths.push_back(glm::length(r.restPosition(limb + "::ik." + std::to_string(i + 1)) -
+                                          r.restPosition(limb + "::ik." + std::to_string(i))));
+        for (const Vec3& offset : {Vec3(0.0, 0.1, 0.05), Vec3(0.02, 0.15, -0.05), Vec3(-0.03, 0.05, 0.1)}) {
+            pose = r.moveTo(pose, limb + "::ctrls.ik", end + offset, limb + "::ik.3");
+            r.evaluate(pose);
+            EXPECT_LT(glm::length(r.position(limb + "::ik.3") - (end + offset)), 1e-5) << limb;
+            for (int i = 0; i < 3; ++i) // rigid segments: the hock and fetlock keep their lengths
+                EXPECT_NEAR(glm::length(r.position(limb + "::ik." + std::to_string(i + 1)) -
+                                        r.position(limb + "::ik." + std::to_string(i))),
+                            lengths[i], 1e-9);
+        }
+    }
+}
+
+TEST(Evaluator, TailSplineFollowsItsLastControl)
+{
+    PosedRig r("quadruped");
+    Pose pose = r.defaults();
+    pose[r.channel("tail::ctrls.spline.0", "stretch")] = 1.0;
+    const Vec3 tip = r.restPosition("tail::drv.7");
+    pose = r.moveTo(pose, "tail::ctrls.spline.3", r.restPosition("tail::ctrls.spline.3") + Vec3(0.0, 0.3, 0.0),
+                    "tail::ctrls.spline.3");
+    r.evaluate(pose);
+    EXPECT_GT(r.position("tail::drv.7").y, tip.y + 0.2);             // the tip follows the control up
+    EXPECT_LT(glm::length(r.position("tail::drv.0") - r.restPosition("tail::drv.0")), 1e-9); // the base stays
+}
+
 TEST(Evaluator, IkBendsTowardsThePoleOnBothSides)
 {
     PosedRig r("biped");

@@ -128,6 +128,22 @@ TEST(PoseTools, SpaceSwitchWithMatchingKeepsTheHeadWhereItIs)
     EXPECT_GT(maxAbsDifference(r.evaluate(jumped).worldMatrix(r.index("neck::skin.head")), before), 0.01);
 }
 
+TEST(PoseTools, IkControlInCogSpaceFollowsTheCogAfterAMatchedSwitch)
+{
+    PosedRig r("biped");
+    Pose pose = r.defaults();
+    pose[r.channel("spine::ctrls.cog", "tx")] = 0.1;
+    pose[r.channel("spine::ctrls.cog", "ry")] = 20.0;
+    const int space = r.channel("arm.L::ctrls.ik", "space");
+    EXPECT_EQ(pose[space], 0.0); // world by default
+    const Mat4 before = r.evaluate(pose).worldMatrix(r.index("arm.L::ctrls.ik"));
+    pose = r.posing->switchSpace(pose, space, 2.0, true); // cog, matched
+    EXPECT_LT(maxAbsDifference(r.evaluate(pose).worldMatrix(r.index("arm.L::ctrls.ik")), before), 1e-9);
+    pose[r.channel("spine::ctrls.cog", "ty")] = -0.2; // the cog drops: the hand goes with it
+    r.evaluate(pose);
+    EXPECT_NEAR(r.position("arm.L::ctrls.ik").y, translationOf(before).y - 0.2, 1e-9);
+}
+
 TEST(PoseTools, ResetRestoresDefaultsAndKeepsLockedChannels)
 {
     PosedRig r("biped");

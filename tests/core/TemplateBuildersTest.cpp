@@ -104,7 +104,7 @@ TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
         EXPECT_EQ(n.name.substr(0, n.name.rfind("_R")), left.name.substr(0, left.name.rfind("_L"))) << n.id;
         ++pairs;
     }
-    EXPECT_EQ(pairs, 128u) << "arms, legs and ten fingers";
+    EXPECT_EQ(pairs, 130u) << "arms (with their IK space groups), legs and ten fingers";
     // Constraints come in pairs too.
     for (const auto& c : rig.constraints)
         if (auto r = c.id.find(".R::"); r != std::string::npos)
@@ -153,8 +153,15 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     // The pole sits behind the elbow, the knee's pole in front of the knee.
     EXPECT_LT(at(rig, "arm.L::ctrls.pole").z, elbow.z - 0.1);
     EXPECT_GT(at(rig, "leg.L::ctrls.pole").z, at(rig, "leg.L::blend.1").z + 0.1);
-    // IK controllers live in world space, under the post transform.
-    EXPECT_EQ(rig.nodes[node(rig, "leg.L::roots.ik").parent].id, "world::grps.post");
+    // IK controllers live in a space group under the post transform, switched by
+    // their space attribute (world by default; cog, hips... on demand).
+    EXPECT_EQ(rig.nodes[node(rig, "leg.L::roots.ik").parent].id, "leg.L::spaces.ik");
+    EXPECT_EQ(rig.nodes[node(rig, "leg.L::spaces.ik").parent].id, "world::grps.post");
+    const auto* space = constraint(rig, "leg.L::cns.ik_space");
+    ASSERT_NE(space, nullptr);
+    EXPECT_EQ(rig.nodes[space->targets[2]].id, "spine::ctrls.cog");
+    EXPECT_EQ(node(rig, "leg.L::ctrls.ik").attribute("space")->labels,
+              (std::vector<std::string>{"world", "root", "cog", "hips"}));
 }
 
 TEST(Templates, TheOptionsChangeWhatTheLimbBuilds)

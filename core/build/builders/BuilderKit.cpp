@@ -186,4 +186,26 @@ double guideNumber(const std::map<std::string, Value>& guides, const std::string
     return fallback;
 }
 
+void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
+                    const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly)
+{
+    const std::string chosen = ctx.optionString(option);
+    std::vector<model::RigNodeIndex> targets;
+    int index = 0;
+    for (std::size_t i = 0; i < spaces.size(); ++i) {
+        model::RigNodeIndex target = i == 0 ? first : ctx.space(spaces[i]);
+        if (target == model::kNoNode) {
+            if (spaces[i] == chosen)
+                ctx.warning(option + " '" + chosen + "' is not a space of this rig; it follows '" + spaces.front() + "'", option);
+            target = first;
+        }
+        if (spaces[i] == chosen)
+            index = int(i);
+        targets.push_back(target);
+    }
+    const std::string attribute = ctx.addEnumAttribute(control, "space", index, spaces);
+    ctx.addConstraint(model::ConstraintKind::Space, tag, {group}, targets, {{"space", attribute}},
+                      orientOnly ? std::map<std::string, double>{{"orient_only", 1.0}} : std::map<std::string, double>{});
+}
+
 } // namespace rs::build::kit

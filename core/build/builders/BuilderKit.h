@@ -45,6 +45,14 @@ model::RigNodeIndex addSetup(BuildContext& ctx, model::RigNodeKind kind, const s
                              std::optional<int> index, model::RigNodeIndex parent, const Mat4& world,
                              model::JointId source = model::kNoId);
 
+// A space switch: `group` (the control's offset parent) follows one of
+// `spaces` (named spaces of the rig; entry 0 is `first`, the group's own
+// parent), chosen by an enum attribute "space" on `control` whose default is
+// the option `option`. A space missing from this rig falls back to `first`
+// (warned when it is the default). orientOnly keeps the position from the parent.
+void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
+                    const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly);
+
 // Guide positions of a structure tag; nullopt (with the error reported) when it fails.
 std::optional<std::vector<Vec3>> positions(const BuildContext& ctx, const std::vector<model::JointId>& joints);
 // The `chain` structure tag with at least `minimum` joints (else an error naming

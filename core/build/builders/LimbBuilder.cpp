@@ -76,6 +76,7 @@ public:
     bool gather(const BuildContext& ctx) const override { return guideOf(ctx).has_value(); }
 
     void generate(BuildContext& ctx) const override;
+    void configure(BuildContext& ctx) const override;
 
 private:
     bool legLike() const { return m_kind != LimbKind::Arm; }
@@ -149,6 +150,19 @@ void LimbBuilder::bendOf(const BuildContext& ctx, const LimbGuide& g, Vec3& norm
         normal = -normal;
 }
 
+// Spaces an IK control can follow: the world first, then the rig's named spaces.
+const std::vector<std::string> kArmSpaces = {"world", "root", "cog", "chest", "head"};
+const std::vector<std::string> kLegSpaces = {"world", "root", "cog", "hips"};
+
+void LimbBuilder::configure(BuildContext& ctx) const
+{
+    const auto group = ctx.findNode("spaces.ik");
+    const auto control = ctx.findNode(ctx.optionBool("do_ctrl") ? "ctrls.ik" : "roots.ik");
+    if (group && control)
+        kit::addSpaceSwitch(ctx, *group, *control, "ik_space", "cns.ik_space", ctx.node(*group).parent,
+                            legLike() ? kLegSpaces : kArmSpaces, false);
+}
+
 void LimbBuilder::generate(BuildContext& ctx) const
 {
     const LimbGuide g = *guideOf(ctx);
@@ -191,7 +205,10 @@ void LimbBuilder::generate(BuildContext& ctx) const
 
     // IK controller, pole vector and the reverse foot.
     const Mat4 ikFrame = legLike() ? kit::uprightFrame(g.points[k - 1]) : frames[k - 1];
-    const auto ikCtrl = kit::addControl(ctx, "ik", "ik", {}, world, ikFrame, g.limb[k - 1]).ctrl;
+    // The IK control hangs under a space group that follows the space `ik_space` picks.
+    const auto ikSpace = ctx.createNode(RigNodeKind::Group, "spaces.ik", ctx.nodeName(model::NameRole::Group, "ik_space"), world,
+                                        ikFrame, g.limb[k - 1]);
+    const auto ikCtrl = kit::addControl(ctx, "ik", "ik", {}, ikSpace, ikFrame, g.limb[k - 1]).ctrl;
     double chainLength = 0.0;
     for (std::size_t i = 1; i < k; ++i)
         chainLength += glm::length(g.points[i] - g.points[i - 1]);

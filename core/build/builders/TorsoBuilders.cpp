@@ -140,24 +140,8 @@ public:
         const auto headCtrl = ctx.findNode(ctx.optionBool("do_ctrl") ? "ctrls.head" : "roots.head");
         if (!group || !headCtrl)
             return;
-        const std::string chosen = ctx.optionString("head_space");
-        const auto neck = ctx.node(*group).parent;
-        std::vector<RigNodeIndex> targets;
-        double index = 0.0;
-        for (std::size_t i = 0; i < kHeadSpaces.size(); ++i) {
-            RigNodeIndex target = i == 0 ? neck : ctx.space(kHeadSpaces[i]);
-            if (target == model::kNoNode) {
-                if (kHeadSpaces[i] == chosen)
-                    ctx.warning("head space '" + chosen + "' is not in this rig; the head follows the neck", "head_space");
-                target = neck;
-            }
-            if (kHeadSpaces[i] == chosen)
-                index = static_cast<double>(i);
-            targets.push_back(target);
-        }
-        const std::string space = ctx.addEnumAttribute(*headCtrl, "space", int(index),
-                                                       std::vector<std::string>(kHeadSpaces.begin(), kHeadSpaces.end()));
-        ctx.addConstraint(ConstraintKind::Space, "cns.head_space", {*group}, targets, {{"space", space}}, {{"orient_only", 1.0}});
+        // Space 0 is the neck the group hangs from; the others are named spaces.
+        kit::addSpaceSwitch(ctx, *group, *headCtrl, "head_space", "cns.head_space", ctx.node(*group).parent, kHeadSpaces, true);
     }
 };
 
