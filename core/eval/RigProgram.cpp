@@ -42,7 +42,6 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         NodeStep& s = p.m_nodes[i];
         rest[i] = Affine::fromMatrix(node.worldMatrix);
         s.parent = node.parent;
-        s.restWorld = rest[i];
         s.restLocal = node.parent == model::kNoNode ? rest[i] : rest[node.parent].inverse() * rest[i];
         s.identityLocal = maxAbsDifference(s.restLocal.matrix(), Mat4(1.0)) < 1e-12;
         if (s.identityLocal)
@@ -115,6 +114,12 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         }
         if (!ok)
             c.driven.clear(); // keeps indices aligned with rig.constraints; never run
+        c.slot = int(p.m_constraints.size());
+        if (ok && c.kind == model::ConstraintKind::Twist && !p.m_constraints.empty()) {
+            const CompiledConstraint& previous = p.m_constraints.back();
+            if (previous.kind == model::ConstraintKind::Twist && previous.targets == c.targets && !previous.driven.empty())
+                c.shareTwistOf = previous.shareTwistOf >= 0 ? previous.shareTwistOf : previous.slot;
+        }
         p.m_maxSamples = std::max(p.m_maxSamples, c.kind == model::ConstraintKind::Spline
                                                       ? std::size_t(c.samplesPerSegment) * c.targets.size() + 1
                                                       : std::size_t(0));
@@ -122,6 +127,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
     }
     if (hasErrors(diagnostics))
         return Result<RigProgram>::failure(diagnostics);
+    p.m_restWorld = rest;
 
     // Writers of each node, in order: its own placement (unless a chain solver
     // replaces it), then every constraint that drives it.
@@ -163,6 +169,8 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         for (model::RigNodeIndex target : c.targets)
             if (!writers[target].empty() && writers[target].back() != n + k)
                 depend(n + k, writers[target].back());
+        if (c.shareTwistOf >= 0) // it reads the angle its segment's first twist computes
+            depend(n + k, std::uint32_t(n + c.shareTwistOf));
     }
     std::deque<std::uint32_t> ready;
     for (std::uint32_t op = 0; op < ops; ++op)
@@ -195,10 +203,9 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
 EvalState RigProgram::makeState() const
 {
     EvalState state;
-    state.world.resize(m_nodes.size());
-    for (std::size_t i = 0; i < m_nodes.size(); ++i)
-        state.world[i] = m_nodes[i].restWorld;
+    state.world = m_restWorld;
     state.arcLengths.resize(m_maxSamples);
+    state.twistAngles.resize(m_constraints.size());
     return state;
 }
 

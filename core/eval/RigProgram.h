@@ -27,6 +27,7 @@ struct CompiledConstraint; // RigProgram.cpp / Solvers
 struct EvalState {
     std::vector<Affine> world;
     std::vector<double> arcLengths;
+    std::vector<double> twistAngles; // per constraint: the twist a segment's twist joints share
     Mat4 worldMatrix(model::RigNodeIndex node) const { return world[node].matrix(); }
 };
 
@@ -50,12 +51,11 @@ public:
     // the node's channels act in (parent world * rest local, compensated), so
     // that world = frame * channelMatrix.
     Affine channelFrame(model::RigNodeIndex node, const Pose& pose, const EvalState& state) const;
-    const Affine& restWorld(model::RigNodeIndex node) const { return m_nodes[node].restWorld; }
+    const Affine& restWorld(model::RigNodeIndex node) const { return m_restWorld[node]; }
 
     struct NodeStep {
         model::RigNodeIndex parent = model::kNoNode;
         Affine restLocal;
-        Affine restWorld;
         int channels = -1;          // first transform channel, -1 when none
         int parentChannels = -1;    // the parent's, for segment scale compensation
         bool scaleCompensate = false;
@@ -71,6 +71,7 @@ private:
 
     ChannelLayout m_channels;
     std::vector<NodeStep> m_nodes;
+    std::vector<Affine> m_restWorld; // apart from the steps: the hot loop never reads it
     std::vector<CompiledConstraint> m_constraints;
     std::vector<Step> m_steps;
     std::size_t m_maxSamples = 0;

@@ -96,19 +96,26 @@ void solveAim(const CompiledConstraint& c, std::vector<Affine>& world)
     driven = compose(frame * c.offsets[0].linear, driven.scale(), origin);
 }
 
-void solveTwist(const CompiledConstraint& c, std::vector<Affine>& world)
+void solveTwist(const CompiledConstraint& c, EvalState& state)
 {
+    std::vector<Affine>& world = state.world;
     const Affine& a = world[c.targets[0]];
     const Affine& b = world[c.targets[1]];
     const Mat3 ra = a.rotation();
     const Quat qa = glm::quat_cast(ra);
-    // The change of b relative to a since rest, then its twist about the bone.
-    Quat delta = glm::conjugate(c.restRelative) * (glm::conjugate(qa) * rotationOf(b));
-    if (delta.w < 0.0)
-        delta = -delta; // the shorter way round: the twist stays within +-180 degrees
-    const double along = glm::dot(Vec3(delta.x, delta.y, delta.z), c.twistAxis);
-    const double angle = 2.0 * std::atan2(along, delta.w);
-    const Mat3 r = glm::mat3_cast(qa * glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
+    double angle;
+    if (c.shareTwistOf >= 0) { // twist joints of one segment share the segment's twist
+        angle = state.twistAngles[c.shareTwistOf];
+    } else {
+        // The change of b relative to a since rest, then its twist about the bone.
+        Quat delta = glm::conjugate(c.restRelative) * (glm::conjugate(qa) * rotationOf(b));
+        if (delta.w < 0.0)
+            delta = -delta; // the shorter way round: the twist stays within +-180 degrees
+        const double along = glm::dot(Vec3(delta.x, delta.y, delta.z), c.twistAxis);
+        angle = 2.0 * std::atan2(along, delta.w);
+        state.twistAngles[c.slot] = angle;
+    }
+    const Mat3 r = ra * glm::mat3_cast(glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
     Affine& driven = world[c.driven.front()];
     const Vec3 position = glm::mix(a.translation, b.translation, c.fraction) + a.linear * c.restDelta;
     driven = compose(r, driven.scale(), position);
@@ -221,7 +228,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Scale: solveBlendLike(c, world, false, false, true); break;
     case ConstraintKind::Blend: solveFkIkBlend(c, pose, world); break;
     case ConstraintKind::Aim: solveAim(c, world); break;
-    case ConstraintKind::Twist: solveTwist(c, world); break;
+    case ConstraintKind::Twist: solveTwist(c, state); break;
     case ConstraintKind::Space: solveSpace(c, pose, world); break;
     case ConstraintKind::Drive: solveDrive(c, pose, world); break;
     case ConstraintKind::Ik: solveIk(c, pose, world); break;

@@ -37,6 +37,8 @@ struct CompiledConstraint {
     Vec3 midOffset{0.0};               // 3-segment IK: joint 2 in the rest virtual-bone frame
 
     // Twist: rest relative rotation of targets[1] to targets[0], twist axis in targets[0]'s frame.
+    int slot = 0;                      // this constraint's index (its scratch in EvalState)
+    int shareTwistOf = -1;             // an earlier twist with the same targets: reuse its angle
     Quat restRelative{1, 0, 0, 0};
     Vec3 twistAxis{1, 0, 0};
     Vec3 restDelta{0.0};
