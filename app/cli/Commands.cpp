@@ -2,6 +2,7 @@
 
 #include "base/Paths.h"
 #include "build/RigBuilder.h"
+#include "eval/PoseTools.h"
 #include "io/GltfExport.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
@@ -29,7 +30,8 @@ void print(const Diagnostics& diagnostics)
 
 std::string usage()
 {
-    return "usage: rigsmith-cli build GUIDE [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
+    return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
+           "       (--posed: write the rig in the guide's test pose instead of its rest pose)\n"
            "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
            "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
            "       rigsmith-cli check-templates [DIR...]\n"
@@ -40,9 +42,12 @@ std::string usage()
 int runBuild(const std::vector<std::string>& args)
 {
     std::string guidePath, dumpPath, outPath, skeletonPath;
+    bool posed = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        if ((a == "--dump" || a == "-o" || a == "--skeleton") && i + 1 < args.size())
+        if (a == "--posed")
+            posed = true;
+        else if ((a == "--dump" || a == "-o" || a == "--skeleton") && i + 1 < args.size())
             (a == "--dump" ? dumpPath : a == "-o" ? outPath : skeletonPath) = args[++i];
         else if (!a.empty() && a[0] != '-' && guidePath.empty())
             guidePath = a;
@@ -63,9 +68,17 @@ int runBuild(const std::vector<std::string>& args)
     if (!guide)
         return 1;
     const auto start = std::chrono::steady_clock::now();
-    const model::Rig rig = build::buildRig(*guide, *templates);
+    model::Rig rig = build::buildRig(*guide, *templates);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     print(rig.diagnostics);
+    if (posed && !hasErrors(rig.diagnostics)) {
+        auto withPose = eval::posedRig(rig, guide->pose);
+        print(withPose.diagnostics());
+        if (!withPose)
+            return 1;
+        rig = withPose.take();
+        std::cerr << "posed with " << guide->pose.size() << " posed nodes from the guide\n";
+    }
     std::cerr << "built " << rig.nodes.size() << " nodes (" << rig.count(model::RigNodeKind::Controller)
               << " controllers, " << rig.skinJointCount() << " skin joints) in " << ms << " ms\n";
     int status = hasErrors(rig.diagnostics) ? 1 : 0;

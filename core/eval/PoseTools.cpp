@@ -214,4 +214,21 @@ Pose Posing::switchSpace(const Pose& pose, int channel, double value, bool keepP
     return out;
 }
 
+Result<model::Rig> posedRig(const model::Rig& rig, const model::PoseValues& pose)
+{
+    auto program = RigProgram::compile(rig);
+    if (!program)
+        return Result<model::Rig>::failure(program.takeDiagnostics());
+    EvalState state = program->makeState();
+    program->evaluate(poseFromValues(rig, program->channels(), pose), state);
+    model::Rig out = rig;
+    for (model::RigNodeIndex i = 0; i < out.nodes.size(); ++i) {
+        auto& node = out.nodes[i];
+        node.worldMatrix = state.worldMatrix(i);
+        node.localMatrix = node.parent == model::kNoNode ? node.worldMatrix
+                                                         : (state.world[node.parent].inverse() * state.world[i]).matrix();
+    }
+    return out;
+}
+
 } // namespace rs::eval

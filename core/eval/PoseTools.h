@@ -50,4 +50,9 @@ private:
     EvalState m_state;
 };
 
+// A copy of `rig` whose world and local matrices are the evaluation of `pose`
+// (the document's test pose): what a posed dump or export writes. Fails with
+// the compile diagnostics when the rig cannot be evaluated.
+Result<model::Rig> posedRig(const model::Rig& rig, const model::PoseValues& pose);
+
 } // namespace rs::eval

@@ -179,6 +179,20 @@ TEST(PoseTools, PoseEditsAreUndoableAndSavedWithTheGuide)
     EXPECT_TRUE(guide.pose.empty());
 }
 
+TEST(PoseTools, PosedRigCarriesTheGuidePoseForDumpsAndExports)
+{
+    PosedRig r("biped");
+    model::PoseValues values{{"arm.L::ctrls.switch", {{"ik_blend", 0.0}}}, {"arm.L::ctrls.fk.0", {{"rz", -50.0}}}};
+    auto posed = eval::posedRig(r.rig, values);
+    ASSERT_TRUE(posed.ok());
+    const auto& state = r.evaluate(eval::poseFromValues(r.rig, r.program->channels(), values));
+    const auto hand = r.index("arm.L::skin.limb.2");
+    EXPECT_LT(maxAbsDifference(posed->nodes[hand].worldMatrix, state.worldMatrix(hand)), 1e-12);
+    EXPECT_GT(glm::length(translationOf(posed->nodes[hand].worldMatrix) - translationOf(r.rig.nodes[hand].worldMatrix)), 0.2);
+    const auto parent = posed->nodes[hand].parent;
+    EXPECT_LT(maxAbsDifference(posed->nodes[parent].worldMatrix * posed->nodes[hand].localMatrix, posed->nodes[hand].worldMatrix), 1e-9);
+}
+
 TEST(Pickwalk, WalksTheBipedControllersAcrossTemplates)
 {
     PosedRig r("biped");
