@@ -54,6 +54,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
     }
 
     // Constraints: resolve attribute paths, then the rest data of each solver.
+    p.m_constraints.reserve(rig.constraints.size());
     for (const model::RigConstraint& rc : rig.constraints) {
         CompiledConstraint c;
         c.kind = rc.kind;

@@ -142,14 +142,14 @@ std::string prepareSpline(CompiledConstraint& c, const std::vector<Affine>& rest
             return glm::length(p - target);
         };
         // Closest point: a coarse scan, then a golden-section search around it.
-        const int coarse = 64 * int(n - 1);
+        const int coarse = 32 * int(n - 1);
         double best = 0.0, bestDistance = distance(0.0);
         for (int i = 1; i <= coarse; ++i)
             if (const double u = double(i) * double(n - 1) / coarse, dd = distance(u); dd < bestDistance)
                 best = u, bestDistance = dd;
         double lo = std::max(0.0, best - double(n - 1) / coarse), hi = std::min(double(n - 1), best + double(n - 1) / coarse);
         const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-        for (int it = 0; it < 80; ++it) {
+        for (int it = 0; it < 48; ++it) { // the bracket shrinks to 1e-10 of a segment
             const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
             if (distance(a) < distance(b)) hi = b; else lo = a;
         }

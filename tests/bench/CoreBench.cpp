@@ -197,6 +197,16 @@ void BM_EvaluateBiped(benchmark::State& state)
 }
 BENCHMARK(BM_EvaluateBiped)->Unit(benchmark::kMicrosecond);
 
+// Compiling the built biped into its evaluation program (every build does it
+// once to check for cycles; the editor once more to pose the rig).
+void BM_CompileBipedProgram(benchmark::State& state)
+{
+    const model::Rig rig = build::buildRig(biped(), registry());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(eval::RigProgram::compile(rig));
+}
+BENCHMARK(BM_CompileBipedProgram)->Unit(benchmark::kMicrosecond);
+
 // The same evaluation without the pose update: the evaluator alone.
 void BM_EvaluateBipedFixedPose(benchmark::State& state)
 {
