@@ -12,11 +12,12 @@ constexpr int kOrderAxes[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1
 
 // Left-multiplies `m` by the rotation about `axis`: only two rows change, which
 // is much cheaper than a full matrix product (this runs for every controller).
-void rotateRows(Mat3& m, int axis, double radians)
+void rotateRows(Mat3& m, int axis, double degrees)
 {
-    if (radians == 0.0)
+    if (degrees == 0.0)
         return;
-    const double c = std::cos(radians), s = std::sin(radians);
+    double s, c;
+    sinCosDegrees(degrees, s, c);
     const int a = (axis + 1) % 3, b = (axis + 2) % 3;
     for (int column = 0; column < 3; ++column) {
         const double ra = m[column][a], rb = m[column][b];
@@ -102,12 +103,19 @@ double ChannelLayout::clamp(int channel, double value) const
     return c.limited ? std::clamp(value, c.min, c.max) : value;
 }
 
+void sinCosDegrees(double degrees, double& sine, double& cosine)
+{
+    const double x = degrees * (glm::pi<double>() / 180.0);
+    sine = std::sin(x); // one sincos call once inlined
+    cosine = std::cos(x);
+}
+
 Mat3 eulerRotation(const Vec3& degrees, model::RotateOrder order)
 {
     const int* axes = kOrderAxes[static_cast<int>(order)];
     Mat3 r(1.0);
     for (int k = 0; k < 3; ++k)
-        rotateRows(r, axes[k], glm::radians(degrees[axes[k]]));
+        rotateRows(r, axes[k], degrees[axes[k]]);
     return r;
 }
 

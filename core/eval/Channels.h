@@ -55,6 +55,8 @@ private:
     std::vector<int> m_transform, m_first, m_count;
 };
 
+// sin and cos of an angle in degrees.
+void sinCosDegrees(double degrees, double& sine, double& cosine);
 // Rotation of Euler angles in degrees applied in `order` (first letter first).
 Mat3 eulerRotation(const Vec3& degrees, model::RotateOrder order);
 // The Euler angles (degrees) of a rotation for `order`; the inverse of eulerRotation.

@@ -147,7 +147,8 @@ void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affin
         return;
     // Right-multiplying by a rotation about local axis k mixes the other two columns.
     const int k = std::clamp(int(c.axis), 0, 2), a = (k + 1) % 3, b = (k + 2) % 3;
-    const double cosine = std::cos(glm::radians(amount)), sine = std::sin(glm::radians(amount));
+    double sine, cosine;
+    sinCosDegrees(amount, sine, cosine);
     const Vec3 columnA = driven.linear[a], columnB = driven.linear[b];
     driven.linear[a] = columnA * cosine + columnB * sine;
     driven.linear[b] = columnB * cosine - columnA * sine;
