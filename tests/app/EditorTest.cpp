@@ -194,3 +194,22 @@ TEST(Editor, FileNewListsTheSamplesAndStartsAnUntitledCopy)
     w.action("new:empty")->trigger();
     EXPECT_TRUE(w.session().document().instances().empty());
 }
+
+TEST(Editor, OutlinerArrowKeysPickwalkTheTemplateInstances)
+{
+    Editor e;
+    app::MainWindow& w = e.window;
+    clickInstance(w, "arm");
+    auto selected = [&] { return QString::fromStdString(w.session().document().instance(w.session().selection().instance)->name); };
+    ASSERT_EQ(selected(), "arm");
+    QTest::keyClick(w.outliner(), Qt::Key_Up);
+    EXPECT_EQ(selected(), "spine");
+    QTest::keyClick(w.outliner(), Qt::Key_Down);
+    EXPECT_EQ(selected(), "neck"); // the spine's first child
+    QTest::keyClick(w.outliner(), Qt::Key_Right);
+    EXPECT_EQ(selected(), "arm");
+    QTest::keyClick(w.outliner(), Qt::Key_Down);
+    QTest::keyClick(w.outliner(), Qt::Key_Left);
+    EXPECT_EQ(selected(), "pinky"); // siblings wrap
+    EXPECT_EQ(w.outliner()->selectedInstance(), w.session().selection().instance); // the tree follows
+}
