@@ -57,7 +57,10 @@ void MainWindow::connectDocument()
         refreshViews();
         updateTitle();
     });
-    connect(&m_session, &EditorSession::rigChanged, this, &MainWindow::refreshScene);
+    connect(&m_session, &EditorSession::rigChanged, this, [this] {
+        m_channelBox->invalidate(); // a rebuilt rig has new channel indices
+        refreshScene();
+    });
     connect(&m_session, &EditorSession::selectionChanged, this, [this] {
         m_outliner->selectInstance(m_session.selection().instance);
         refreshScene();

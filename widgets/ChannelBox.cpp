@@ -42,6 +42,12 @@ ChannelBox::ChannelBox(QWidget* parent) : QWidget(parent)
     layout->addStretch(1);
 }
 
+void ChannelBox::invalidate()
+{
+    m_layout = nullptr;
+    m_node = model::kNoNode;
+}
+
 bool ChannelBox::matchesSpaces() const { return m_match->isChecked(); }
 
 QWidget* ChannelBox::editorFor(int channel) const

@@ -25,6 +25,8 @@ public:
     // Shows `node`'s channels (kNoNode or no layout: empty). Rebuilds the rows
     // only when the node changes; otherwise just updates the values.
     void showNode(const eval::ChannelLayout* layout, model::RigNodeIndex node, const QString& title, const eval::Pose* pose);
+    // Forget the rows (the rig was rebuilt: channel indices may have moved).
+    void invalidate();
     bool matchesSpaces() const;
     // The editor of channel `channel` (QDoubleSpinBox or QComboBox), for tests.
     QWidget* editorFor(int channel) const;
