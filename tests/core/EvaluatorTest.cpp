@@ -14,6 +14,17 @@ namespace {
 using eval::Pose;
 using test::PosedRig;
 
+// The rest shoulder, the rest wrist and the full reach of a limb's IK chain.
+struct Reach {
+    Vec3 root, end;
+    double length = 0.0;
+};
+Reach reachOf(const PosedRig& r, const std::string& limb)
+{
+    const Vec3 root = r.restPosition(limb + "::ik.0"), mid = r.restPosition(limb + "::ik.1"), end = r.restPosition(limb + "::ik.2");
+    return {root, end, glm::length(mid - root) + glm::length(end - mid)};
+}
+
 class SampleEvaluation : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SampleEvaluation, DefaultPoseReproducesTheRestPose)
@@ -50,9 +61,7 @@ TEST(Evaluator, IkReachesEveryReachableTarget)
         Pose pose = r.defaults();
         pose[r.channel(id + "::ctrls.switch", "ik_blend")] = 1.0;
         pose[r.channel(id + "::ctrls.switch", "stretch")] = 0.0;
-        const Vec3 root = r.restPosition(id + "::ik.0");
-        const double reach = glm::length(r.restPosition(id + "::ik.1") - root) +
-                             glm::length(r.restPosition(id + "::ik.2") - r.restPosition(id + "::ik.1"));
+        const auto [root, end, reach] = reachOf(r, id);
         std::mt19937 random(7);
         std::uniform_real_distribution<double> unit(-1.0, 1.0);
         for (int trial = 0; trial < 50; ++trial) {
@@ -130,9 +139,7 @@ TEST(Evaluator, IkStretchesBeyondReachOnlyWhenStretchIsOn)
     PosedRig r("biped");
     Pose pose = r.defaults();
     pose[r.channel("arm.L::ctrls.switch", "ik_blend")] = 1.0;
-    const Vec3 root = r.restPosition("arm.L::ik.0");
-    const Vec3 wrist = r.restPosition("arm.L::ik.2");
-    const double reach = glm::length(r.restPosition("arm.L::ik.1") - root) + glm::length(wrist - r.restPosition("arm.L::ik.1"));
+    const auto [root, wrist, reach] = reachOf(r, "arm.L");
     const Vec3 target = root + glm::normalize(wrist - root) * reach * 1.3;
     pose = r.moveTo(pose, "arm.L::ctrls.ik", target, "arm.L::ik.2");
     pose[r.channel("arm.L::ctrls.switch", "stretch")] = 1.0;
@@ -150,9 +157,7 @@ TEST(Evaluator, SoftIkEasesTheLastPartOfTheReach)
     pose[r.channel("arm.L::ctrls.switch", "ik_blend")] = 1.0;
     pose[r.channel("arm.L::ctrls.switch", "stretch")] = 0.0;
     pose[r.channel("arm.L::ctrls.switch", "soft_ik")] = 0.1;
-    const Vec3 root = r.restPosition("arm.L::ik.0");
-    const Vec3 wrist = r.restPosition("arm.L::ik.2");
-    const double reach = glm::length(r.restPosition("arm.L::ik.1") - root) + glm::length(wrist - r.restPosition("arm.L::ik.1"));
+    const auto [root, wrist, reach] = reachOf(r, "arm.L");
     pose = r.moveTo(pose, "arm.L::ctrls.ik", root + glm::normalize(wrist - root) * reach, "arm.L::ik.2");
     r.evaluate(pose);
     const double reached = glm::length(r.position("arm.L::ik.2") - root);
