@@ -34,9 +34,9 @@ ChannelBox::ChannelBox(QWidget* parent) : QWidget(parent)
     m_grid = new QGridLayout(m_rows);
     m_grid->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_rows);
-    m_match = new QCheckBox(tr("Match on space switch"), this);
+    m_match = new QCheckBox(tr("Match on switch"), this);
     m_match->setObjectName("matchSpaces");
-    m_match->setToolTip(tr("Switching a space keeps the control where it is instead of jumping"));
+    m_match->setToolTip(tr("Switching a space or the rotate order keeps the control where it is instead of jumping"));
     m_match->setChecked(true);
     layout->addWidget(m_match);
     layout->addStretch(1);

@@ -2,8 +2,8 @@
 // The channel box (Rig mode): the current controller's channels, as in Maya's.
 // Transform channels get spin boxes; custom channels (ik_blend, roll...) get a
 // spin box and a slider over their range; enum channels (space) a combo box
-// with their labels, plus a "match" switch so a space change keeps the control
-// in place. Locked channels are shown greyed. It only emits edits; the app
+// with their labels (the rotate order `ro` too), plus a "match" switch so a
+// space or rotate-order change keeps the control in place. Locked channels are shown greyed. It only emits edits; the app
 // turns each into one undoable step.
 #include "eval/Channels.h"
 

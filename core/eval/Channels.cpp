@@ -49,6 +49,18 @@ ChannelLayout::ChannelLayout(const model::Rig& rig)
                 c.locked = !animatable || node.channels.isLocked(i);
                 m_channels.push_back(std::move(c));
             }
+            static const std::vector<std::string> kOrders = {"xyz", "yzx", "zxy", "xzy", "yxz", "zyx"};
+            Channel order;
+            order.node = n;
+            order.name = "ro";
+            order.transform = kRotateOrderChannel;
+            order.defaultValue = double(static_cast<int>(node.channels.rotateOrder));
+            order.limited = true;
+            order.min = 0.0;
+            order.max = 5.0;
+            order.locked = !animatable;
+            order.labels = &kOrders;
+            m_channels.push_back(std::move(order));
         }
         for (const auto& attribute : node.attributes) {
             Channel c;
@@ -143,13 +155,9 @@ Vec3 eulerDegrees(const Mat3& rotation, model::RotateOrder order)
     return out;
 }
 
-Mat4 channelMatrix(const Pose& pose, int first, model::RotateOrder order)
+model::RotateOrder rotateOrderOf(const Pose& pose, int first)
 {
-    const double* v = pose.data() + first;
-    const Mat3 r = eulerRotation({v[3], v[4], v[5]}, order);
-    Mat4 m(Mat3(r[0] * v[6], r[1] * v[7], r[2] * v[8]));
-    m[3] = Vec4(v[0], v[1], v[2], 1.0);
-    return m;
+    return static_cast<model::RotateOrder>(std::clamp(int(pose[first + kRotateOrderChannel]), 0, 5));
 }
 
 Pose poseFromValues(const model::Rig& rig, const ChannelLayout& layout, const model::PoseValues& values)

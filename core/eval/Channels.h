@@ -1,8 +1,9 @@
 #pragma once
 // The animatable channels of a built rig, laid out flat so a pose is one
 // std::vector<double>: every controller's nine transform channels (tx ty tz,
-// rx ry rz in degrees, sx sy sz, in the controller's rest frame) followed by
-// its custom channels (the node's attributes: ik_blend, space, roll...).
+// rx ry rz in degrees, sx sy sz, in the controller's rest frame), its rotate
+// order `ro` (an enum, transform index 9, as Maya shows it in the channel box;
+// changing it through the tools keeps the control's orientation), then its custom channels (the node's attributes: ik_blend, space, roll...).
 // Attributes of other nodes (post_scale) are channels too, locked for
 // animators. Nodes that are not controllers have no transform channels: they
 // are locked by construction (seed 004's cleanup).
@@ -20,7 +21,7 @@ using Pose = std::vector<double>;
 struct Channel {
     model::RigNodeIndex node = model::kNoNode;
     std::string name;               // "tx".."sz" or the attribute name
-    int transform = -1;             // 0..8 for a transform channel, -1 for a custom one
+    int transform = -1;             // 0..8 transform, 9 the rotate order, -1 a custom channel
     double defaultValue = 0.0;
     double min = 0.0, max = 0.0;    // meaningful when `limited`
     bool limited = false;
@@ -61,8 +62,9 @@ void sinCosDegrees(double degrees, double& sine, double& cosine);
 Mat3 eulerRotation(const Vec3& degrees, model::RotateOrder order);
 // The Euler angles (degrees) of a rotation for `order`; the inverse of eulerRotation.
 Vec3 eulerDegrees(const Mat3& rotation, model::RotateOrder order);
-// translate * rotate * scale of the nine transform channels starting at `first`.
-Mat4 channelMatrix(const Pose& pose, int first, model::RotateOrder order);
+constexpr int kRotateOrderChannel = 9; // offset of `ro` from a controller's tx
+// The rotate order the pose gives the controller whose tx is at `first`.
+model::RotateOrder rotateOrderOf(const Pose& pose, int first);
 
 // The document keeps the rigger's test pose by node id and channel name, only
 // where it differs from the default, so it survives rebuilds.

@@ -73,8 +73,8 @@ Pose Posing::reflect(const Pose& from, Pose to, model::RigNodeIndex source, mode
     const int ta = layout.transformOf(source), tb = layout.transformOf(destination);
     if (ta >= 0 && tb >= 0) {
         const Vec3 t = k * Vec3(from[ta], from[ta + 1], from[ta + 2]);
-        const Mat3 r = k * eulerRotation({from[ta + 3], from[ta + 4], from[ta + 5]}, a.channels.rotateOrder) * glm::inverse(k);
-        const Vec3 angles = eulerDegrees(r, m_rig.nodes[destination].channels.rotateOrder);
+        const Mat3 r = k * eulerRotation({from[ta + 3], from[ta + 4], from[ta + 5]}, rotateOrderOf(from, ta)) * glm::inverse(k);
+        const Vec3 angles = eulerDegrees(r, rotateOrderOf(to, tb)); // the destination keeps its own order
         Vec3 s(0.0);
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j)
@@ -85,7 +85,7 @@ Pose Posing::reflect(const Pose& from, Pose to, model::RigNodeIndex source, mode
                 to[tb + i] = layout.clamp(tb + i, values[i]);
     }
     for (int i = layout.firstOf(source); i < layout.firstOf(source) + layout.countOf(source); ++i)
-        if (layout[i].transform < 0)
+        if (layout[i].transform < 0) // custom channels carry over as they are
             if (auto j = layout.find(destination, layout[i].name); j && !layout[*j].locked)
                 to[*j] = from[i];
     return to;
@@ -124,7 +124,7 @@ Pose Posing::placeAt(const Pose& pose, model::RigNodeIndex node, const Mat4& wor
     const Affine local = m_program.channelFrame(node, pose, m_state).inverse() * Affine::fromMatrix(world);
     Vec3 scale = local.scale();
     const Vec3 angles = eulerDegrees(Mat3(local.linear[0] / scale.x, local.linear[1] / scale.y, local.linear[2] / scale.z),
-                                     m_rig.nodes[node].channels.rotateOrder);
+                                     rotateOrderOf(pose, first));
     const double values[9] = {local.translation.x, local.translation.y, local.translation.z, angles.x, angles.y, angles.z,
                               scale.x, scale.y, scale.z};
     Pose out = pose;

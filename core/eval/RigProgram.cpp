@@ -8,12 +8,12 @@ namespace rs::eval {
 
 namespace {
 
-Affine channelAffine(const Pose& pose, int first, model::RotateOrder order)
+Affine channelAffine(const Pose& pose, int first)
 {
     const double* v = pose.data() + first;
     Mat3 r(1.0);
     if (v[3] != 0.0 || v[4] != 0.0 || v[5] != 0.0) // most controls are not rotated: skip the trigonometry
-        r = eulerRotation({v[3], v[4], v[5]}, order);
+        r = eulerRotation({v[3], v[4], v[5]}, rotateOrderOf(pose, first));
     return {Mat3(r[0] * v[6], r[1] * v[7], r[2] * v[8]), Vec3(v[0], v[1], v[2])};
 }
 
@@ -47,7 +47,6 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         if (s.identityLocal)
             s.restLocal = Affine{};
         s.channels = p.m_channels.transformOf(i);
-        s.order = node.channels.rotateOrder;
         s.scaleCompensate = node.scaleCompensate && node.parent != model::kNoNode;
         if (s.scaleCompensate)
             s.parentChannels = p.m_channels.transformOf(node.parent);
@@ -224,8 +223,8 @@ void RigProgram::evaluate(const Pose& pose, EvalState& state) const
             continue;
         }
         const Affine local = s.channels < 0 ? s.restLocal
-                             : s.identityLocal ? channelAffine(pose, s.channels, s.order)
-                                               : s.restLocal * channelAffine(pose, s.channels, s.order);
+                             : s.identityLocal ? channelAffine(pose, s.channels)
+                                               : s.restLocal * channelAffine(pose, s.channels);
         if (s.parent == model::kNoNode) {
             world[step.index] = local;
         } else if (s.scaleCompensate && s.parentChannels >= 0) {

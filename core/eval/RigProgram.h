@@ -60,7 +60,6 @@ public:
         int parentChannels = -1;    // the parent's, for segment scale compensation
         bool scaleCompensate = false;
         bool identityLocal = false;  // at its parent's place (controllers under their offset groups): one product less
-        model::RotateOrder order = model::RotateOrder::Xyz;
     };
 
 private:

@@ -144,6 +144,28 @@ TEST(PoseTools, IkControlInCogSpaceFollowsTheCogAfterAMatchedSwitch)
     EXPECT_NEAR(r.position("arm.L::ctrls.ik").y, translationOf(before).y - 0.2, 1e-9);
 }
 
+TEST(PoseTools, RotateOrderChangesKeepTheOrientationWhenMatched)
+{
+    PosedRig r("biped");
+    Pose pose = r.defaults();
+    const std::string hand = "arm.L::ctrls.fk.2";
+    pose[r.channel(hand, "rx")] = 30.0;
+    pose[r.channel(hand, "ry")] = -50.0;
+    pose[r.channel(hand, "rz")] = 70.0;
+    const int order = r.channel(hand, "ro");
+    EXPECT_EQ(pose[order], 0.0); // xyz by default
+    EXPECT_EQ(r.program->channels()[order].labels->at(5), "zyx");
+    const Mat4 before = r.evaluate(pose).worldMatrix(r.index(hand));
+    for (double o : {1.0, 2.0, 3.0, 4.0, 5.0}) {
+        const Pose switched = r.posing->switchSpace(pose, order, o, true);
+        EXPECT_EQ(switched[order], o);
+        EXPECT_LT(maxAbsDifference(r.evaluate(switched).worldMatrix(r.index(hand)), before), 1e-9) << o;
+        EXPECT_GT(std::abs(switched[r.channel(hand, "rx")] - 30.0), 1e-3) << o; // other angles, same orientation
+    }
+    const Pose unmatched = r.posing->switchSpace(pose, order, 5.0, false);
+    EXPECT_GT(maxAbsDifference(r.evaluate(unmatched).worldMatrix(r.index(hand)), before), 0.01);
+}
+
 TEST(PoseTools, ResetRestoresDefaultsAndKeepsLockedChannels)
 {
     PosedRig r("biped");
