@@ -31,7 +31,9 @@ void print(const Diagnostics& diagnostics)
 std::string usage()
 {
     return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
-           "       (--posed: write the rig in the guide's test pose instead of its rest pose)\n"
+           "                          [--fix-names] [--force]\n"
+           "       (--posed: write the rig in the guide's test pose instead of its rest pose;\n"
+           "        the export validator's errors refuse -o unless --force; --fix-names applies its safe renames)\n"
            "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
            "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
            "       rigsmith-cli check-templates [DIR...]\n"
@@ -43,10 +45,15 @@ int runBuild(const std::vector<std::string>& args)
 {
     std::string guidePath, dumpPath, outPath, skeletonPath;
     bool posed = false;
+    io::GltfExportOptions exportOptions;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         if (a == "--posed")
             posed = true;
+        else if (a == "--force")
+            exportOptions.force = true;
+        else if (a == "--fix-names")
+            exportOptions.fixNames = true;
         else if ((a == "--dump" || a == "-o" || a == "--skeleton") && i + 1 < args.size())
             (a == "--dump" ? dumpPath : a == "-o" ? outPath : skeletonPath) = args[++i];
         else if (!a.empty() && a[0] != '-' && guidePath.empty())
@@ -100,12 +107,12 @@ int runBuild(const std::vector<std::string>& args)
             status = 1;
     }
     if (!outPath.empty()) {
-        if (auto d = io::exportGltf(rig, outPath); !d.empty()) {
-            print(d);
+        const Diagnostics d = io::exportGltf(rig, outPath, exportOptions);
+        print(d);
+        if (hasErrors(d))
             status = 1;
-        } else {
+        else
             std::cerr << "exported " << outPath << '\n';
-        }
     }
     return status;
 }

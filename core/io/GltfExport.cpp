@@ -46,6 +46,21 @@ Diagnostics exportGltf(const model::Rig& rig, const std::string& path, const Glt
             item.where.file = path;
         return d;
     }
+    ExportCheck check = checkSkeleton(rig, *skeleton);
+    if (options.fixNames && !check.renames.empty()) {
+        *skeleton = applyRenames(skeleton.take(), check);
+        check = checkSkeleton(rig, *skeleton);
+    }
+    Diagnostics report = check.problems;
+    for (auto& item : report) {
+        item.where.file = path;
+        if (options.force && item.severity == Severity::Error) {
+            item.severity = Severity::Warning;
+            item.message = "exported anyway (forced): " + item.message;
+        }
+    }
+    if (check.hasErrors() && !options.force)
+        return report;
     const auto& joints = skeleton->joints;
     tinygltf::Model m;
     m.asset.version = "2.0";
@@ -99,12 +114,14 @@ Diagnostics exportGltf(const model::Rig& rig, const std::string& path, const Glt
         std::ostringstream stream;
         if (!writer.WriteGltfSceneToStream(&m, stream, false, true))
             return {makeError({path, 0, 0}, "glTF serialisation failed")};
-        return writeFileAtomically(path, stream.str());
+        Diagnostics written = writeFileAtomically(path, stream.str());
+        report.insert(report.end(), written.begin(), written.end());
+        return report;
     }
     // Text glTF: tinygltf writes the JSON and the .bin named by buffers[0].uri.
     if (!writer.WriteGltfSceneToFile(&m, path, false, false, true, false))
-        return {makeError({path, 0, 0}, "cannot write the glTF file or its .bin")};
-    return {};
+        report.push_back(makeError({path, 0, 0}, "cannot write the glTF file or its .bin"));
+    return report;
 }
 
 } // namespace rs::io
