@@ -31,9 +31,10 @@ void print(const Diagnostics& diagnostics)
 std::string usage()
 {
     return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
-           "                          [--fix-names] [--force]\n"
+           "                          [--names unity|MAP.yml] [--fix-names] [--force]\n"
            "       (--posed: write the rig in the guide's test pose instead of its rest pose;\n"
-           "        the export validator's errors refuse -o unless --force; --fix-names applies its safe renames)\n"
+           "        --names: export names from a name map; the export validator's errors refuse -o unless\n"
+           "        --force; --fix-names applies its safe renames)\n"
            "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
            "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
            "       rigsmith-cli check-templates [DIR...]\n"
@@ -46,6 +47,7 @@ int runBuild(const std::vector<std::string>& args)
     std::string guidePath, dumpPath, outPath, skeletonPath;
     bool posed = false;
     io::GltfExportOptions exportOptions;
+    std::string namesArgument;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         if (a == "--posed")
@@ -54,6 +56,8 @@ int runBuild(const std::vector<std::string>& args)
             exportOptions.force = true;
         else if (a == "--fix-names")
             exportOptions.fixNames = true;
+        else if (a == "--names" && i + 1 < args.size())
+            namesArgument = args[++i];
         else if ((a == "--dump" || a == "-o" || a == "--skeleton") && i + 1 < args.size())
             (a == "--dump" ? dumpPath : a == "-o" ? outPath : skeletonPath) = args[++i];
         else if (!a.empty() && a[0] != '-' && guidePath.empty())
@@ -67,6 +71,18 @@ int runBuild(const std::vector<std::string>& args)
         std::cerr << usage();
         return 2;
     }
+    io::NameMap names;
+    if (namesArgument == "unity") {
+        names = io::unityHumanoidMap();
+    } else if (!namesArgument.empty()) {
+        auto read = io::readNameMap(namesArgument);
+        print(read.diagnostics());
+        if (!read)
+            return 1;
+        names = read.take();
+    }
+    if (!namesArgument.empty())
+        exportOptions.names = &names;
     Diagnostics templateDiagnostics;
     auto templates = templates::TemplateRegistry::loadDefault(templateDiagnostics);
     print(templateDiagnostics);

@@ -46,6 +46,8 @@ Diagnostics exportGltf(const model::Rig& rig, const std::string& path, const Glt
             item.where.file = path;
         return d;
     }
+    if (options.names)
+        *skeleton = applyNameMap(rig, skeleton.take(), *options.names);
     ExportCheck check = checkSkeleton(rig, *skeleton);
     if (options.fixNames && !check.renames.empty()) {
         *skeleton = applyRenames(skeleton.take(), check);

@@ -4,6 +4,7 @@
 // joint, inverse bind matrices = inverse(joint bind world), node TRS = bind pose.
 #include "base/Diagnostic.h"
 #include "io/ExportCheck.h"
+#include "io/NameMap.h"
 #include "model/Rig.h"
 
 #include <string>
@@ -12,6 +13,7 @@ namespace rs::io {
 
 struct GltfExportOptions {
     std::string generator = "Rigsmith";
+    const NameMap* names = nullptr; // export names (io/NameMap.h), applied before the validator
     bool fixNames = false;  // apply the validator's safe renames (io/ExportCheck.h)
     bool force = false;     // write even when the validator finds errors (they come back as warnings)
 };

@@ -4,9 +4,11 @@
 #include "core/TestSupport.h"
 #include "io/ExportCheck.h"
 #include "io/GltfExport.h"
+#include "io/NameMap.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -95,4 +97,49 @@ TEST(ExportCheck, TheExportRefusesErrorsUnlessForced)
     EXPECT_FALSE(d.empty());
     EXPECT_EQ(d.front().message.rfind("exported anyway (forced): ", 0), 0u);
     EXPECT_TRUE(std::filesystem::exists(path));
+}
+
+TEST(NameMap, UnityHumanoidNamesTheBipedAndStaysValid)
+{
+    const model::Rig rig = sampleRig("biped");
+    const auto skeleton = io::applyNameMap(rig, model::extractSkeleton(rig).take(), io::unityHumanoidMap());
+    std::set<std::string> names;
+    for (const auto& joint : skeleton.joints)
+        names.insert(joint.name);
+    for (const char* expected : {"Hips", "Spine", "Chest", "UpperChest", "Neck", "Head", "LeftShoulder", "LeftUpperArm",
+                                 "RightLowerArm", "RightHand", "LeftUpperLeg", "RightFoot", "RightToes", "LeftThumbDistal",
+                                 "RightLittleProximal", "LeftIndexIntermediate"})
+        EXPECT_TRUE(names.count(expected)) << expected;
+    EXPECT_TRUE(io::checkSkeleton(rig, skeleton).problems.empty());
+    // The export writes them.
+    const std::string path = test::temporaryPath("unity.glb");
+    const io::NameMap unity = io::unityHumanoidMap();
+    io::GltfExportOptions options;
+    options.names = &unity;
+    ASSERT_TRUE(io::exportGltf(rig, path, options).empty());
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, path)) << error;
+    EXPECT_EQ(model.nodes[1].name, "Hips");
+}
+
+TEST(NameMap, ReadsIdsAndNamesFromYamlAndReportsBadEntriesWithTheirLine)
+{
+    const auto map = io::readNameMapText("rigsmith_names: 1\nnames:\n  \"spine::skin.0\": pelvis\n  sk_arm1_L: upperarm_l\n", "map.yml");
+    ASSERT_TRUE(map.ok());
+    const model::Rig rig = sampleRig("biped");
+    const auto skeleton = io::applyNameMap(rig, model::extractSkeleton(rig).take(), *map);
+    EXPECT_EQ(skeleton.joints[1].name, "pelvis");
+    bool renamed = false;
+    for (const auto& joint : skeleton.joints)
+        renamed = renamed || (joint.name == "upperarm_l" && rig.nodes[joint.node].id == "arm.L::skin.limb.0");
+    EXPECT_TRUE(renamed);
+
+    const auto bad = io::readNameMapText("rigsmith_names: 1\nnames:\n  sk_arm1_L: [a, b]\n", "bad.yml");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.diagnostics().front().format().rfind("bad.yml:3:14: error:", 0), 0u) << bad.diagnostics().front().format();
+    const auto notAMap = io::readNameMapText("names: {}\n", "other.yml");
+    ASSERT_FALSE(notAMap.ok());
+    EXPECT_NE(notAMap.diagnostics().front().message.find("not a Rigsmith name map"), std::string::npos);
 }
