@@ -132,7 +132,7 @@ QString EditorSession::addTemplate(const QString& templateId, model::JointId hoo
     const model::InstanceId id = instance->id;
     if (auto error = edit::addInstance(m_history, instance.take()))
         return QString::fromStdString(*error);
-    select({id, model::kNoId, model::kNoNode});
+    select(Selection::ofInstance(id));
     return {};
 }
 

@@ -22,6 +22,15 @@ struct Selection {
     model::JointId joint = model::kNoId;
     model::RigNodeIndex node = model::kNoNode;     // the current controller (rig mode)
     std::vector<model::RigNodeIndex> nodes;        // every selected controller, `node` among them
+
+    // An instance (and one of its guide joints), no controllers.
+    static Selection ofInstance(model::InstanceId id, model::JointId joint = model::kNoId)
+    {
+        Selection s;
+        s.instance = id;
+        s.joint = joint;
+        return s;
+    }
 };
 
 enum class EditorMode { Guide, Rig };

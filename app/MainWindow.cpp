@@ -69,7 +69,7 @@ void MainWindow::connectDocument()
     connect(&m_session, &EditorSession::templatesReloaded, this, &MainWindow::refreshViews);
 
     connect(m_outliner, &widgets::OutlinerView::instanceSelected, this,
-            [this](quint32 id) { m_session.select({id, model::kNoId, model::kNoNode}); });
+            [this](quint32 id) { m_session.select(Selection::ofInstance(id)); });
     connect(m_outliner, &widgets::OutlinerView::addTemplateRequested, this, [this](const QString& id, quint32 joint) {
         if (const QString error = m_session.addTemplate(id, joint); !error.isEmpty())
             m_log->addMessage(error, Severity::Error);
@@ -86,10 +86,10 @@ void MainWindow::connectDocument()
     });
     connect(m_log, &widgets::LogPanel::subjectActivated, this, [this](const QString& subject) {
         if (const auto id = m_session.instanceNamed(subject))
-            m_session.select({id, model::kNoId, model::kNoNode});
+            m_session.select(Selection::ofInstance(id));
     });
     connect(m_viewport, &viewport::ViewportWidget::guideJointPicked, this,
-            [this](quint32 joint, quint32 owner) { m_session.select({owner, joint, model::kNoNode}); });
+            [this](quint32 joint, quint32 owner) { m_session.select(Selection::ofInstance(owner, joint)); });
     connect(m_viewport, &viewport::ViewportWidget::controllerPicked, this,
             [this](quint32 node, bool add) { m_session.selectControllers({node}, add); });
     connect(m_viewport, &viewport::ViewportWidget::nothingPicked, this, [this] { m_session.select({}); });

@@ -87,7 +87,7 @@ void EditorSession::pickwalk(eval::WalkDirection direction, bool instances)
         return;
     }
     if (m_selection.instance != model::kNoId)
-        select({eval::pickwalk(m_document, m_selection.instance, direction), model::kNoId, model::kNoNode, {}});
+        select(Selection::ofInstance(eval::pickwalk(m_document, m_selection.instance, direction)));
 }
 
 void EditorSession::beginDrag(model::RigNodeIndex)

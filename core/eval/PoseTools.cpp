@@ -121,7 +121,7 @@ Pose Posing::placeAt(const Pose& pose, model::RigNodeIndex node, const Mat4& wor
     if (first < 0)
         return pose;
     evaluate(pose);
-    const Affine local = m_program.channelFrame(node, pose, m_state).inverse() * Affine::fromMatrix(world);
+    const Affine local = m_program.channelFrame(node, m_state).inverse() * Affine::fromMatrix(world);
     Vec3 scale = local.scale();
     const Vec3 angles = eulerDegrees(Mat3(local.linear[0] / scale.x, local.linear[1] / scale.y, local.linear[2] / scale.z),
                                      rotateOrderOf(pose, first));

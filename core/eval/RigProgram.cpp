@@ -240,7 +240,7 @@ void RigProgram::evaluate(const Pose& pose, EvalState& state) const
     }
 }
 
-Affine RigProgram::channelFrame(model::RigNodeIndex node, const Pose&, const EvalState& state) const
+Affine RigProgram::channelFrame(model::RigNodeIndex node, const EvalState& state) const
 {
     const NodeStep& s = m_nodes[node];
     return s.parent == model::kNoNode ? s.restLocal : state.world[s.parent] * s.restLocal;

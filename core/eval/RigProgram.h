@@ -50,7 +50,7 @@ public:
     // What pose tools need to invert a node's placement: the world transform
     // the node's channels act in (parent world * rest local, compensated), so
     // that world = frame * channelMatrix.
-    Affine channelFrame(model::RigNodeIndex node, const Pose& pose, const EvalState& state) const;
+    Affine channelFrame(model::RigNodeIndex node, const EvalState& state) const;
     const Affine& restWorld(model::RigNodeIndex node) const { return m_restWorld[node]; }
 
     struct NodeStep {

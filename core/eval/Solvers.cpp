@@ -17,8 +17,6 @@ namespace {
 
 using model::ConstraintKind;
 
-Vec3 axisVector(int axis) { Vec3 v(0.0); v[std::clamp(axis, 0, 2)] = 1.0; return v; }
-
 // Weighted average of rotations (normalised linear blend, signs aligned to the first).
 Quat averageRotation(const Quat* rotations, const double* weights, std::size_t count)
 {
