@@ -2,7 +2,7 @@
 
 #include "build/RigBuilder.h"
 #include "edit/GuideEdits.h"
-#include "io/GltfExport.h"
+#include "io/RigExport.h"
 #include "io/GuideFile.h"
 
 #include <chrono>
@@ -121,7 +121,7 @@ Diagnostics EditorSession::exportGltf(const QString& path) const
 {
     if (!m_rig)
         return {makeError({path.toStdString(), 0, 0}, "build the rig before exporting it")};
-    return io::exportGltf(*m_rig, path.toStdString());
+    return io::exportRig(*m_rig, path.toStdString());
 }
 
 QString EditorSession::addTemplate(const QString& templateId, model::JointId hookJoint)

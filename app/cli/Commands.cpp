@@ -3,7 +3,7 @@
 #include "base/Paths.h"
 #include "build/RigBuilder.h"
 #include "eval/PoseTools.h"
-#include "io/GltfExport.h"
+#include "io/RigExport.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
 #include "io/YamlSupport.h"
@@ -14,6 +14,7 @@
 #include <chrono>
 #include <filesystem>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 namespace rs::cli {
@@ -30,11 +31,17 @@ void print(const Diagnostics& diagnostics)
 
 std::string usage()
 {
-    return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml] [--skeleton SKELETON.json] [-o OUT.glb|OUT.gltf]\n"
-           "                          [--names unity|MAP.yml] [--fix-names] [--force]\n"
-           "       (--posed: write the rig in the guide's test pose instead of its rest pose;\n"
-           "        --names: export names from a name map; the export validator's errors refuse -o unless\n"
-           "        --force; --fix-names applies its safe renames)\n"
+    return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml] [--skeleton SKELETON.json]\n"
+           "                          [-o OUT.glb|OUT.gltf|OUT.fbx] [--preset gltf|unreal|unity] [--controllers] [--rom]\n"
+           "                          [--current-pose] [--names unity|MAP.yml] [--fix-names] [--fix-weights] [--force]\n"
+           "                          [--proxy-mesh VERTICES] [--reference EXPORT.json]\n"
+           "       (--posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
+           "        -o exports for engines: --preset gltf (Y-up metres), unreal (FBX Z-up centimetres, a root\n"
+           "        joint at the origin), unity (humanoid names); --controllers adds the controllers as tagged\n"
+           "        nodes, --rom a range-of-motion clip, --current-pose the guide's pose on the nodes;\n"
+           "        --names export names from a name map; the export validator's errors refuse -o unless\n"
+           "        --force; --fix-names and --fix-weights apply its safe fixes; --proxy-mesh binds a\n"
+           "        generated mesh of about VERTICES vertices; --reference writes what was exported as JSON)\n"
            "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
            "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
            "       rigsmith-cli check-templates [DIR...]\n"
@@ -42,51 +49,118 @@ std::string usage()
            "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";
 }
 
-int runBuild(const std::vector<std::string>& args)
+namespace {
+
+struct BuildArguments {
+    std::string guide, dump, out, skeleton, reference, names;
+    bool posed = false, currentPose = false;
+    std::size_t proxyVertices = 0;
+    io::ExportOptions options;
+};
+
+// Parses `args`; prints the problem and returns false on a bad argument.
+bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b)
 {
-    std::string guidePath, dumpPath, outPath, skeletonPath;
-    bool posed = false;
-    io::GltfExportOptions exportOptions;
-    std::string namesArgument;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        if (a == "--posed")
-            posed = true;
-        else if (a == "--force")
-            exportOptions.force = true;
-        else if (a == "--fix-names")
-            exportOptions.fixNames = true;
-        else if (a == "--names" && i + 1 < args.size())
-            namesArgument = args[++i];
-        else if ((a == "--dump" || a == "-o" || a == "--skeleton") && i + 1 < args.size())
-            (a == "--dump" ? dumpPath : a == "-o" ? outPath : skeletonPath) = args[++i];
-        else if (!a.empty() && a[0] != '-' && guidePath.empty())
-            guidePath = a;
+        const bool hasValue = i + 1 < args.size();
+        if (a == "--posed") b.posed = true;
+        else if (a == "--force") b.options.force = true;
+        else if (a == "--fix-names") b.options.fixNames = true;
+        else if (a == "--fix-weights") b.options.fixWeights = true;
+        else if (a == "--controllers") b.options.controllers = true;
+        else if (a == "--rom") b.options.rangeOfMotion = true;
+        else if (a == "--current-pose") b.currentPose = true;
+        else if (a == "--names" && hasValue) b.names = args[++i];
+        else if (a == "--preset" && hasValue) {
+            const auto preset = io::presetNamed(args[++i]);
+            if (!preset) {
+                std::cerr << "rigsmith-cli: unknown preset '" << args[i] << "' (gltf, unreal or unity)\n";
+                return false;
+            }
+            b.options.preset = *preset;
+        } else if (a == "--proxy-mesh" && hasValue) {
+            char* end = nullptr;
+            const long n = std::strtol(args[++i].c_str(), &end, 10);
+            if (*end != '\0' || n <= 0) {
+                std::cerr << "rigsmith-cli: --proxy-mesh wants a positive vertex count, not '" << args[i] << "'\n";
+                return false;
+            }
+            b.proxyVertices = std::size_t(n);
+        } else if ((a == "--dump" || a == "-o" || a == "--skeleton" || a == "--reference") && hasValue)
+            (a == "--dump" ? b.dump : a == "-o" ? b.out : a == "--skeleton" ? b.skeleton : b.reference) = args[++i];
+        else if (!a.empty() && a[0] != '-' && b.guide.empty())
+            b.guide = a;
         else {
             std::cerr << "rigsmith-cli: unexpected argument '" << a << "'\n" << usage();
-            return 2;
+            return false;
         }
     }
-    if (guidePath.empty()) {
+    if (b.guide.empty())
         std::cerr << usage();
-        return 2;
-    }
+    return !b.guide.empty();
+}
+
+// Writes what `status` says failed; 0 stays 0 only when `d` has no error.
+int report(const Diagnostics& d, int status)
+{
+    print(d);
+    return hasErrors(d) ? 1 : status;
+}
+
+int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, BuildArguments& b, int status)
+{
     io::NameMap names;
-    if (namesArgument == "unity") {
+    if (b.names == "unity") {
         names = io::unityHumanoidMap();
-    } else if (!namesArgument.empty()) {
-        auto read = io::readNameMap(namesArgument);
+    } else if (!b.names.empty()) {
+        auto read = io::readNameMap(b.names);
         print(read.diagnostics());
         if (!read)
             return 1;
         names = read.take();
     }
-    if (!namesArgument.empty())
-        exportOptions.names = &names;
+    if (!b.names.empty())
+        b.options.names = &names;
+    if (b.currentPose)
+        b.options.pose = &guide.pose;
+    std::vector<io::SkinnedMesh> meshes;
+    if (b.proxyVertices > 0) {
+        auto skeleton = model::extractSkeleton(rig);
+        if (!skeleton)
+            return report(skeleton.takeDiagnostics(), status);
+        meshes.push_back(io::proxyMesh(*skeleton, b.proxyVertices));
+        b.options.meshes = &meshes;
+    }
+    if (!b.reference.empty()) {
+        auto prepared = io::prepareExport(rig, b.options);
+        if (!prepared.scene)
+            return report(prepared.report, 1);
+        status = report(io::writeFileAtomically(b.reference, io::exportReferenceJson(*prepared.scene)), status);
+    }
+    if (b.out.empty())
+        return status;
+    const auto start = std::chrono::steady_clock::now();
+    const Diagnostics d = io::exportRig(rig, b.out, b.options);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    print(d);
+    if (hasErrors(d))
+        return 1;
+    std::cerr << "exported " << b.out << " (preset " << io::presetName(b.options.preset) << ") in " << ms << " ms\n";
+    return status;
+}
+
+} // namespace
+
+int runBuild(const std::vector<std::string>& args)
+{
+    BuildArguments b;
+    if (!parseBuildArguments(args, b))
+        return 2;
     Diagnostics templateDiagnostics;
     auto templates = templates::TemplateRegistry::loadDefault(templateDiagnostics);
     print(templateDiagnostics);
-    auto guide = io::readGuideFile(guidePath);
+    auto guide = io::readGuideFile(b.guide);
     print(guide.diagnostics());
     if (!guide)
         return 1;
@@ -94,7 +168,7 @@ int runBuild(const std::vector<std::string>& args)
     model::Rig rig = build::buildRig(*guide, *templates);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     print(rig.diagnostics);
-    if (posed && !hasErrors(rig.diagnostics)) {
+    if (b.posed && !hasErrors(rig.diagnostics)) {
         auto withPose = eval::posedRig(rig, guide->pose);
         print(withPose.diagnostics());
         if (!withPose)
@@ -105,32 +179,20 @@ int runBuild(const std::vector<std::string>& args)
     std::cerr << "built " << rig.nodes.size() << " nodes (" << rig.count(model::RigNodeKind::Controller)
               << " controllers, " << rig.skinJointCount() << " skin joints) in " << ms << " ms\n";
     int status = hasErrors(rig.diagnostics) ? 1 : 0;
-    if (!dumpPath.empty()) {
+    if (!b.dump.empty()) {
         const std::string text = io::writeRigDump(rig);
-        if (dumpPath == "-")
+        if (b.dump == "-")
             std::cout << text;
-        else if (auto d = io::writeFileAtomically(dumpPath, text); !d.empty()) {
-            print(d);
-            status = 1;
-        }
-    }
-    if (!skeletonPath.empty()) {
-        auto skeleton = model::extractSkeleton(rig);
-        Diagnostics d = skeleton ? io::writeFileAtomically(skeletonPath, io::writeSkeletonJson(*skeleton))
-                                 : skeleton.takeDiagnostics();
-        print(d);
-        if (hasErrors(d))
-            status = 1;
-    }
-    if (!outPath.empty()) {
-        const Diagnostics d = io::exportGltf(rig, outPath, exportOptions);
-        print(d);
-        if (hasErrors(d))
-            status = 1;
         else
-            std::cerr << "exported " << outPath << '\n';
+            status = report(io::writeFileAtomically(b.dump, text), status);
     }
-    return status;
+    if (!b.skeleton.empty()) {
+        auto skeleton = model::extractSkeleton(rig);
+        status = report(skeleton ? io::writeFileAtomically(b.skeleton, io::writeSkeletonJson(*skeleton))
+                                 : skeleton.takeDiagnostics(),
+                        status);
+    }
+    return exportBuiltRig(rig, *guide, b, status);
 }
 
 int runCheckTemplates(const std::vector<std::string>& args)

@@ -1,11 +1,10 @@
 #include "io/GltfExport.h"
 
 #include "io/GuideFile.h"
-#include "model/Skeleton.h"
 
 #include <tiny_gltf.h>
 
-#include <cstring>
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -13,117 +12,243 @@ namespace rs::io {
 
 namespace {
 
-void appendFloats(std::vector<unsigned char>& bytes, const float* data, std::size_t count)
-{
-    const auto* raw = reinterpret_cast<const unsigned char*>(data);
-    bytes.insert(bytes.end(), raw, raw + count * sizeof(float));
-}
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
 
-tinygltf::Node jointNode(const model::SkeletonJoint& joint)
+// Appends bufferViews and accessors to one buffer, 4-byte aligned.
+class GltfBuilder {
+public:
+    explicit GltfBuilder(tinygltf::Model& model) : m_model(model) { m_model.buffers.emplace_back(); }
+
+    template <typename T>
+    int view(const std::vector<T>& data, int target)
+    {
+        auto& bytes = m_model.buffers[0].data;
+        bytes.resize((bytes.size() + 3) & ~std::size_t(3), 0);
+        tinygltf::BufferView v;
+        v.buffer = 0;
+        v.byteOffset = bytes.size();
+        v.byteLength = data.size() * sizeof(T);
+        v.target = target;
+        const auto* raw = reinterpret_cast<const unsigned char*>(data.data());
+        bytes.insert(bytes.end(), raw, raw + v.byteLength);
+        m_model.bufferViews.push_back(v);
+        return int(m_model.bufferViews.size() - 1);
+    }
+
+    template <typename T>
+    int accessor(const std::vector<T>& data, int componentType, int type, std::size_t count, int target = 0)
+    {
+        tinygltf::Accessor a;
+        a.bufferView = view(data, target);
+        a.componentType = componentType;
+        a.type = type;
+        a.count = count;
+        m_model.accessors.push_back(a);
+        return int(m_model.accessors.size() - 1);
+    }
+
+    // A float accessor of `width` components with min/max (positions, clip times).
+    int bounded(const std::vector<float>& data, int type, int width, int target = 0)
+    {
+        const int index = accessor(data, TINYGLTF_COMPONENT_TYPE_FLOAT, type, data.size() / std::size_t(width), target);
+        auto& a = m_model.accessors[std::size_t(index)];
+        a.minValues.assign(std::size_t(width), 1e300);
+        a.maxValues.assign(std::size_t(width), -1e300);
+        for (std::size_t i = 0; i < data.size(); ++i) {
+            const auto k = i % std::size_t(width);
+            a.minValues[k] = std::min(a.minValues[k], double(data[i]));
+            a.maxValues[k] = std::max(a.maxValues[k], double(data[i]));
+        }
+        return index;
+    }
+
+private:
+    tinygltf::Model& m_model;
+};
+
+void setTrs(tinygltf::Node& node, const Mat4& local)
 {
-    tinygltf::Node node;
-    node.name = joint.name;
     Vec3 t, s;
     Quat r;
-    decompose(joint.bindLocal, t, r, s);
+    decompose(local, t, r, s);
     if (glm::length(t) > 0.0)
         node.translation = {t.x, t.y, t.z};
     if (std::abs(r.w) < 1.0 - 1e-15)
         node.rotation = {r.x, r.y, r.z, r.w};
     if (glm::length(s - Vec3(1.0)) > 1e-12)
         node.scale = {s.x, s.y, s.z};
-    return node;
+}
+
+tinygltf::Value controllerExtras(const ExportController& c)
+{
+    tinygltf::Value::Object rig{{"kind", tinygltf::Value(std::string("controller"))},
+                                {"id", tinygltf::Value(c.id)}};
+    if (!c.shape.empty())
+        rig["shape"] = tinygltf::Value(c.shape);
+    return tinygltf::Value(tinygltf::Value::Object{{"rig", tinygltf::Value(rig)}});
+}
+
+template <typename Index>
+std::vector<Index> packJoints(const SkinnedMesh& mesh)
+{
+    std::vector<Index> joints(mesh.vertexCount() * 4, 0);
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        for (std::size_t k = 0; k < mesh.influenceCount(v); ++k)
+            joints[v * 4 + k] = Index(mesh.influencesOf(v)[k].joint);
+    return joints;
+}
+
+int addMesh(tinygltf::Model& m, GltfBuilder& b, const SkinnedMesh& source, std::size_t jointCount)
+{
+    const SkinnedMesh mesh = limitInfluences(source); // what forced exports need; a no-op on valid meshes
+    std::vector<float> positions, normals, weights(mesh.vertexCount() * 4, 0.f);
+    positions.reserve(mesh.vertexCount() * 3);
+    for (const auto& p : mesh.positions)
+        positions.insert(positions.end(), {p.x, p.y, p.z});
+    for (const auto& n : mesh.normals)
+        normals.insert(normals.end(), {n.x, n.y, n.z});
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        for (std::size_t k = 0; k < mesh.influenceCount(v); ++k)
+            weights[v * 4 + k] = mesh.influencesOf(v)[k].weight;
+
+    tinygltf::Primitive primitive;
+    primitive.mode = TINYGLTF_MODE_TRIANGLES;
+    primitive.attributes["POSITION"] = b.bounded(positions, TINYGLTF_TYPE_VEC3, 3, kArrayBuffer);
+    if (!normals.empty())
+        primitive.attributes["NORMAL"] = b.accessor(normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
+                                                    mesh.vertexCount(), kArrayBuffer);
+    primitive.attributes["JOINTS_0"] =
+        jointCount <= 256 ? b.accessor(packJoints<std::uint8_t>(mesh), TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                       TINYGLTF_TYPE_VEC4, mesh.vertexCount(), kArrayBuffer)
+                          : b.accessor(packJoints<std::uint16_t>(mesh), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                       TINYGLTF_TYPE_VEC4, mesh.vertexCount(), kArrayBuffer);
+    primitive.attributes["WEIGHTS_0"] = b.accessor(weights, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4,
+                                                   mesh.vertexCount(), kArrayBuffer);
+    primitive.indices = b.accessor(mesh.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                   mesh.indices.size(), kElementArrayBuffer);
+    tinygltf::Mesh out;
+    out.name = mesh.name;
+    out.primitives.push_back(primitive);
+    m.meshes.push_back(out);
+    return int(m.meshes.size() - 1);
+}
+
+void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int firstController)
+{
+    tinygltf::Animation animation;
+    animation.name = clip.name;
+    std::vector<float> times(clip.times.begin(), clip.times.end());
+    const int input = b.bounded(times, TINYGLTF_TYPE_SCALAR, 1);
+    auto channel = [&](int node, const char* path, std::vector<float> values, int type) {
+        tinygltf::AnimationSampler sampler;
+        sampler.input = input;
+        sampler.interpolation = "LINEAR";
+        sampler.output = b.accessor(values, TINYGLTF_COMPONENT_TYPE_FLOAT, type, times.size());
+        animation.samplers.push_back(sampler);
+        tinygltf::AnimationChannel c;
+        c.sampler = int(animation.samplers.size() - 1);
+        c.target_node = node;
+        c.target_path = path;
+        animation.channels.push_back(c);
+    };
+    for (const auto& track : clip.tracks) {
+        const int node = track.controller ? firstController + track.node : track.node;
+        std::vector<float> t, r, s;
+        for (std::size_t k = 0; k < clip.times.size(); ++k) {
+            const Vec3& tv = track.translations[k];
+            const Quat& q = track.rotations[k];
+            const Vec3& sv = track.scales[k];
+            t.insert(t.end(), {float(tv.x), float(tv.y), float(tv.z)});
+            r.insert(r.end(), {float(q.x), float(q.y), float(q.z), float(q.w)});
+            s.insert(s.end(), {float(sv.x), float(sv.y), float(sv.z)});
+        }
+        channel(node, "translation", std::move(t), TINYGLTF_TYPE_VEC3);
+        channel(node, "rotation", std::move(r), TINYGLTF_TYPE_VEC4);
+        channel(node, "scale", std::move(s), TINYGLTF_TYPE_VEC3);
+    }
+    m.animations.push_back(animation);
+}
+
+tinygltf::Model buildModel(const ExportScene& scene, const std::string& generator)
+{
+    tinygltf::Model m;
+    m.asset.version = "2.0";
+    m.asset.generator = generator;
+    GltfBuilder b(m);
+    tinygltf::Scene root;
+    root.name = scene.name;
+
+    for (const auto& joint : scene.joints) {
+        tinygltf::Node node;
+        node.name = joint.name;
+        setTrs(node, joint.poseLocal);
+        m.nodes.push_back(node);
+    }
+    for (std::size_t i = 0; i < scene.joints.size(); ++i)
+        if (scene.joints[i].parent >= 0)
+            m.nodes[std::size_t(scene.joints[i].parent)].children.push_back(int(i));
+    root.nodes.push_back(0);
+
+    const int firstController = int(m.nodes.size());
+    for (const auto& c : scene.controllers) {
+        tinygltf::Node node;
+        node.name = c.name;
+        setTrs(node, c.poseLocal);
+        node.extras = controllerExtras(c);
+        m.nodes.push_back(node);
+    }
+    for (std::size_t i = 0; i < scene.controllers.size(); ++i) {
+        const int parent = scene.controllers[i].parent;
+        (parent < 0 ? root.nodes : m.nodes[std::size_t(firstController + parent)].children).push_back(firstController + int(i));
+    }
+
+    // Inverse bind matrices, column-major MAT4 float (no bufferView target).
+    std::vector<float> ibms;
+    for (const auto& joint : scene.joints) {
+        const glm::mat4 ibm(glm::inverse(joint.bindWorld));
+        ibms.insert(ibms.end(), &ibm[0][0], &ibm[0][0] + 16);
+    }
+    tinygltf::Skin skin;
+    skin.name = scene.name;
+    skin.inverseBindMatrices = b.accessor(ibms, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_MAT4, scene.joints.size());
+    skin.skeleton = 0;
+    for (std::size_t i = 0; i < scene.joints.size(); ++i)
+        skin.joints.push_back(int(i));
+    m.skins.push_back(skin);
+
+    for (const auto& mesh : scene.meshes) {
+        tinygltf::Node node;
+        node.name = mesh.name;
+        node.mesh = addMesh(m, b, mesh, scene.joints.size());
+        node.skin = 0;
+        m.nodes.push_back(node);
+        root.nodes.push_back(int(m.nodes.size() - 1));
+    }
+    for (const auto& clip : scene.clips)
+        addClip(m, b, clip, firstController);
+    m.scenes.push_back(root);
+    m.defaultScene = 0;
+    return m;
 }
 
 } // namespace
 
-Diagnostics exportGltf(const model::Rig& rig, const std::string& path, const GltfExportOptions& options)
+Diagnostics writeGltf(const ExportScene& scene, const std::string& path, const std::string& generator)
 {
-    auto skeleton = model::extractSkeleton(rig);
-    if (!skeleton) {
-        Diagnostics d = skeleton.takeDiagnostics();
-        for (auto& item : d)
-            item.where.file = path;
-        return d;
-    }
-    if (options.names)
-        *skeleton = applyNameMap(rig, skeleton.take(), *options.names);
-    ExportCheck check = checkSkeleton(rig, *skeleton);
-    if (options.fixNames && !check.renames.empty()) {
-        *skeleton = applyRenames(skeleton.take(), check);
-        check = checkSkeleton(rig, *skeleton);
-    }
-    Diagnostics report = check.problems;
-    for (auto& item : report) {
-        item.where.file = path;
-        if (options.force && item.severity == Severity::Error) {
-            item.severity = Severity::Warning;
-            item.message = "exported anyway (forced): " + item.message;
-        }
-    }
-    if (check.hasErrors() && !options.force)
-        return report;
-    const auto& joints = skeleton->joints;
-    tinygltf::Model m;
-    m.asset.version = "2.0";
-    m.asset.generator = options.generator;
-
-    for (const auto& joint : joints)
-        m.nodes.push_back(jointNode(joint));
-    for (std::size_t i = 0; i < joints.size(); ++i)
-        if (joints[i].parent >= 0)
-            m.nodes[std::size_t(joints[i].parent)].children.push_back(static_cast<int>(i));
-
-    // Inverse bind matrices, column-major MAT4 float (no bufferView target).
-    tinygltf::Buffer buffer;
-    for (const auto& joint : joints) {
-        const glm::mat4 ibm(glm::inverse(joint.bindWorld));
-        appendFloats(buffer.data, &ibm[0][0], 16);
-    }
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = 0;
-    view.byteLength = buffer.data.size();
-    m.bufferViews.push_back(view);
-    tinygltf::Accessor ibms;
-    ibms.bufferView = 0;
-    ibms.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    ibms.type = TINYGLTF_TYPE_MAT4;
-    ibms.count = joints.size();
-    m.accessors.push_back(ibms);
-
-    tinygltf::Skin skin;
-    skin.name = rig.nodes.empty() ? "skeleton" : rig.nodes.front().name;
-    skin.inverseBindMatrices = 0;
-    skin.skeleton = 0;
-    for (std::size_t i = 0; i < joints.size(); ++i)
-        skin.joints.push_back(static_cast<int>(i));
-    m.skins.push_back(skin);
-
-    const bool binary = std::filesystem::path(path).extension() == ".glb";
-    if (!binary)
-        buffer.uri = std::filesystem::path(path).stem().string() + ".bin";
-    m.buffers.push_back(buffer);
-
-    tinygltf::Scene scene;
-    scene.name = skin.name;
-    scene.nodes.push_back(0);
-    m.scenes.push_back(scene);
-    m.defaultScene = 0;
-
+    tinygltf::Model m = buildModel(scene, generator);
     tinygltf::TinyGLTF writer;
-    if (binary) {
+    if (std::filesystem::path(path).extension() == ".glb") {
         std::ostringstream stream;
         if (!writer.WriteGltfSceneToStream(&m, stream, false, true))
             return {makeError({path, 0, 0}, "glTF serialisation failed")};
-        Diagnostics written = writeFileAtomically(path, stream.str());
-        report.insert(report.end(), written.begin(), written.end());
-        return report;
+        return writeFileAtomically(path, stream.str());
     }
     // Text glTF: tinygltf writes the JSON and the .bin named by buffers[0].uri.
+    m.buffers[0].uri = std::filesystem::path(path).stem().string() + ".bin";
     if (!writer.WriteGltfSceneToFile(&m, path, false, false, true, false))
-        report.push_back(makeError({path, 0, 0}, "cannot write the glTF file or its .bin"));
-    return report;
+        return {makeError({path, 0, 0}, "cannot write the glTF file or its .bin")};
+    return {};
 }
 
 } // namespace rs::io

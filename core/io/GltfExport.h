@@ -1,26 +1,21 @@
 #pragma once
-// glTF 2.0 export (.glb or .gltf + .bin) with tinygltf, following
-// ../shared/reference/export-facts.md §6.1: one skin whose `skeleton` is the root
-// joint, inverse bind matrices = inverse(joint bind world), node TRS = bind pose.
+// glTF 2.0 writer (.glb, or .gltf + .bin) with tinygltf, following
+// ../shared/reference/export-facts.md §6.1: one skin whose `skeleton` is the
+// root joint, inverse bind matrices = inverse(joint bind world), node TRS = the
+// scene's pose; skinned meshes at the scene root with identity transforms and
+// bind-space vertices, JOINTS_0 (u8, or u16 past 256 joints) / WEIGHTS_0
+// (float, normalised, at most 4); every bufferView 4-byte aligned, vertex and
+// index views with their targets, min/max on positions and clip times;
+// controllers as plain nodes tagged {"rig": {"kind": "controller", ...}} in
+// extras; clips as LINEAR samplers in seconds. glTF is metres, Y-up.
 #include "base/Diagnostic.h"
-#include "io/ExportCheck.h"
-#include "io/NameMap.h"
-#include "model/Rig.h"
+#include "io/ExportScene.h"
 
 #include <string>
 
 namespace rs::io {
 
-struct GltfExportOptions {
-    std::string generator = "Rigsmith";
-    const NameMap* names = nullptr; // export names (io/NameMap.h), applied before the validator
-    bool fixNames = false;  // apply the validator's safe renames (io/ExportCheck.h)
-    bool force = false;     // write even when the validator finds errors (they come back as warnings)
-};
-
-// The format follows the extension (.glb binary, .gltf text). The validator
-// (io/ExportCheck.h) runs first: its errors refuse the export (nothing written)
-// unless forced. Also fails when the rig has no single-rooted skeleton or I/O fails.
-Diagnostics exportGltf(const model::Rig& rig, const std::string& path, const GltfExportOptions& options = {});
+// The format follows the extension (.glb binary, anything else text + .bin).
+Diagnostics writeGltf(const ExportScene& scene, const std::string& path, const std::string& generator);
 
 } // namespace rs::io

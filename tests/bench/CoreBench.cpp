@@ -1,9 +1,10 @@
 // Core timings on the bundled samples: guide load/save, rig build, glTF export.
 #include "build/RigBuilder.h"
 #include "eval/RigProgram.h"
-#include "io/GltfExport.h"
+#include "io/RigExport.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
+#include "model/Skeleton.h"
 
 #include <benchmark/benchmark.h>
 
@@ -145,7 +146,8 @@ model::GuideDocument crowd(int copies)
             if (instance.parent != model::kNoId)
                 instance.parent += model::InstanceId(k) * instanceStride;
             instance.parentJoint = shift(instance.parentJoint);
-            instance.name += k == 0 ? "" : "_" + std::to_string(k);
+            if (k > 0)
+                instance.name += std::string(1, '_') + std::to_string(k);
             for (auto& joint : instance.joints) {
                 joint.id = shift(joint.id);
                 joint.parent = shift(joint.parent);
@@ -239,8 +241,28 @@ void BM_ExportBipedGlb(benchmark::State& state)
     const auto rig = build::buildRig(biped(), registry());
     const std::string path = (std::filesystem::temp_directory_path() / "rigsmith-bench-biped.glb").string();
     for (auto _ : state)
-        benchmark::DoNotOptimize(io::exportGltf(rig, path));
+        benchmark::DoNotOptimize(io::exportRig(rig, path));
 }
 BENCHMARK(BM_ExportBipedGlb)->Unit(benchmark::kMicrosecond);
+
+// Issue 6: the biped with a generated 100k-vertex skinned mesh (io::proxyMesh),
+// validated and written to a file, per format (arg 0 .glb, 1 .fbx).
+void BM_ExportBipedSkinned100k(benchmark::State& state)
+{
+    const auto rig = build::buildRig(biped(), registry());
+    const std::vector<io::SkinnedMesh> meshes{io::proxyMesh(*model::extractSkeleton(rig), 100000)};
+    io::ExportOptions options;
+    options.meshes = &meshes;
+    const char* name = state.range(0) == 0 ? "rigsmith-bench-skinned.glb" : "rigsmith-bench-skinned.fbx";
+    const std::string path = (std::filesystem::temp_directory_path() / name).string();
+    for (auto _ : state) {
+        const Diagnostics d = io::exportRig(rig, path, options);
+        if (hasErrors(d))
+            state.SkipWithError(d.front().format().c_str());
+    }
+    state.counters["vertices"] = double(meshes[0].vertexCount());
+    state.counters["bytes"] = double(std::filesystem::file_size(path));
+}
+BENCHMARK(BM_ExportBipedSkinned100k)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 } // namespace

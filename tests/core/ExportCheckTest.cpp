@@ -3,7 +3,7 @@
 #include "build/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/ExportCheck.h"
-#include "io/GltfExport.h"
+#include "io/RigExport.h"
 #include "io/NameMap.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -80,19 +80,19 @@ TEST(ExportCheck, TheExportRefusesErrorsUnlessForced)
     const model::Rig rig = brokenBiped();
     const std::string path = test::temporaryPath("broken.glb");
     std::filesystem::remove(path);
-    auto d = io::exportGltf(rig, path, {});
+    auto d = io::exportRig(rig, path, {});
     EXPECT_TRUE(hasErrors(d));
     EXPECT_FALSE(std::filesystem::exists(path));
     EXPECT_EQ(d.front().where.file, path);
-    io::GltfExportOptions fix;
+    io::ExportOptions fix;
     fix.fixNames = true;
-    d = io::exportGltf(rig, path, fix); // names fixed, the scale still refuses
+    d = io::exportRig(rig, path, fix); // names fixed, the scale still refuses
     ASSERT_EQ(d.size(), 1u);
     EXPECT_TRUE(hasErrors(d));
     EXPECT_FALSE(std::filesystem::exists(path));
-    io::GltfExportOptions force;
+    io::ExportOptions force;
     force.force = true;
-    d = io::exportGltf(rig, path, force);
+    d = io::exportRig(rig, path, force);
     EXPECT_FALSE(hasErrors(d));
     EXPECT_FALSE(d.empty());
     EXPECT_EQ(d.front().message.rfind("exported anyway (forced): ", 0), 0u);
@@ -114,9 +114,9 @@ TEST(NameMap, UnityHumanoidNamesTheBipedAndStaysValid)
     // The export writes them.
     const std::string path = test::temporaryPath("unity.glb");
     const io::NameMap unity = io::unityHumanoidMap();
-    io::GltfExportOptions options;
+    io::ExportOptions options;
     options.names = &unity;
-    ASSERT_TRUE(io::exportGltf(rig, path, options).empty());
+    ASSERT_TRUE(io::exportRig(rig, path, options).empty());
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     std::string error, warning;

@@ -1,6 +1,6 @@
 #include "build/RigBuilder.h"
 #include "core/TestSupport.h"
-#include "io/GltfExport.h"
+#include "io/RigExport.h"
 #include "model/Skeleton.h"
 
 #include <gtest/gtest.h>
@@ -30,7 +30,7 @@ TEST(GltfExport, WritesOneSkeletonWithConsistentBindMatrices)
 {
     const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
     const std::string path = test::temporaryPath("biped.glb");
-    ASSERT_TRUE(io::exportGltf(rig, path).empty());
+    ASSERT_TRUE(io::exportRig(rig, path).empty());
 
     tinygltf::Model m;
     tinygltf::TinyGLTF loader;
@@ -73,7 +73,7 @@ TEST(GltfExport, RefusesASkeletonWithSeveralRootsAndWritesNothing)
     const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
     const std::string path = test::temporaryPath("roots.glb");
     std::filesystem::remove(path);
-    const auto d = io::exportGltf(rig, path);
+    const auto d = io::exportRig(rig, path);
     ASSERT_EQ(d.size(), 1u);
     EXPECT_EQ(d[0].format(), path + ": error: the skin hierarchy has 2 roots, an export skeleton needs one: "
                                     "sk_spine_hips (spine::skin.0), sk_neck1 (neck::skin.0)");

@@ -1,8 +1,10 @@
-# Headless Blender check of an exported rig (run by check-export.sh):
-# imports FILE with Blender's glTF importer and compares the armature with the
-# skeleton JSON written by rigsmith-cli: exactly one armature, one root bone,
-# same joint names and parents, bone heads within 1e-4 m.
-# usage: blender -b --factory-startup --python blender-check.py -- FILE SKELETON.json
+# Headless Blender check of an exported rig (run by check-export.sh): imports
+# FILE (.glb/.gltf with Blender's glTF importer, .fbx with its FBX importer) and
+# compares it with the export reference JSON written by rigsmith-cli --reference:
+# exactly one armature with one root bone, the same joint names and parents,
+# bone heads within 1e-4 m, and for every bound mesh each vertex's position and
+# weights (by joint name) within 1e-4 of the reference vertex at that place.
+# usage: blender -b --factory-startup --python blender-check.py -- FILE REFERENCE.json
 import json
 import sys
 
@@ -11,28 +13,29 @@ numpy.bool = bool  # Debian 12's numpy 1.24 removed the alias Blender 3.4's impo
 
 import bpy
 from mathutils import Vector
+from mathutils.kdtree import KDTree
 
+TOLERANCE = 1e-4
 args = sys.argv[sys.argv.index('--') + 1:]
 path, reference_path = args[0], args[1]
 reference = json.load(open(reference_path))
 failures = []
 
-bpy.ops.wm.read_factory_settings(use_empty=True)
-bpy.ops.import_scene.gltf(filepath=path)
 
-armatures = [o for o in bpy.data.objects if o.type == 'ARMATURE']
-if len(armatures) != 1:
-    failures.append(f'expected 1 armature, found {len(armatures)}')
-else:
-    arm = armatures[0]
+def blender_space(p):
+    x, y, z = p
+    return Vector((x, -z, y))  # the rig's Y-up -> Blender's Z-up (both importers convert to this)
+
+
+def check_armature(arm):
     bones = arm.data.bones
     roots = [b.name for b in bones if b.parent is None]
     if len(roots) != 1:
         failures.append(f'expected 1 root bone, found {roots}')
-    if len(bones) != len(reference):
-        failures.append(f'expected {len(reference)} bones, found {len(bones)}')
+    if len(bones) != len(reference['joints']):
+        failures.append(f"expected {len(reference['joints'])} bones, found {len(bones)}")
     worst = 0.0
-    for joint in reference:
+    for joint in reference['joints']:
         bone = bones.get(joint['name'])
         if bone is None:
             failures.append(f"missing bone {joint['name']}")
@@ -40,13 +43,60 @@ else:
         parent = bone.parent.name if bone.parent else None
         if parent != joint['parent']:
             failures.append(f"{joint['name']}: parent {parent}, expected {joint['parent']}")
-        x, y, z = joint['head']
-        expected = Vector((x, -z, y))  # glTF Y-up -> Blender Z-up
-        error = ((arm.matrix_world @ bone.head_local) - expected).length
+        error = ((arm.matrix_world @ bone.head_local) - blender_space(joint['head'])).length
         worst = max(worst, error)
-        if error > 1e-4:
+        if error > TOLERANCE:
             failures.append(f"{joint['name']}: head off by {error:.6f} m")
     print(f'CHECK {path}: {len(bones)} bones, root {roots}, worst head error {worst:.2e} m')
+
+
+def check_mesh(obj, expected):
+    tree = KDTree(len(expected['vertices']))
+    for i, v in enumerate(expected['vertices']):
+        tree.insert(blender_space(v[:3]), i)
+    tree.balance()
+    groups = {g.index: g.name for g in obj.vertex_groups}
+    worst_position = worst_weight = 0.0
+    for vertex in obj.data.vertices:
+        position = obj.matrix_world @ vertex.co
+        co, index, distance = tree.find(position)
+        worst_position = max(worst_position, distance)
+        have = {groups[g.group]: g.weight for g in vertex.groups if g.weight > 0.0}
+        # Reference vertices at the same place are told apart by their weights.
+        candidates = [i for _, i, _ in tree.find_range(position, distance + 1e-6)] or [index]
+        errors = []
+        for i in candidates:
+            want = expected['vertices'][i][3]
+            errors.append(max(abs(want.get(n, 0.0) - have.get(n, 0.0)) for n in set(want) | set(have)))
+        worst_weight = max(worst_weight, min(errors))
+    print(f"CHECK {path}: mesh {obj.name}: {len(obj.data.vertices)} vertices, worst position error "
+          f"{worst_position:.2e} m, worst weight error {worst_weight:.2e}")
+    if worst_position > TOLERANCE:
+        failures.append(f'mesh {obj.name}: a vertex is {worst_position:.6f} m from its reference')
+    if worst_weight > TOLERANCE:
+        failures.append(f'mesh {obj.name}: a weight is off by {worst_weight:.6f}')
+
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+if path.lower().endswith('.fbx'):
+    bpy.ops.import_scene.fbx(filepath=path)
+else:
+    bpy.ops.import_scene.gltf(filepath=path)
+
+armatures = [o for o in bpy.data.objects if o.type == 'ARMATURE']
+if len(armatures) != 1:
+    failures.append(f'expected 1 armature, found {len(armatures)}')
+else:
+    check_armature(armatures[0])
+meshes = [o for o in bpy.data.objects if o.type == 'MESH']
+if len(meshes) != len(reference['meshes']):
+    failures.append(f"expected {len(reference['meshes'])} meshes, found {len(meshes)}")
+for expected in reference['meshes']:
+    obj = bpy.data.objects.get(expected['name'])
+    if obj is None or obj.type != 'MESH':
+        failures.append(f"missing mesh {expected['name']}")
+    else:
+        check_mesh(obj, expected)
 
 for f in failures:
     print('ERROR', f)

@@ -1,0 +1,113 @@
+#pragma once
+// What an export writes, made once from the rig and then written by the glTF
+// and FBX writers (io/RigExport.h is the entry point):
+//  1. the deform skeleton (model::extractSkeleton: skin virtual hierarchy, one
+//     root, no controllers or helpers), named by the name map;
+//  2. the preset (Unreal: a `root` joint at the origin, Unity: the humanoid map);
+//  3. the validator (io/ExportCheck.h, io/SkinnedMesh.h): errors refuse unless
+//     forced, the safe fixes (renames, weight limiting) only when asked;
+//  4. options: controllers as tagged non-joint nodes, the current pose on the
+//     nodes (the bind pose stays in the inverse bind matrices), a range-of-motion
+//     clip rotating each controller in turn (joint tracks sampled from the
+//     evaluator, eval::RigProgram).
+// The scene is in the rig's convention (metres, Y-up); writers convert it to
+// the file's with converted().
+#include "base/Diagnostic.h"
+#include "io/NameMap.h"
+#include "io/SkinnedMesh.h"
+#include "model/GuideDocument.h"
+#include "model/Rig.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::io {
+
+enum class ExportPreset {
+    Gltf,   // Y-up, metres
+    Unreal, // Z-up, centimetres (FBX; glTF keeps its Y-up metres), a `root` joint at the origin
+    Unity,  // Y-up, metres, humanoid names (unityHumanoidMap) unless a map is given
+};
+std::optional<ExportPreset> presetNamed(const std::string& name); // "gltf", "unreal", "unity"
+const char* presetName(ExportPreset preset);
+
+struct ExportOptions {
+    ExportPreset preset = ExportPreset::Gltf;
+    const NameMap* names = nullptr;               // export names; replaces the preset's map
+    bool fixNames = false;                        // apply the validator's safe renames
+    bool fixWeights = false;                      // limit to 4 influences and normalise
+    bool force = false;                           // write despite validator errors (reported as warnings)
+    bool controllers = false;                     // controllers as non-joint nodes tagged in extras
+    const model::PoseValues* pose = nullptr;      // the current pose on the nodes; bind pose unchanged
+    bool rangeOfMotion = false;                   // a clip rotating each controller in turn
+    const std::vector<SkinnedMesh>* meshes = nullptr; // bound meshes (bind pose, world space)
+    std::string generator = "Rigsmith";
+    // Called with the fraction done (0..1); returning false cancels the export.
+    std::function<bool(double)> progress;
+};
+
+struct ExportJoint {
+    std::string name;
+    std::string id;                  // rig node id, empty for a joint the preset added
+    int parent = -1;
+    Mat4 bindWorld{1.0};
+    Mat4 bindLocal{1.0};
+    Mat4 poseLocal{1.0};             // the node transform written (bindLocal unless posed)
+};
+
+struct ExportController {
+    std::string name;
+    std::string id;
+    std::string shape;
+    int parent = -1;                 // index into ExportScene::controllers, -1: at the scene root
+    Mat4 poseLocal{1.0};
+};
+
+// Sampled local transforms of one node per clip time.
+struct ExportTrack {
+    int node = 0;                    // joint or controller index
+    bool controller = false;
+    std::vector<Vec3> translations;
+    std::vector<Quat> rotations;     // sign-continuous, for linear interpolation
+    std::vector<Vec3> scales;
+};
+
+struct ExportClip {
+    std::string name;
+    std::vector<double> times;       // seconds, increasing
+    std::vector<ExportTrack> tracks;
+};
+
+struct ExportScene {
+    std::string name;
+    std::vector<ExportJoint> joints; // parents first
+    std::vector<ExportController> controllers; // parents first
+    std::vector<SkinnedMesh> meshes; // joint indices into `joints`
+    std::vector<ExportClip> clips;
+};
+
+struct PreparedExport {
+    std::optional<ExportScene> scene; // none when refused or failed
+    Diagnostics report;               // the validator's findings and any failure
+    bool cancelled = false;
+};
+PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options);
+
+// The axes and units a file is written in.
+struct Convention {
+    double unitsPerMetre = 1.0;
+    bool zUp = false;
+};
+Convention conventionFor(ExportPreset preset, bool fbx);
+// The scene in `convention`: every transform conjugated by the change of basis
+// (joints keep unit scale), vertices and translations scaled.
+ExportScene converted(ExportScene scene, const Convention& convention);
+
+// What the export holds, in the rig's convention, as JSON for the consumer
+// checks (tests/tools): joints with name, parent and head, and each mesh's
+// vertices with their weights by joint name.
+std::string exportReferenceJson(const ExportScene& scene);
+
+} // namespace rs::io
