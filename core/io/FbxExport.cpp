@@ -209,20 +209,25 @@ std::unique_ptr<aiScene> makeScene(const ExportScene& scene, const Convention& c
 
 } // namespace
 
+Result<std::string> assimpFbxBytes(const ExportScene& scene, const Convention& convention)
+{
+    const auto ai = makeScene(scene, convention);
+    Assimp::Exporter exporter;
+    const aiExportDataBlob* blob = exporter.ExportToBlob(ai.get(), "fbx");
+    if (!blob)
+        return Result<std::string>::failure(
+            makeError({}, std::string("Assimp's FBX exporter failed: ") + exporter.GetErrorString()));
+    return std::string(static_cast<const char*>(blob->data), blob->size);
+}
+
 Diagnostics writeFbx(const ExportScene& scene, const std::string& path, const Convention& convention)
 {
     Diagnostics report;
     if (scene.meshes.empty())
         report.push_back(makeWarning({path, 0, 0}, "FBX without a bound mesh: the joints are written as null nodes, "
                                                     "not a skeleton (engines import skeletons with their meshes)"));
-    const auto ai = makeScene(scene, convention);
-    Assimp::Exporter exporter;
-    const aiExportDataBlob* blob = exporter.ExportToBlob(ai.get(), "fbx");
-    if (!blob) {
-        report.push_back(makeError({path, 0, 0}, std::string("Assimp's FBX exporter failed: ") + exporter.GetErrorString()));
-        return report;
-    }
-    auto repaired = repairFbxNullRecords(std::string(static_cast<const char*>(blob->data), blob->size));
+    auto bytes = assimpFbxBytes(scene, convention);
+    auto repaired = bytes ? repairFbxNullRecords(*bytes) : Result<std::string>::failure(bytes.takeDiagnostics());
     if (!repaired) {
         for (auto d : repaired.takeDiagnostics()) {
             d.where.file = path;

@@ -9,12 +9,15 @@
 // without meshes the joints come out as null nodes (a warning says so).
 // Controllers are plain null nodes (Assimp 5.2.5 writes no custom properties).
 #include "base/Diagnostic.h"
+#include "base/Result.h"
 #include "io/ExportScene.h"
 
 #include <string>
 
 namespace rs::io {
 
+// What Assimp 5.2.5 writes for `scene`, before the repair (for tests and checks).
+Result<std::string> assimpFbxBytes(const ExportScene& scene, const Convention& convention);
 // `scene` in the file's convention (converted()); `convention` is declared.
 Diagnostics writeFbx(const ExportScene& scene, const std::string& path, const Convention& convention);
 
