@@ -2,6 +2,8 @@
 // stays a thin composition root.
 #include "MainWindow.h"
 
+#include "ExportDialog.h"
+
 #include "LogPanel.h"
 #include "ViewportWidget.h"
 #include "base/Paths.h"
@@ -43,7 +45,7 @@ void MainWindow::createActions()
     QAction* open = makeAction(this, "open", tr("&Open..."), QKeySequence::Open);
     QAction* save = makeAction(this, "save", tr("&Save"), QKeySequence::Save);
     QAction* saveAs = makeAction(this, "saveAs", tr("Save &As..."), QKeySequence::SaveAs);
-    QAction* exportGlb = makeAction(this, "exportGlb", tr("&Export .glb..."), QKeySequence(tr("Ctrl+E")), "export");
+    QAction* exportRigAction = makeAction(this, "exportRig", tr("&Export..."), QKeySequence(tr("Ctrl+E")), "export");
     QAction* quit = makeAction(this, "quit", tr("&Quit"), QKeySequence::Quit);
     QAction* undo = makeAction(this, "undo", tr("&Undo"), QKeySequence::Undo);
     QAction* redo = makeAction(this, "redo", tr("&Redo"), QKeySequence::Redo);
@@ -68,10 +70,9 @@ void MainWindow::createActions()
         else
             saveFile(m_session.filePath());
     });
-    connect(exportGlb, &QAction::triggered, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export glTF binary"), QString(), tr("glTF binary (*.glb)"));
-        if (!path.isEmpty())
-            exportTo(path);
+    connect(exportRigAction, &QAction::triggered, this, [this] {
+        exportDialog()->show();
+        exportDialog()->raise();
     });
     connect(quit, &QAction::triggered, this, &QWidget::close);
     connect(undo, &QAction::triggered, this, [this] { m_session.history().undo(); });
@@ -106,7 +107,7 @@ void MainWindow::createActions()
     }
     file->addActions({open, save, saveAs});
     file->addSeparator();
-    file->addAction(exportGlb);
+    file->addAction(exportRigAction);
     file->addSeparator();
     file->addAction(quit);
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
@@ -119,7 +120,7 @@ void MainWindow::createActions()
     QToolBar* bar = addToolBar(tr("Main"));
     bar->setObjectName("mainToolBar");
     bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    bar->addActions({build, exportGlb});
+    bar->addActions({build, exportRigAction});
     bar->addSeparator();
     bar->addActions({undo, redo});
     createPoseActions();

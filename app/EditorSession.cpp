@@ -2,7 +2,7 @@
 
 #include "build/RigBuilder.h"
 #include "edit/GuideEdits.h"
-#include "io/RigExport.h"
+#include "io/ExportRequest.h"
 #include "io/GuideFile.h"
 
 #include <chrono>
@@ -117,11 +117,11 @@ Diagnostics EditorSession::reloadTemplates()
     return m_templateDiagnostics;
 }
 
-Diagnostics EditorSession::exportGltf(const QString& path) const
+Diagnostics EditorSession::exportRig(const io::ExportRequest& request, std::function<bool(double)> progress) const
 {
     if (!m_rig)
-        return {makeError({path.toStdString(), 0, 0}, "build the rig before exporting it")};
-    return io::exportRig(*m_rig, path.toStdString());
+        return {makeError({request.path, 0, 0}, "build the rig before exporting it")};
+    return io::runExport(*m_rig, m_document.pose, request, std::move(progress));
 }
 
 QString EditorSession::addTemplate(const QString& templateId, model::JointId hookJoint)

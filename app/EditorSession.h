@@ -6,12 +6,14 @@
 #include "edit/History.h"
 #include "eval/Pickwalk.h"
 #include "eval/PoseTools.h"
+#include "io/ExportRequest.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -60,7 +62,8 @@ public:
     bool save(const QString& path, Diagnostics& diagnostics);
     // Builds the rig; returns the build time in milliseconds.
     double build();
-    Diagnostics exportGltf(const QString& path) const;
+    // Runs io::runExport on the built rig with the document's pose.
+    Diagnostics exportRig(const io::ExportRequest& request, std::function<bool(double)> progress = {}) const;
     // Rescans the template folders (F5): new and edited manifests and shapes take
     // effect without a restart; a built rig is rebuilt with them. Returns the scan's
     // diagnostics; a broken manifest drops only that template.

@@ -1,11 +1,13 @@
 #include "MainWindow.h"
 
 #include "ChannelBox.h"
+#include "ExportDialog.h"
 #include "LogPanel.h"
 #include "OutlinerView.h"
 #include "ViewportWidget.h"
 
 #include <QCloseEvent>
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
@@ -213,11 +215,38 @@ bool MainWindow::saveFile(const QString& path)
 
 bool MainWindow::exportTo(const QString& path)
 {
+    io::ExportRequest request;
+    request.path = path.toStdString();
+    return exportRig(request);
+}
+
+bool MainWindow::exportRig(const io::ExportRequest& request)
+{
     if (!m_session.rig() || m_session.isRigStale())
         buildRig();
-    const Diagnostics diagnostics = m_session.exportGltf(path);
+    auto* dialog = m_exportDialog && m_exportDialog->isVisible() ? m_exportDialog : nullptr;
+    const Diagnostics diagnostics = m_session.exportRig(request, [dialog](double fraction) {
+        if (dialog) {
+            dialog->setProgress(fraction);
+            QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+        }
+        return true;
+    });
+    if (dialog)
+        dialog->showReport(diagnostics);
+    const QString path = QString::fromStdString(request.path);
     report(hasErrors(diagnostics) ? tr("Export failed") : tr("Exported %1").arg(path), diagnostics);
     return !hasErrors(diagnostics);
+}
+
+widgets::ExportDialog* MainWindow::exportDialog()
+{
+    if (!m_exportDialog) {
+        m_exportDialog = new widgets::ExportDialog(this);
+        connect(m_exportDialog, &widgets::ExportDialog::exportRequested, this,
+                [this](const io::ExportRequest& request) { exportRig(request); });
+    }
+    return m_exportDialog;
 }
 
 void MainWindow::buildRig()

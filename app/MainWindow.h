@@ -9,7 +9,7 @@ class QAction;
 class QLabel;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; }
 
 namespace rs::app {
 
@@ -29,7 +29,10 @@ public:
     // File > New: an untitled copy of a sample (empty path: an empty guide).
     bool newFromSample(const QString& samplePath);
     bool saveFile(const QString& path);
+    // Exports with the default options (glTF preset, skeleton only); builds first when needed.
     bool exportTo(const QString& path);
+    bool exportRig(const io::ExportRequest& request);
+    widgets::ExportDialog* exportDialog(); // File > Export..., made on first use
     void buildRig();
     void reloadTemplates();
 
@@ -52,6 +55,7 @@ private:
     widgets::OutlinerView* m_outliner = nullptr;
     widgets::LogPanel* m_log = nullptr;
     widgets::ChannelBox* m_channelBox = nullptr;
+    widgets::ExportDialog* m_exportDialog = nullptr;
     QLabel* m_status = nullptr;
 };
 

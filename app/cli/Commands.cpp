@@ -3,7 +3,7 @@
 #include "base/Paths.h"
 #include "build/RigBuilder.h"
 #include "eval/PoseTools.h"
-#include "io/RigExport.h"
+#include "io/ExportRequest.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
 #include "io/YamlSupport.h"
@@ -52,33 +52,33 @@ std::string usage()
 namespace {
 
 struct BuildArguments {
-    std::string guide, dump, out, skeleton, reference, names;
-    bool posed = false, currentPose = false;
-    std::size_t proxyVertices = 0;
-    io::ExportOptions options;
+    std::string guide, dump, skeleton;
+    bool posed = false;
+    io::ExportRequest exportRequest;
 };
 
 // Parses `args`; prints the problem and returns false on a bad argument.
 bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b)
 {
+    io::ExportRequest& e = b.exportRequest;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         const bool hasValue = i + 1 < args.size();
         if (a == "--posed") b.posed = true;
-        else if (a == "--force") b.options.force = true;
-        else if (a == "--fix-names") b.options.fixNames = true;
-        else if (a == "--fix-weights") b.options.fixWeights = true;
-        else if (a == "--controllers") b.options.controllers = true;
-        else if (a == "--rom") b.options.rangeOfMotion = true;
-        else if (a == "--current-pose") b.currentPose = true;
-        else if (a == "--names" && hasValue) b.names = args[++i];
+        else if (a == "--force") e.force = true;
+        else if (a == "--fix-names") e.fixNames = true;
+        else if (a == "--fix-weights") e.fixWeights = true;
+        else if (a == "--controllers") e.controllers = true;
+        else if (a == "--rom") e.rangeOfMotion = true;
+        else if (a == "--current-pose") e.currentPose = true;
+        else if (a == "--names" && hasValue) e.names = args[++i];
         else if (a == "--preset" && hasValue) {
             const auto preset = io::presetNamed(args[++i]);
             if (!preset) {
                 std::cerr << "rigsmith-cli: unknown preset '" << args[i] << "' (gltf, unreal or unity)\n";
                 return false;
             }
-            b.options.preset = *preset;
+            e.preset = *preset;
         } else if (a == "--proxy-mesh" && hasValue) {
             char* end = nullptr;
             const long n = std::strtol(args[++i].c_str(), &end, 10);
@@ -86,9 +86,9 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
                 std::cerr << "rigsmith-cli: --proxy-mesh wants a positive vertex count, not '" << args[i] << "'\n";
                 return false;
             }
-            b.proxyVertices = std::size_t(n);
+            e.proxyVertices = std::size_t(n);
         } else if ((a == "--dump" || a == "-o" || a == "--skeleton" || a == "--reference") && hasValue)
-            (a == "--dump" ? b.dump : a == "-o" ? b.out : a == "--skeleton" ? b.skeleton : b.reference) = args[++i];
+            (a == "--dump" ? b.dump : a == "-o" ? e.path : a == "--skeleton" ? b.skeleton : e.referencePath) = args[++i];
         else if (!a.empty() && a[0] != '-' && b.guide.empty())
             b.guide = a;
         else {
@@ -101,52 +101,23 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
     return !b.guide.empty();
 }
 
-// Writes what `status` says failed; 0 stays 0 only when `d` has no error.
+// Prints `d`; the status becomes 1 when it has an error.
 int report(const Diagnostics& d, int status)
 {
     print(d);
     return hasErrors(d) ? 1 : status;
 }
 
-int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, BuildArguments& b, int status)
+int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, const io::ExportRequest& request, int status)
 {
-    io::NameMap names;
-    if (b.names == "unity") {
-        names = io::unityHumanoidMap();
-    } else if (!b.names.empty()) {
-        auto read = io::readNameMap(b.names);
-        print(read.diagnostics());
-        if (!read)
-            return 1;
-        names = read.take();
-    }
-    if (!b.names.empty())
-        b.options.names = &names;
-    if (b.currentPose)
-        b.options.pose = &guide.pose;
-    std::vector<io::SkinnedMesh> meshes;
-    if (b.proxyVertices > 0) {
-        auto skeleton = model::extractSkeleton(rig);
-        if (!skeleton)
-            return report(skeleton.takeDiagnostics(), status);
-        meshes.push_back(io::proxyMesh(*skeleton, b.proxyVertices));
-        b.options.meshes = &meshes;
-    }
-    if (!b.reference.empty()) {
-        auto prepared = io::prepareExport(rig, b.options);
-        if (!prepared.scene)
-            return report(prepared.report, 1);
-        status = report(io::writeFileAtomically(b.reference, io::exportReferenceJson(*prepared.scene)), status);
-    }
-    if (b.out.empty())
+    if (request.path.empty() && request.referencePath.empty())
         return status;
     const auto start = std::chrono::steady_clock::now();
-    const Diagnostics d = io::exportRig(rig, b.out, b.options);
+    const Diagnostics d = io::runExport(rig, guide.pose, request);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    print(d);
-    if (hasErrors(d))
-        return 1;
-    std::cerr << "exported " << b.out << " (preset " << io::presetName(b.options.preset) << ") in " << ms << " ms\n";
+    status = report(d, status);
+    if (status == 0 && !request.path.empty())
+        std::cerr << "exported " << request.path << " (preset " << io::presetName(request.preset) << ") in " << ms << " ms\n";
     return status;
 }
 
@@ -192,7 +163,7 @@ int runBuild(const std::vector<std::string>& args)
                                  : skeleton.takeDiagnostics(),
                         status);
     }
-    return exportBuiltRig(rig, *guide, b, status);
+    return exportBuiltRig(rig, *guide, b.exportRequest, status);
 }
 
 int runCheckTemplates(const std::vector<std::string>& args)

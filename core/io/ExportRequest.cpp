@@ -1,0 +1,60 @@
+#include "io/ExportRequest.h"
+
+#include "io/GuideFile.h"
+#include "io/NameMap.h"
+#include "io/RigExport.h"
+#include "model/Skeleton.h"
+
+namespace rs::io {
+
+Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
+                      std::function<bool(double)> progress)
+{
+    ExportOptions options;
+    options.preset = request.preset;
+    options.controllers = request.controllers;
+    options.rangeOfMotion = request.rangeOfMotion;
+    options.fixNames = request.fixNames;
+    options.fixWeights = request.fixWeights;
+    options.force = request.force;
+    options.progress = std::move(progress);
+    if (request.currentPose)
+        options.pose = &pose;
+
+    Diagnostics report;
+    NameMap names;
+    if (request.names == "unity") {
+        names = unityHumanoidMap();
+    } else if (!request.names.empty()) {
+        auto read = readNameMap(request.names);
+        report = read.diagnostics();
+        if (!read)
+            return report;
+        names = read.take();
+    }
+    if (!request.names.empty())
+        options.names = &names;
+
+    std::vector<SkinnedMesh> meshes;
+    if (request.proxyVertices > 0) {
+        auto skeleton = model::extractSkeleton(rig);
+        if (!skeleton)
+            return skeleton.takeDiagnostics();
+        meshes.push_back(proxyMesh(*skeleton, request.proxyVertices));
+        options.meshes = &meshes;
+    }
+    if (!request.referencePath.empty()) {
+        auto prepared = prepareExport(rig, options);
+        if (!prepared.scene)
+            return prepared.report;
+        Diagnostics written = writeFileAtomically(request.referencePath, exportReferenceJson(*prepared.scene));
+        report.insert(report.end(), written.begin(), written.end());
+    }
+    if (request.path.empty())
+        return report;
+    Diagnostics exported = exportRig(rig, request.path, options);
+    report.insert(report.end(), exported.begin(), exported.end());
+    return report;
+}
+
+} // namespace rs::io

@@ -1,0 +1,34 @@
+#pragma once
+// One export as the CLI and the editor's Export dialog ask for it, by value:
+// the path (format from the extension), the preset and options, the name map
+// ("unity" or a YAML file), and a generated proxy mesh until mesh binding
+// exists. runExport turns it into io::ExportOptions and runs io::exportRig.
+#include "base/Diagnostic.h"
+#include "io/ExportScene.h"
+#include "model/GuideDocument.h"
+#include "model/Rig.h"
+
+#include <functional>
+#include <string>
+
+namespace rs::io {
+
+struct ExportRequest {
+    std::string path;
+    ExportPreset preset = ExportPreset::Gltf;
+    std::string names;              // empty, "unity" or a name map file (io/NameMap.h)
+    bool controllers = false;
+    bool rangeOfMotion = false;
+    bool currentPose = false;       // the guide's pose on the nodes
+    bool fixNames = false;
+    bool fixWeights = false;
+    bool force = false;
+    std::size_t proxyVertices = 0;  // 0: no mesh; otherwise io::proxyMesh of about that many vertices
+    std::string referencePath;      // when set, also writes exportReferenceJson there
+};
+
+// `pose` is the guide's pose (used with currentPose). `progress` as in ExportOptions.
+Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
+                      std::function<bool(double)> progress = {});
+
+} // namespace rs::io
