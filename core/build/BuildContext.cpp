@@ -112,7 +112,7 @@ void BuildContext::setHidden(model::RigNodeIndex index) { m_assembly.rig.nodes.a
 std::string BuildContext::addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min, double max)
 {
     auto& node = m_assembly.rig.nodes.at(index);
-    node.attributes.push_back({name, std::clamp(value, min, max), min, max});
+    node.attributes.push_back({name, std::clamp(value, min, max), min, max, {}});
     return node.id + "." + name;
 }
 
