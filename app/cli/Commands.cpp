@@ -7,7 +7,6 @@
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
 #include "io/YamlSupport.h"
-#include "model/Skeleton.h"
 #include "templates/ManifestDump.h"
 #include "templates/ShapeIcon.h"
 
@@ -31,7 +30,7 @@ void print(const Diagnostics& diagnostics)
 
 std::string usage()
 {
-    return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml] [--skeleton SKELETON.json]\n"
+    return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml]\n"
            "                          [-o OUT.glb|OUT.gltf|OUT.fbx] [--preset gltf|unreal|unity] [--controllers] [--rom]\n"
            "                          [--current-pose] [--names unity|MAP.yml] [--fix-names] [--fix-weights] [--force]\n"
            "                          [--proxy-mesh VERTICES] [--reference EXPORT.json]\n"
@@ -52,7 +51,7 @@ std::string usage()
 namespace {
 
 struct BuildArguments {
-    std::string guide, dump, skeleton;
+    std::string guide, dump;
     bool posed = false;
     io::ExportRequest exportRequest;
 };
@@ -87,8 +86,8 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
                 return false;
             }
             e.proxyVertices = std::size_t(n);
-        } else if ((a == "--dump" || a == "-o" || a == "--skeleton" || a == "--reference") && hasValue)
-            (a == "--dump" ? b.dump : a == "-o" ? e.path : a == "--skeleton" ? b.skeleton : e.referencePath) = args[++i];
+        } else if ((a == "--dump" || a == "-o" || a == "--reference") && hasValue)
+            (a == "--dump" ? b.dump : a == "-o" ? e.path : e.referencePath) = args[++i];
         else if (!a.empty() && a[0] != '-' && b.guide.empty())
             b.guide = a;
         else {
@@ -156,12 +155,6 @@ int runBuild(const std::vector<std::string>& args)
             std::cout << text;
         else
             status = report(io::writeFileAtomically(b.dump, text), status);
-    }
-    if (!b.skeleton.empty()) {
-        auto skeleton = model::extractSkeleton(rig);
-        status = report(skeleton ? io::writeFileAtomically(b.skeleton, io::writeSkeletonJson(*skeleton))
-                                 : skeleton.takeDiagnostics(),
-                        status);
     }
     return exportBuiltRig(rig, *guide, b.exportRequest, status);
 }

@@ -2,7 +2,6 @@
 
 #include "eval/RigProgram.h"
 #include "io/ExportCheck.h"
-#include "io/RigDump.h"
 #include "model/Value.h"
 #include "model/Skeleton.h"
 
@@ -317,7 +316,12 @@ ExportScene converted(ExportScene scene, const Convention& convention)
 
 std::string exportReferenceJson(const ExportScene& scene)
 {
-    auto quote = [](const std::string& s) { return "\"" + s + "\""; }; // export names are engine-safe
+    auto quote = [](const std::string& s) { // forced exports may carry any name
+        std::string out = "\"";
+        for (char c : s)
+            out += c == '"' || c == '\\' ? std::string{'\\', c} : std::string{c};
+        return out + "\"";
+    };
     std::ostringstream out;
     out << "{\"joints\": [\n";
     for (std::size_t i = 0; i < scene.joints.size(); ++i) {

@@ -135,33 +135,3 @@ std::string writeRigDump(const model::Rig& rig)
 }
 
 } // namespace rs::io
-
-#include "model/Skeleton.h"
-
-namespace rs::io {
-
-std::string writeSkeletonJson(const model::Skeleton& skeleton)
-{
-    auto quote = [](const std::string& s) {
-        std::string out = "\"";
-        for (char c : s) {
-            if (c == '"' || c == '\\') out += '\\';
-            out += c;
-        }
-        return out + "\"";
-    };
-    std::ostringstream out;
-    out << "[\n";
-    for (std::size_t i = 0; i < skeleton.joints.size(); ++i) {
-        const auto& j = skeleton.joints[i];
-        const Vec3 head = translationOf(j.bindWorld);
-        out << "  {\"name\": " << quote(j.name) << ", \"parent\": "
-            << (j.parent < 0 ? std::string("null") : quote(skeleton.joints[std::size_t(j.parent)].name))
-            << ", \"head\": [" << formatNumber(head.x) << ", " << formatNumber(head.y) << ", " << formatNumber(head.z) << "]}"
-            << (i + 1 < skeleton.joints.size() ? ",\n" : "\n");
-    }
-    out << "]\n";
-    return out.str();
-}
-
-} // namespace rs::io

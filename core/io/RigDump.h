@@ -11,13 +11,3 @@ namespace rs::io {
 std::string writeRigDump(const model::Rig& rig);
 
 } // namespace rs::io
-
-namespace rs::model { struct Skeleton; }
-
-namespace rs::io {
-
-// The export skeleton as JSON: [{"name", "parent" (name or null), "head": [x,y,z]}]
-// with world-space bind positions (metres, Y-up). For pipelines and consumer checks.
-std::string writeSkeletonJson(const model::Skeleton& skeleton);
-
-} // namespace rs::io
