@@ -62,7 +62,6 @@ Diagnostics validate(const model::Rig& rig, model::Skeleton& skeleton, std::vect
 
 // Local transforms of the scene's nodes for one evaluated state.
 struct Sampler {
-    const model::Rig& rig;
     const ExportScene& scene;
     std::vector<model::RigNodeIndex> jointNodes, controllerNodes;
 
@@ -251,7 +250,7 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
             }
     }
     ExportScene scene = sceneFrom(rig, skeleton, std::move(meshes));
-    Sampler sampler{rig, scene, {}, {}};
+    Sampler sampler{scene, {}, {}};
     for (const auto& joint : skeleton.joints)
         sampler.jointNodes.push_back(joint.node);
     if (options.controllers)

@@ -17,6 +17,11 @@
 
 using namespace rs;
 
+namespace rs::io {
+// Test names and failure messages show the preset by name.
+void PrintTo(ExportPreset preset, std::ostream* out) { *out << presetName(preset); }
+} // namespace rs::io
+
 namespace {
 
 Mat4 toGlm(const aiMatrix4x4& m)
