@@ -148,6 +148,34 @@ QString EditorSession::renameInstance(model::InstanceId id, const QString& name)
     return error ? QString::fromStdString(*error) : QString();
 }
 
+QString EditorSession::setOption(model::InstanceId id, const std::string& name, const Value& value)
+{
+    const model::TemplateInstance* instance = m_document.instance(id);
+    const templates::TemplateManifest* manifest = instance ? m_templates->find(instance->templateId) : nullptr;
+    if (!manifest)
+        return tr("no template for this instance");
+    const templates::Parameter* guide = manifest->findGuide(name);
+    const templates::Parameter* option = guide ? guide : manifest->findOpt(name);
+    if (!option)
+        return tr("%1 has no option '%2'").arg(QString::fromStdString(manifest->id), QString::fromStdString(name));
+    if (!guide) {
+        auto error = edit::setOption(m_history, id, name, value, option->value);
+        return error ? QString::fromStdString(*error) : QString();
+    }
+    auto options = instance->options;
+    if (value == option->value)
+        options.erase(name);
+    else
+        options[name] = value;
+    if (options == instance->options)
+        return {};
+    auto regenerated = build::regenerateGuide(m_document, *m_templates, id, options);
+    if (!regenerated)
+        return QString::fromStdString(formatAll(regenerated.diagnostics()));
+    auto error = edit::replaceInstance(m_history, regenerated.take(), "Set guide option " + name);
+    return error ? QString::fromStdString(*error) : QString();
+}
+
 void EditorSession::select(const Selection& selection)
 {
     m_selection = selection;

@@ -73,6 +73,9 @@ public:
     QString addTemplate(const QString& templateId, model::JointId hookJoint);
     QString removeInstance(model::InstanceId id);
     QString renameInstance(model::InstanceId id, const QString& name);
+    // One option of an instance, one undo step; a guide parameter (`guides`)
+    // regenerates the instance's guide joints, keeping those that still exist.
+    QString setOption(model::InstanceId id, const std::string& name, const Value& value);
     void select(const Selection& selection);
     model::InstanceId instanceNamed(const QString& name) const;
 

@@ -2,6 +2,7 @@
 
 #include "ChannelBox.h"
 #include "ExportDialog.h"
+#include "OptionsEditor.h"
 #include "LogPanel.h"
 #include "OutlinerView.h"
 #include "ViewportWidget.h"
@@ -47,6 +48,12 @@ void MainWindow::createDocks()
     channelDock->setObjectName("channelBoxDock");
     channelDock->setWidget(m_channelBox);
     addDockWidget(Qt::RightDockWidgetArea, channelDock);
+
+    m_options = new widgets::OptionsEditor(this);
+    auto* optionsDock = new QDockWidget(tr("Options"), this);
+    optionsDock->setObjectName("optionsDock");
+    optionsDock->setWidget(m_options);
+    addDockWidget(Qt::RightDockWidgetArea, optionsDock);
 
     m_status = new QLabel(this);
     statusBar()->addPermanentWidget(m_status);
@@ -98,10 +105,32 @@ void MainWindow::connectDocument()
     connect(m_outliner, &widgets::OutlinerView::walkRequested, this,
             [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction), true); });
     connectRigMode();
+    connectOptions();
 
     m_log->addDiagnostics(m_session.templateDiagnostics());
     refreshViews();
     updateTitle();
+}
+
+void MainWindow::connectOptions()
+{
+    // Queued: an edit rebuilds the editor's widgets, the one that emitted included.
+    auto refresh = [this] {
+        QMetaObject::invokeMethod(this, [this] {
+            const model::TemplateInstance* instance = m_session.document().instance(m_session.selection().instance);
+            m_options->setInstance(instance, instance ? m_session.templates().find(instance->templateId) : nullptr);
+        }, Qt::QueuedConnection);
+    };
+    connect(&m_session, &EditorSession::documentChanged, this, refresh);
+    connect(&m_session, &EditorSession::selectionChanged, this, refresh);
+    connect(&m_session, &EditorSession::templatesReloaded, this, refresh);
+    connect(m_options, &widgets::OptionsEditor::optionEdited, this,
+            [this](model::InstanceId id, const std::string& name, const Value& value) {
+                if (const QString error = m_session.setOption(id, name, value); !error.isEmpty()) {
+                    m_log->addMessage(error, Severity::Error);
+                    m_session.select(m_session.selection()); // show the stored value again
+                }
+            });
 }
 
 void MainWindow::refreshViews()

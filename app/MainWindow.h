@@ -9,7 +9,7 @@ class QAction;
 class QLabel;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; }
 
 namespace rs::app {
 
@@ -23,6 +23,7 @@ public:
     widgets::OutlinerView* outliner() const { return m_outliner; }
     widgets::LogPanel* log() const { return m_log; }
     widgets::ChannelBox* channelBox() const { return m_channelBox; }
+    widgets::OptionsEditor* optionsEditor() const { return m_options; }
     QAction* action(const QString& objectName) const;
 
     bool openFile(const QString& path);
@@ -44,7 +45,8 @@ private:
     void createPoseActions(); // Actions.cpp: Guide/Rig mode, pose tools, gizmo space
     void createDocks();
     void connectDocument();
-    void connectRigMode();  // viewport picks, walks and drags, channel box
+    void connectRigMode();
+    void connectOptions();  // the options dock: shows the selected instance, edits go to the session  // viewport picks, walks and drags, channel box
     void refreshViews();
     void refreshScene();
     void updateTitle();
@@ -56,6 +58,7 @@ private:
     widgets::LogPanel* m_log = nullptr;
     widgets::ChannelBox* m_channelBox = nullptr;
     widgets::ExportDialog* m_exportDialog = nullptr;
+    widgets::OptionsEditor* m_options = nullptr;
     QLabel* m_status = nullptr;
 };
 

@@ -39,6 +39,17 @@ Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide,
                                              const std::map<std::string, Value>& options,
                                              const BuilderRegistry& builders = BuilderRegistry::builtin());
 
+// The instance `id` with its guide joints proposed again for `options` (a
+// guide parameter such as `number` changed): joints that still exist keep
+// their ids, rotations, scales and world positions (named or tagged joints
+// match by name and tags, chain joints in order with the last kept last, so
+// children hung on a chain's tip stay on it); new joints get fresh ids at the
+// proposed places; name, parent, structure and name overrides are kept.
+Result<model::TemplateInstance> regenerateGuide(const model::GuideDocument& guide,
+                                                const templates::TemplateRegistry& templates, model::InstanceId id,
+                                                const std::map<std::string, Value>& options,
+                                                const BuilderRegistry& builders = BuilderRegistry::builtin());
+
 // An attach point offered to child templates (manifest `ui.hooks`); a hook whose
 // address spans several joints expands to "label[i]".
 struct HookPoint {

@@ -107,6 +107,20 @@ private:
     std::optional<Value> m_from, m_to;
 };
 
+// An instance replaced as a whole (its guide joints regenerated), in place.
+class ReplaceInstance final : public Command {
+public:
+    ReplaceInstance(TemplateInstance from, TemplateInstance to, std::string what)
+        : m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what)) {}
+    std::string text() const override { return m_what; }
+    void redo(GuideDocument& d) override { *d.instance(m_to.id) = m_to; }
+    void undo(GuideDocument& d) override { *d.instance(m_from.id) = m_from; }
+
+private:
+    TemplateInstance m_from, m_to;
+    std::string m_what;
+};
+
 } // namespace
 
 bool isValidInstanceName(const std::string& name)
@@ -191,6 +205,24 @@ Error setOption(History& history, InstanceId id, const std::string& option, cons
     if (before == after)
         return std::nullopt;
     history.push(std::make_unique<SetOption>(id, option, before, after));
+    return std::nullopt;
+}
+
+Error replaceInstance(History& history, TemplateInstance instance, const std::string& what)
+{
+    const GuideDocument& d = history.document();
+    const TemplateInstance* current = d.instance(instance.id);
+    if (!current)
+        return "no instance with id " + std::to_string(instance.id);
+    if (instance.joints.empty())
+        return "an instance needs at least one guide joint";
+    for (const auto& joint : instance.joints)
+        if (const TemplateInstance* owner = d.ownerOf(joint.id); owner && owner->id != instance.id)
+            return "joint id " + std::to_string(joint.id) + " belongs to '" + owner->name + "'";
+    for (const auto& other : d.instances())
+        if (other.parent == instance.id && !instance.joint(other.parentJoint))
+            return "'" + other.name + "' hangs under a guide joint of '" + current->name + "' that would go away";
+    history.push(std::make_unique<ReplaceInstance>(*current, std::move(instance), what));
     return std::nullopt;
 }
 

@@ -22,6 +22,11 @@ Error setJointTransform(History& history, model::JointId joint, const Transform&
 Error setOption(History& history, model::InstanceId id, const std::string& option, const Value& value,
                 const Value& defaultValue);
 
+// Replaces an instance (same id) as one undo step named `what`: used when its
+// guide joints are regenerated. Refused when a child instance hangs under a
+// joint the new one no longer has, or a joint id belongs to another instance.
+Error replaceInstance(History& history, model::TemplateInstance instance, const std::string& what);
+
 // Replaces the document's test pose (one undo step per pose tool or gizmo drag);
 // `what` names the step ("Rotate c_arm1_L", "Mirror pose"). Refused when
 // nothing changes, so no empty step lands on the stack.

@@ -82,3 +82,44 @@ TEST(GuideEdits, NewInstancesGetFreshIdsAUniqueNameAndDefaultJoints)
     EXPECT_EQ(b->name, "joints1");
     EXPECT_FALSE(build::makeInstance(doc, test::builtinTemplates(), "no.such", model::kNoId).ok());
 }
+
+TEST(GuideEdits, AGuideParameterRegeneratesTheJointsKeepingTheOnesThatStillExist)
+{
+    model::GuideDocument document = test::loadSample("biped");
+    const model::GuideDocument original = document;
+    edit::History history(document);
+    const model::InstanceId spine = document.instanceNamed("spine")->id;
+    const auto before = document.instanceNamed("spine")->joints;
+    const Vec3 chest = translationOf(document.jointWorldMatrix(before.back().id));
+
+    auto longer = build::regenerateGuide(document, test::builtinTemplates(), spine, {{"number", Value(7LL)}});
+    ASSERT_TRUE(longer) << formatAll(longer.diagnostics());
+    ASSERT_FALSE(edit::replaceInstance(history, longer.take(), "Set guide option number"));
+    const auto& joints = document.instance(spine)->joints;
+    ASSERT_EQ(joints.size(), 7u);
+    for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(joints[k].id, before[k].id);
+        EXPECT_LT(glm::length(translationOf(document.jointWorldMatrix(joints[k].id)) -
+                              translationOf(original.jointWorldMatrix(before[k].id))), 1e-12) << k;
+    }
+    EXPECT_EQ(joints.back().id, before.back().id) << "the chest stays the chest";
+    EXPECT_LT(glm::length(translationOf(document.jointWorldMatrix(joints.back().id)) - chest), 1e-12);
+    EXPECT_EQ(document.instanceNamed("neck")->parentJoint, before.back().id) << "the neck still hangs on the chest";
+    EXPECT_EQ(document.instance(spine)->options.at("number"), Value(7LL));
+    const model::Rig rig = build::buildRig(document, test::builtinTemplates());
+    EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
+
+    history.undo();
+    EXPECT_TRUE(document == original);
+
+    // Fewer joints: a child hanging under a joint that would go away refuses the edit.
+    auto shorter = build::regenerateGuide(document, test::builtinTemplates(), spine, {{"number", Value(3LL)}});
+    ASSERT_TRUE(shorter);
+    EXPECT_EQ(shorter->joints.size(), 3u);
+    edit::History other(document);
+    document.instance(document.instanceNamed("neck")->id)->parentJoint = before[2].id;
+    const auto refused = edit::replaceInstance(other, shorter.take(), "Set guide option number");
+    ASSERT_TRUE(refused);
+    EXPECT_EQ(*refused, "'neck' hangs under a guide joint of 'spine' that would go away");
+    EXPECT_EQ(document.instance(spine)->joints.size(), 5u);
+}

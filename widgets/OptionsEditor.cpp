@@ -1,0 +1,215 @@
+#include "OptionsEditor.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QSlider>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+
+namespace rs::widgets {
+
+namespace {
+
+constexpr double kUnbounded = 1e9;
+constexpr int kSliderSteps = 1000;
+
+QString text(const std::string& s) { return QString::fromStdString(s); }
+
+QDoubleSpinBox* numberBox(QWidget* parent, double value, std::optional<double> min, std::optional<double> max)
+{
+    auto* box = new QDoubleSpinBox(parent);
+    box->setDecimals(4);
+    box->setRange(min.value_or(-kUnbounded), max.value_or(kUnbounded));
+    box->setSingleStep(min && max ? (*max - *min) / 100.0 : 0.1);
+    box->setValue(value);
+    box->setKeyboardTracking(false); // one edit per finished value, not per keystroke
+    return box;
+}
+
+// Flow YAML as the manifests write it (`[a, b]`, `{k: v}`); empty is valid.
+bool isValidYaml(const QString& value)
+{
+    try {
+        YAML::Load(value.toStdString());
+        return true;
+    } catch (const YAML::Exception&) {
+        return false;
+    }
+}
+
+} // namespace
+
+OptionsEditor::OptionsEditor(QWidget* parent) : QWidget(parent)
+{
+    setObjectName("optionsEditor");
+    auto* layout = new QVBoxLayout(this);
+    m_title = new QLabel(tr("Select a template instance to edit its options"), this);
+    m_title->setWordWrap(true);
+    layout->addWidget(m_title);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_body = new QWidget(scroll);
+    new QVBoxLayout(m_body);
+    scroll->setWidget(m_body);
+    layout->addWidget(scroll, 1);
+}
+
+QWidget* OptionsEditor::editorFor(const std::string& name) const
+{
+    auto it = m_editors.find(name);
+    return it == m_editors.end() ? nullptr : it->second;
+}
+
+void OptionsEditor::setInstance(const model::TemplateInstance* instance, const templates::TemplateManifest* manifest)
+{
+    m_instance = instance ? instance->id : model::kNoId;
+    m_editors.clear();
+    auto* layout = static_cast<QVBoxLayout*>(m_body->layout());
+    while (QLayoutItem* item = layout->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    if (!instance || !manifest) {
+        m_title->setText(instance ? tr("%1: template %2 is not loaded").arg(text(instance->name), text(instance->templateId))
+                                  : tr("Select a template instance to edit its options"));
+        return;
+    }
+    m_title->setText(tr("<b>%1</b> (%2)").arg(text(instance->name), text(manifest->id)));
+    m_title->setToolTip(text(manifest->desc));
+    auto group = [&](const QString& title, const std::vector<templates::Parameter>& parameters) {
+        if (parameters.empty())
+            return;
+        auto* box = new QGroupBox(title, m_body);
+        auto* form = new QFormLayout(box);
+        for (const auto& p : parameters) {
+            auto stored = instance->options.find(p.name);
+            addParameter(form, p, stored == instance->options.end() ? p.value : stored->second);
+        }
+        layout->addWidget(box);
+    };
+    group(tr("Guides"), manifest->guides);
+    group(tr("Options"), manifest->opts);
+    layout->addStretch(1);
+}
+
+void OptionsEditor::addParameter(QFormLayout* form, const templates::Parameter& parameter, const Value& value)
+{
+    const bool changed = value != parameter.value;
+    auto* label = new QLabel(text(parameter.name), m_body);
+    label->setToolTip(text(parameter.help));
+    if (changed)
+        label->setStyleSheet("font-weight: bold");
+    auto* row = new QWidget(m_body);
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    QWidget* editor = makeEditor(parameter, value);
+    editor->setObjectName(text("option:" + parameter.name));
+    editor->setToolTip(text(parameter.help));
+    layout->addWidget(editor, 1);
+    auto* reset = new QToolButton(row);
+    reset->setObjectName(text("reset:" + parameter.name));
+    reset->setText(QStringLiteral("\u21BA"));
+    reset->setToolTip(tr("Reset to the default (%1)").arg(text(formatValue(parameter.value))));
+    reset->setEnabled(changed);
+    const model::InstanceId id = m_instance;
+    connect(reset, &QToolButton::clicked, this,
+            [this, id, name = parameter.name, fallback = parameter.value] { emit optionEdited(id, name, fallback); });
+    layout->addWidget(reset);
+    m_editors[parameter.name] = editor;
+    form->addRow(label, row);
+}
+
+QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& value)
+{
+    const model::InstanceId id = m_instance;
+    auto emitValue = [this, id, name = p.name](const Value& v) { emit optionEdited(id, name, v); };
+    switch (typeOf(p.value)) {
+    case ValueType::Bool: {
+        auto* box = new QCheckBox(m_body);
+        box->setChecked(std::get<bool>(value));
+        connect(box, &QCheckBox::toggled, this, [emitValue](bool on) { emitValue(Value(on)); });
+        return box;
+    }
+    case ValueType::Int: {
+        const long long current = std::get<long long>(value);
+        if (p.isEnum()) {
+            auto* combo = new QComboBox(m_body);
+            for (const auto& [index, label] : p.enumLabels)
+                combo->addItem(text(label), QVariant::fromValue(index));
+            combo->setCurrentIndex(combo->findData(QVariant::fromValue(current)));
+            connect(combo, &QComboBox::activated, this,
+                    [combo, emitValue](int) { emitValue(Value(combo->currentData().toLongLong())); });
+            return combo;
+        }
+        auto* box = new QSpinBox(m_body);
+        box->setRange(int(p.min.value_or(-kUnbounded)), int(p.max.value_or(kUnbounded)));
+        box->setValue(int(current));
+        box->setKeyboardTracking(false);
+        connect(box, &QSpinBox::valueChanged, this, [emitValue](int v) { emitValue(Value(static_cast<long long>(v))); });
+        return box;
+    }
+    case ValueType::Float: {
+        auto* holder = new QWidget(m_body);
+        auto* layout = new QHBoxLayout(holder);
+        layout->setContentsMargins(0, 0, 0, 0);
+        auto* box = numberBox(holder, std::get<double>(value), p.min, p.max);
+        layout->addWidget(box);
+        if (p.min && p.max && *p.max > *p.min) {
+            auto* slider = new QSlider(Qt::Horizontal, holder);
+            slider->setRange(0, kSliderSteps);
+            const double lo = *p.min, span = *p.max - *p.min;
+            slider->setValue(int(std::lround((std::get<double>(value) - lo) / span * kSliderSteps)));
+            connect(slider, &QSlider::sliderReleased, this,
+                    [slider, box, lo, span] { box->setValue(lo + span * slider->value() / kSliderSteps); });
+            layout->addWidget(slider, 1);
+        }
+        connect(box, &QDoubleSpinBox::valueChanged, this, [emitValue](double v) { emitValue(Value(v)); });
+        return holder;
+    }
+    case ValueType::String: {
+        auto* line = new QLineEdit(text(std::get<std::string>(value)), m_body);
+        const bool yaml = p.yaml;
+        connect(line, &QLineEdit::editingFinished, this, [line, yaml, emitValue] {
+            if (yaml && !isValidYaml(line->text())) {
+                line->setStyleSheet("border: 1px solid #d04040");
+                line->setToolTip(tr("Not valid YAML: the option keeps its value"));
+                return;
+            }
+            line->setStyleSheet(QString());
+            emitValue(Value(line->text().toStdString()));
+        });
+        return line;
+    }
+    case ValueType::Vec3: {
+        auto* holder = new QWidget(m_body);
+        auto* layout = new QHBoxLayout(holder);
+        layout->setContentsMargins(0, 0, 0, 0);
+        const Vec3 v = std::get<Vec3>(value);
+        std::array<QDoubleSpinBox*, 3> boxes{};
+        for (int axis = 0; axis < 3; ++axis) {
+            boxes[std::size_t(axis)] = numberBox(holder, v[axis], p.min, p.max);
+            layout->addWidget(boxes[std::size_t(axis)]);
+        }
+        for (auto* box : boxes)
+            connect(box, &QDoubleSpinBox::valueChanged, this,
+                    [boxes, emitValue] { emitValue(Value(Vec3(boxes[0]->value(), boxes[1]->value(), boxes[2]->value()))); });
+        return holder;
+    }
+    }
+    return new QLabel(text(formatValue(value)), m_body);
+}
+
+} // namespace rs::widgets
