@@ -54,6 +54,7 @@ void MainWindow::createDocks()
     optionsDock->setObjectName("optionsDock");
     optionsDock->setWidget(m_options);
     addDockWidget(Qt::RightDockWidgetArea, optionsDock);
+    resizeDocks({optionsDock}, {340}, Qt::Horizontal);
 
     m_status = new QLabel(this);
     statusBar()->addPermanentWidget(m_status);

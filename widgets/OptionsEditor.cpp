@@ -58,13 +58,10 @@ OptionsEditor::OptionsEditor(QWidget* parent) : QWidget(parent)
     m_title = new QLabel(tr("Select a template instance to edit its options"), this);
     m_title->setWordWrap(true);
     layout->addWidget(m_title);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    m_body = new QWidget(scroll);
-    new QVBoxLayout(m_body);
-    scroll->setWidget(m_body);
-    layout->addWidget(scroll, 1);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    layout->addWidget(m_scroll, 1);
 }
 
 QWidget* OptionsEditor::editorFor(const std::string& name) const
@@ -77,12 +74,10 @@ void OptionsEditor::setInstance(const model::TemplateInstance* instance, const t
 {
     m_instance = instance ? instance->id : model::kNoId;
     m_editors.clear();
-    auto* layout = static_cast<QVBoxLayout*>(m_body->layout());
-    while (QLayoutItem* item = layout->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
+    m_body = new QWidget; // a fresh page; setWidget below deletes the previous one
+    auto* layout = new QVBoxLayout(m_body);
     if (!instance || !manifest) {
+        m_scroll->setWidget(m_body);
         m_title->setText(instance ? tr("%1: template %2 is not loaded").arg(text(instance->name), text(instance->templateId))
                                   : tr("Select a template instance to edit its options"));
         return;
@@ -103,6 +98,7 @@ void OptionsEditor::setInstance(const model::TemplateInstance* instance, const t
     group(tr("Guides"), manifest->guides);
     group(tr("Options"), manifest->opts);
     layout->addStretch(1);
+    m_scroll->setWidget(m_body); // shown whole, once filled
 }
 
 void OptionsEditor::addParameter(QFormLayout* form, const templates::Parameter& parameter, const Value& value)

@@ -14,6 +14,7 @@
 
 class QFormLayout;
 class QLabel;
+class QScrollArea;
 
 namespace rs::widgets {
 
@@ -38,6 +39,7 @@ private:
 
     model::InstanceId m_instance = model::kNoId;
     QLabel* m_title = nullptr;
+    QScrollArea* m_scroll = nullptr;
     QWidget* m_body = nullptr;
     std::map<std::string, QWidget*> m_editors;
 };

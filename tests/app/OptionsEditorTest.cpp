@@ -1,0 +1,59 @@
+// The options dock driven through its real widgets (issue 7).
+#include "EditorTestSupport.h"
+#include "OptionsEditor.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QSpinBox>
+#include <QToolButton>
+
+using namespace rs;
+
+TEST(OptionsEditor, EditsOptionsAndGuideParametersAsUndoableSteps)
+{
+    test::Editor editor;
+    auto& w = editor.window;
+    const model::GuideDocument original = w.session().document();
+    const auto spine = w.session().instanceNamed("spine");
+    w.session().select(app::Selection::ofInstance(spine));
+    QApplication::processEvents();
+    widgets::OptionsEditor* options = w.optionsEditor();
+    ASSERT_EQ(options->instance(), spine);
+
+    // A boolean option: one click, one undo step, shown bold with its reset button.
+    auto* stretch = qobject_cast<QCheckBox*>(options->editorFor("stretch"));
+    ASSERT_NE(stretch, nullptr);
+    EXPECT_TRUE(stretch->isChecked());
+    EXPECT_FALSE(options->findChild<QToolButton*>("reset:stretch")->isEnabled());
+    stretch->click();
+    QApplication::processEvents();
+    EXPECT_EQ(w.session().document().instance(spine)->options.at("stretch"), Value(false));
+    auto* reset = options->findChild<QToolButton*>("reset:stretch");
+    ASSERT_NE(reset, nullptr);
+    EXPECT_TRUE(reset->isEnabled()) << "a changed option can be reset";
+    EXPECT_EQ(w.session().history().undoText(), "Set option stretch");
+
+    // A guide parameter regenerates the guide joints.
+    auto* number = qobject_cast<QSpinBox*>(options->editorFor("number"));
+    ASSERT_NE(number, nullptr);
+    EXPECT_EQ(number->minimum(), 3);
+    EXPECT_EQ(number->maximum(), 12);
+    EXPECT_FALSE(number->toolTip().isEmpty()) << "help as the tooltip";
+    number->setValue(7);
+    QApplication::processEvents();
+    EXPECT_EQ(w.session().document().instance(spine)->joints.size(), 7u);
+    EXPECT_EQ(w.session().history().undoText(), "Set guide option number");
+    w.action("build")->trigger();
+    ASSERT_NE(w.session().rig(), nullptr);
+    EXPECT_FALSE(hasErrors(w.session().rig()->diagnostics)) << formatAll(w.session().rig()->diagnostics);
+    w.findChild<QDockWidget*>("optionsDock")->grab().save(QString::fromStdString(test::outputPath("options-dock.png")));
+
+    // Reset, then undo everything back to the start.
+    options->findChild<QToolButton*>("reset:stretch")->click();
+    QApplication::processEvents();
+    EXPECT_EQ(w.session().document().instance(spine)->options.count("stretch"), 0u);
+    while (w.action("undo")->isEnabled())
+        w.action("undo")->trigger();
+    EXPECT_TRUE(w.session().document() == original);
+}
