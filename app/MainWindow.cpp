@@ -3,6 +3,8 @@
 #include "ChannelBox.h"
 #include "ExportDialog.h"
 #include "OptionsEditor.h"
+#include "HistoryView.h"
+#include "TemplateLibrary.h"
 #include "LogPanel.h"
 #include "OutlinerView.h"
 #include "ViewportWidget.h"
@@ -36,6 +38,12 @@ void MainWindow::createDocks()
     outlinerDock->setWidget(m_outliner);
     addDockWidget(Qt::LeftDockWidgetArea, outlinerDock);
 
+    m_library = new widgets::TemplateLibrary(this);
+    auto* libraryDock = new QDockWidget(tr("Templates"), this);
+    libraryDock->setObjectName("libraryDock");
+    libraryDock->setWidget(m_library);
+    addDockWidget(Qt::LeftDockWidgetArea, libraryDock);
+
     m_log = new widgets::LogPanel(this);
     auto* logDock = new QDockWidget(tr("Build log"), this);
     logDock->setObjectName("logDock");
@@ -48,6 +56,14 @@ void MainWindow::createDocks()
     channelDock->setObjectName("channelBoxDock");
     channelDock->setWidget(m_channelBox);
     addDockWidget(Qt::RightDockWidgetArea, channelDock);
+
+    m_historyView = new widgets::HistoryView(this);
+    auto* historyDock = new QDockWidget(tr("History"), this);
+    historyDock->setObjectName("historyDock");
+    historyDock->setWidget(m_historyView);
+    addDockWidget(Qt::BottomDockWidgetArea, historyDock);
+    tabifyDockWidget(logDock, historyDock);
+    logDock->raise();
 
     m_options = new widgets::OptionsEditor(this);
     auto* optionsDock = new QDockWidget(tr("Options"), this);
@@ -125,6 +141,21 @@ void MainWindow::connectOptions()
     connect(&m_session, &EditorSession::documentChanged, this, refresh);
     connect(&m_session, &EditorSession::selectionChanged, this, refresh);
     connect(&m_session, &EditorSession::templatesReloaded, this, refresh);
+
+    auto refreshLists = [this] {
+        m_historyView->refresh(m_session.history());
+        m_library->refresh(m_session.templates());
+    };
+    connect(&m_session, &EditorSession::documentChanged, m_historyView,
+            [this] { m_historyView->refresh(m_session.history()); });
+    connect(&m_session, &EditorSession::templatesReloaded, m_library, refreshLists);
+    connect(m_historyView, &widgets::HistoryView::jumpRequested, this,
+            [this](int index) { m_session.history().jumpTo(std::size_t(index)); });
+    connect(m_library, &widgets::TemplateLibrary::templateActivated, this, [this](const QString& id) {
+        if (const QString error = m_session.addTemplate(id, m_session.selection().joint); !error.isEmpty())
+            m_log->addMessage(error, Severity::Error);
+    });
+    refreshLists();
     connect(m_options, &widgets::OptionsEditor::optionEdited, this,
             [this](model::InstanceId id, const std::string& name, const Value& value) {
                 if (const QString error = m_session.setOption(id, name, value); !error.isEmpty()) {

@@ -9,7 +9,7 @@ class QAction;
 class QLabel;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; }
 
 namespace rs::app {
 
@@ -24,6 +24,8 @@ public:
     widgets::LogPanel* log() const { return m_log; }
     widgets::ChannelBox* channelBox() const { return m_channelBox; }
     widgets::OptionsEditor* optionsEditor() const { return m_options; }
+    widgets::HistoryView* historyView() const { return m_historyView; }
+    widgets::TemplateLibrary* templateLibrary() const { return m_library; }
     QAction* action(const QString& objectName) const;
 
     bool openFile(const QString& path);
@@ -46,7 +48,7 @@ private:
     void createDocks();
     void connectDocument();
     void connectRigMode();
-    void connectOptions();  // the options dock: shows the selected instance, edits go to the session  // viewport picks, walks and drags, channel box
+    void connectOptions();  // options, template library and history docks  // viewport picks, walks and drags, channel box
     void refreshViews();
     void refreshScene();
     void updateTitle();
@@ -59,6 +61,8 @@ private:
     widgets::ChannelBox* m_channelBox = nullptr;
     widgets::ExportDialog* m_exportDialog = nullptr;
     widgets::OptionsEditor* m_options = nullptr;
+    widgets::HistoryView* m_historyView = nullptr;
+    widgets::TemplateLibrary* m_library = nullptr;
     QLabel* m_status = nullptr;
 };
 

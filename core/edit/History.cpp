@@ -1,5 +1,7 @@
 #include "edit/History.h"
 
+#include <algorithm>
+
 namespace rs::edit {
 
 void History::push(std::unique_ptr<Command> command)
@@ -31,6 +33,16 @@ void History::redo()
 
 std::string History::undoText() const { return canUndo() ? m_commands[m_index - 1]->text() : std::string(); }
 std::string History::redoText() const { return canRedo() ? m_commands[m_index]->text() : std::string(); }
+std::string History::textAt(std::size_t i) const { return i < m_commands.size() ? m_commands[i]->text() : std::string(); }
+
+void History::jumpTo(std::size_t index)
+{
+    index = std::min(index, m_commands.size());
+    while (m_index > index)
+        undo();
+    while (m_index < index)
+        redo();
+}
 
 void History::reset(model::GuideDocument document)
 {

@@ -33,6 +33,10 @@ public:
     std::string redoText() const;
     std::size_t size() const { return m_commands.size(); }
     std::size_t index() const { return m_index; }
+    // The text of command i (0 <= i < size()); commands at or past index() are undone.
+    std::string textAt(std::size_t i) const;
+    // Undoes or redoes until `index` commands are applied (clamped to size()).
+    void jumpTo(std::size_t index);
 
     // Replaces the document wholesale (File > Open) and forgets the stack.
     void reset(model::GuideDocument document);
