@@ -3,6 +3,7 @@
 #include "MainWindow.h"
 
 #include "ExportDialog.h"
+#include "Settings.h"
 
 #include "LogPanel.h"
 #include "ViewportWidget.h"
@@ -105,7 +106,18 @@ void MainWindow::createActions()
         connect(a, &QAction::triggered, this, [this, path] { newFromSample(path); });
         newMenu->addAction(a);
     }
-    file->addActions({open, save, saveAs});
+    file->addAction(open);
+    QMenu* recent = file->addMenu(tr("Open &Recent"));
+    recent->setObjectName("recentMenu");
+    connect(recent, &QMenu::aboutToShow, this, [this, recent] {
+        recent->clear();
+        const QStringList files = settings::recentFiles();
+        for (const QString& path : files)
+            recent->addAction(path, this, [this, path] { openFile(path); });
+        if (files.isEmpty())
+            recent->addAction(tr("No recent guides"))->setEnabled(false);
+    });
+    file->addActions({save, saveAs});
     file->addSeparator();
     file->addAction(exportRigAction);
     file->addSeparator();

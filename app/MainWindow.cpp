@@ -4,6 +4,7 @@
 #include "ExportDialog.h"
 #include "OptionsEditor.h"
 #include "HistoryView.h"
+#include "Settings.h"
 #include "TemplateLibrary.h"
 #include "LogPanel.h"
 #include "OutlinerView.h"
@@ -24,6 +25,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     createActions();
     createDocks();
     connectDocument();
+    settings::restoreWindow(*this);
 }
 
 void MainWindow::createDocks()
@@ -246,6 +248,7 @@ bool MainWindow::openFile(const QString& path)
     const bool ok = m_session.open(path, diagnostics);
     report(ok ? tr("Opened %1").arg(path) : tr("Could not open %1; the open guide is unchanged").arg(path), diagnostics);
     if (ok) {
+        settings::addRecentFile(path);
         updateTitle();
         m_viewport->frameAll();
     }
@@ -269,6 +272,8 @@ bool MainWindow::saveFile(const QString& path)
 {
     Diagnostics diagnostics;
     const bool ok = m_session.save(path, diagnostics);
+    if (ok)
+        settings::addRecentFile(path);
     report(ok ? tr("Saved %1").arg(path) : tr("Could not save %1").arg(path), diagnostics);
     updateTitle();
     return ok;
@@ -337,6 +342,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
             }
         }
     }
+    settings::saveWindow(*this);
     event->accept();
 }
 

@@ -8,6 +8,8 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDir>
+#include <QSettings>
 #include <QMenu>
 #include <QTest>
 #include <QToolBar>
@@ -165,6 +167,9 @@ TEST(Editor, ClickingAGuideJointInTheViewportSelectsItsInstance)
 int main(int argc, char** argv)
 {
     viewport::requestOpenGl33Core();
+    // Saved layouts and recent files per test process (ctest runs tests in parallel), not the user's.
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope,
+                       QDir::tempPath() + "/rigsmith-editor-settings-" + QString::number(QCoreApplication::applicationPid()));
     QApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
