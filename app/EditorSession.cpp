@@ -46,6 +46,7 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
 
 void EditorSession::replaceDocument(model::GuideDocument document, const QString& path)
 {
+    m_ownsAutosave = false; // the previous guide's autosave stays to be offered when it is opened again
     m_filePath = path;
     m_selection = {};
     m_rig.reset();
@@ -78,8 +79,10 @@ bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
     diagnostics = io::saveGuideFile(m_document, path.toStdString());
     if (hasErrors(diagnostics))
         return false;
+    discardAutosave(); // the previous path's (or the untitled one's)
     m_filePath = path;
     m_history.setClean();
+    m_ownsAutosave = false;
     return true;
 }
 

@@ -60,6 +60,22 @@ public:
     // an empty guide.
     bool newDocument(const QString& templatePath, Diagnostics& diagnostics);
     bool save(const QString& path, Diagnostics& diagnostics);
+
+    // Autosave (Autosave.cpp): the unsaved document goes to autosavePath()
+    // ("<file>.autosave", or untitled.autosave.yml in the app data folder for an
+    // untitled guide), atomically. A save or a clean close removes it; one left
+    // behind means a crash, and opening the file offers to recover it.
+    static QString autosavePathFor(const QString& path);
+    QString autosavePath() const { return autosavePathFor(m_filePath); }
+    // Writes the autosave when there are unsaved changes; true when written.
+    bool autosave(Diagnostics& diagnostics) const;
+    // Removes the autosave this session wrote or recovered (never another
+    // session's crash autosave the rigger declined to recover).
+    void discardAutosave() const;
+    // An autosave of `path` newer than the file itself (or of an untitled guide when `path` is empty).
+    static bool hasRecovery(const QString& path);
+    // Opens the autosave of `path` as `path`, with its changes unsaved.
+    bool recover(const QString& path, Diagnostics& diagnostics);
     // Builds the rig; returns the build time in milliseconds.
     double build();
     // Runs io::runExport on the built rig with the document's pose.
@@ -111,6 +127,7 @@ signals:
 private:
     // Replaces the open document (selection, rig and history start over).
     void replaceDocument(model::GuideDocument document, const QString& path);
+    mutable bool m_ownsAutosave = false;
     void compileRig();          // after a build: program, pose, evaluation
     void poseFromDocument();    // after any edit (undo included)
     void previewPose(eval::Pose pose);

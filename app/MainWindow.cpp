@@ -11,6 +11,8 @@
 #include "ViewportWidget.h"
 
 #include <QCloseEvent>
+#include <QFile>
+#include <QTimer>
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -26,6 +28,37 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     createDocks();
     connectDocument();
     settings::restoreWindow(*this);
+
+    auto* autosave = new QTimer(this);
+    autosave->setObjectName("autosaveTimer");
+    connect(autosave, &QTimer::timeout, this, [this] {
+        Diagnostics diagnostics;
+        if (m_session.autosave(diagnostics))
+            statusBar()->showMessage(tr("Autosaved to %1").arg(m_session.autosavePath()), 3000);
+        else if (hasErrors(diagnostics))
+            report(tr("Autosave failed"), diagnostics);
+    });
+    autosave->start(kAutosaveMilliseconds);
+    m_recoveryPrompt = [this](const QString& file, const QString& autosavePath) {
+        return QMessageBox::question(this, tr("Recover unsaved changes?"),
+                                     tr("%1 has unsaved changes from %2 that were not saved (the editor did not close "
+                                        "normally). Recover them?")
+                                         .arg(file.isEmpty() ? tr("An untitled guide") : file,
+                                              QFileInfo(autosavePath).lastModified().toString()),
+                                     QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
+    };
+}
+
+void MainWindow::offerUntitledRecovery()
+{
+    if (!EditorSession::hasRecovery({}))
+        return;
+    Diagnostics diagnostics;
+    if (m_recoveryPrompt({}, EditorSession::autosavePathFor({})) && m_session.recover({}, diagnostics))
+        report(tr("Recovered an untitled guide"), diagnostics);
+    else
+        QFile::remove(EditorSession::autosavePathFor({}));
+    updateTitle();
 }
 
 void MainWindow::createDocks()
@@ -245,6 +278,17 @@ void MainWindow::reloadTemplates()
 bool MainWindow::openFile(const QString& path)
 {
     Diagnostics diagnostics;
+    if (EditorSession::hasRecovery(path) && m_recoveryPrompt(path, EditorSession::autosavePathFor(path))) {
+        const bool recovered = m_session.recover(path, diagnostics);
+        report(recovered ? tr("Recovered unsaved changes of %1").arg(path) : tr("Could not recover %1").arg(path),
+               diagnostics);
+        if (recovered) {
+            settings::addRecentFile(path);
+            updateTitle();
+            m_viewport->frameAll();
+            return true;
+        }
+    }
     const bool ok = m_session.open(path, diagnostics);
     report(ok ? tr("Opened %1").arg(path) : tr("Could not open %1; the open guide is unchanged").arg(path), diagnostics);
     if (ok) {
@@ -343,6 +387,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         }
     }
     settings::saveWindow(*this);
+    m_session.discardAutosave(); // a clean close: saved, or the changes were discarded
     event->accept();
 }
 

@@ -5,6 +5,8 @@
 
 #include <QMainWindow>
 
+#include <functional>
+
 class QAction;
 class QLabel;
 
@@ -28,7 +30,14 @@ public:
     widgets::TemplateLibrary* templateLibrary() const { return m_library; }
     QAction* action(const QString& objectName) const;
 
+    // Offers to recover an autosave newer than the file (a crash left it).
     bool openFile(const QString& path);
+    // At startup: an untitled guide's autosave left by a crash is offered back.
+    void offerUntitledRecovery();
+    // How a recovery is offered (a question box; tests answer it themselves).
+    using RecoveryPrompt = std::function<bool(const QString& file, const QString& autosave)>;
+    void setRecoveryPrompt(RecoveryPrompt prompt) { m_recoveryPrompt = std::move(prompt); }
+    static constexpr int kAutosaveMilliseconds = 60000;
     // File > New: an untitled copy of a sample (empty path: an empty guide).
     bool newFromSample(const QString& samplePath);
     bool saveFile(const QString& path);
@@ -60,6 +69,7 @@ private:
     widgets::LogPanel* m_log = nullptr;
     widgets::ChannelBox* m_channelBox = nullptr;
     widgets::ExportDialog* m_exportDialog = nullptr;
+    RecoveryPrompt m_recoveryPrompt;
     widgets::OptionsEditor* m_options = nullptr;
     widgets::HistoryView* m_historyView = nullptr;
     widgets::TemplateLibrary* m_library = nullptr;

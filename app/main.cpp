@@ -55,11 +55,16 @@ int main(int argc, char** argv)
     }
 
     rs::app::MainWindow window;
+    if (!screenshot.isEmpty())
+        window.setRecoveryPrompt([](const QString&, const QString&) { return false; }); // never asks
     if (!args.isEmpty() && !window.openFile(args.front()) && !screenshot.isEmpty())
         return 1;
     window.show();
-    if (screenshot.isEmpty())
+    if (screenshot.isEmpty()) {
+        if (args.isEmpty())
+            window.offerUntitledRecovery();
         return app.exec();
+    }
 
     window.buildRig();
     window.viewportWidget()->frameAll();

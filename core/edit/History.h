@@ -42,6 +42,8 @@ public:
     void reset(model::GuideDocument document);
     bool isClean() const { return m_cleanIndex == m_index; }
     void setClean() { m_cleanIndex = m_index; notify(); }
+    // Unsaved whatever is undone or redone (a document recovered from an autosave).
+    void setModified() { m_cleanIndex = static_cast<std::size_t>(-1); notify(); }
 
     using Listener = std::function<void()>;
     int addListener(Listener listener);
