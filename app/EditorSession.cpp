@@ -179,6 +179,20 @@ QString EditorSession::setOption(model::InstanceId id, const std::string& name, 
     return error ? QString::fromStdString(*error) : QString();
 }
 
+QString EditorSession::resetOptions(model::InstanceId id)
+{
+    const model::TemplateInstance* instance = m_document.instance(id);
+    const templates::TemplateManifest* manifest = instance ? m_templates->find(instance->templateId) : nullptr;
+    if (!manifest)
+        return tr("no template for this instance");
+    model::TemplateInstance reset = *instance;
+    std::erase_if(reset.options, [&](const auto& entry) { return !manifest->findGuide(entry.first); });
+    if (reset.options == instance->options)
+        return {};
+    auto error = edit::replaceInstance(m_history, std::move(reset), "Reset options of " + instance->name);
+    return error ? QString::fromStdString(*error) : QString();
+}
+
 void EditorSession::select(const Selection& selection)
 {
     m_selection = selection;

@@ -92,6 +92,9 @@ public:
     // One option of an instance, one undo step; a guide parameter (`guides`)
     // regenerates the instance's guide joints, keeping those that still exist.
     QString setOption(model::InstanceId id, const std::string& name, const Value& value);
+    // Every `opts` value back to the template's default (guide parameters, which
+    // shape the joints, stay), one undo step.
+    QString resetOptions(model::InstanceId id);
     void select(const Selection& selection);
     model::InstanceId instanceNamed(const QString& name) const;
 

@@ -145,6 +145,14 @@ void MainWindow::connectDocument()
             refreshViews(); // put the old name back in the tree
         }
     });
+    connect(m_outliner, &widgets::OutlinerView::branchesRequested, this, [this](quint32 id, const QString& branches) {
+        if (const QString error = m_session.setOption(id, "branches", Value(branches.toStdString())); !error.isEmpty())
+            m_log->addMessage(error, Severity::Error);
+    });
+    connect(m_outliner, &widgets::OutlinerView::resetOptionsRequested, this, [this](quint32 id) {
+        if (const QString error = m_session.resetOptions(id); !error.isEmpty())
+            m_log->addMessage(error, Severity::Error);
+    });
     connect(m_log, &widgets::LogPanel::subjectActivated, this, [this](const QString& subject) {
         if (const auto id = m_session.instanceNamed(subject))
             m_session.select(Selection::ofInstance(id));

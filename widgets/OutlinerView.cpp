@@ -141,6 +141,23 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
         if (ok && text != name)
             emit renameRequested(id, text);
     });
+    QAction* mirror = menu->addAction(tr("Mirror (L/R branches)"));
+    mirror->setObjectName("mirror");
+    mirror->setCheckable(true);
+    const auto stored = instance->options.find("branches");
+    const Value* branches = stored != instance->options.end() ? &stored->second : nullptr;
+    if (!branches && manifest)
+        if (const templates::Parameter* p = manifest->findOpt("branches"))
+            branches = &p->value;
+    const bool mirrored = branches && std::holds_alternative<std::string>(*branches) &&
+                          std::get<std::string>(*branches).find_first_not_of("[] ") != std::string::npos;
+    mirror->setChecked(mirrored);
+    connect(mirror, &QAction::triggered, this,
+            [this, id](bool on) { emit branchesRequested(id, on ? QStringLiteral("[L, R]") : QStringLiteral("[]")); });
+    QAction* reset = menu->addAction(tr("Reset options"));
+    reset->setObjectName("resetOptions");
+    reset->setEnabled(!instance->options.empty());
+    connect(reset, &QAction::triggered, this, [this, id] { emit resetOptionsRequested(id); });
     QAction* remove = menu->addAction(tr("Delete"));
     remove->setObjectName("delete");
     connect(remove, &QAction::triggered, this, [this, id] { emit removeRequested(id); });

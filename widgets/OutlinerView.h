@@ -32,6 +32,9 @@ signals:
     void addTemplateRequested(const QString& templateId, quint32 hookJoint);
     void removeRequested(quint32 instance);
     void renameRequested(quint32 instance, const QString& newName);
+    // Mirror: the instance's `branches` option ("[L, R]" to mirror, "[]" for one side).
+    void branchesRequested(quint32 instance, const QString& branches);
+    void resetOptionsRequested(quint32 instance);
     void walkRequested(int direction); // arrow keys: an rs::eval::WalkDirection over instances
 
 private:

@@ -5,6 +5,8 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QDockWidget>
+#include <QMenu>
+#include "OutlinerView.h"
 #include <QSpinBox>
 #include <QToolButton>
 
@@ -53,6 +55,30 @@ TEST(OptionsEditor, EditsOptionsAndGuideParametersAsUndoableSteps)
     options->findChild<QToolButton*>("reset:stretch")->click();
     QApplication::processEvents();
     EXPECT_EQ(w.session().document().instance(spine)->options.count("stretch"), 0u);
+    while (w.action("undo")->isEnabled())
+        w.action("undo")->trigger();
+    EXPECT_TRUE(w.session().document() == original);
+}
+
+TEST(OptionsEditor, OutlinerMirrorsAndResetsOptionsAsUndoableSteps)
+{
+    test::Editor editor;
+    auto& w = editor.window;
+    const model::GuideDocument original = w.session().document();
+    const auto neck = w.session().instanceNamed("neck");
+    std::unique_ptr<QMenu> menu(w.outliner()->createContextMenu(neck, &w));
+    auto* mirror = menu->findChild<QAction*>("mirror");
+    ASSERT_NE(mirror, nullptr);
+    EXPECT_FALSE(mirror->isChecked());
+    EXPECT_FALSE(menu->findChild<QAction*>("resetOptions")->isEnabled()) << "nothing to reset yet";
+    mirror->trigger();
+    EXPECT_EQ(w.session().document().instance(neck)->options.at("branches"), Value(std::string("[L, R]")));
+
+    menu.reset(w.outliner()->createContextMenu(neck, &w));
+    EXPECT_TRUE(menu->findChild<QAction*>("mirror")->isChecked());
+    menu->findChild<QAction*>("resetOptions")->trigger();
+    EXPECT_TRUE(w.session().document().instance(neck)->options.empty());
+    EXPECT_EQ(w.session().history().undoText(), "Reset options of neck");
     while (w.action("undo")->isEnabled())
         w.action("undo")->trigger();
     EXPECT_TRUE(w.session().document() == original);
