@@ -132,12 +132,10 @@ void MainWindow::connectDocument()
     connect(m_outliner, &widgets::OutlinerView::instanceSelected, this,
             [this](quint32 id) { m_session.select(Selection::ofInstance(id)); });
     connect(m_outliner, &widgets::OutlinerView::addTemplateRequested, this, [this](const QString& id, quint32 joint) {
-        if (const QString error = m_session.addTemplate(id, joint); !error.isEmpty())
-            m_log->addMessage(error, Severity::Error);
+        logError(m_session.addTemplate(id, joint));
     });
     connect(m_outliner, &widgets::OutlinerView::removeRequested, this, [this](quint32 id) {
-        if (const QString error = m_session.removeInstance(id); !error.isEmpty())
-            m_log->addMessage(error, Severity::Error);
+        logError(m_session.removeInstance(id));
     });
     connect(m_outliner, &widgets::OutlinerView::renameRequested, this, [this](quint32 id, const QString& name) {
         if (const QString error = m_session.renameInstance(id, name); !error.isEmpty()) {
@@ -146,12 +144,10 @@ void MainWindow::connectDocument()
         }
     });
     connect(m_outliner, &widgets::OutlinerView::branchesRequested, this, [this](quint32 id, const QString& branches) {
-        if (const QString error = m_session.setOption(id, "branches", Value(branches.toStdString())); !error.isEmpty())
-            m_log->addMessage(error, Severity::Error);
+        logError(m_session.setOption(id, "branches", Value(branches.toStdString())));
     });
     connect(m_outliner, &widgets::OutlinerView::resetOptionsRequested, this, [this](quint32 id) {
-        if (const QString error = m_session.resetOptions(id); !error.isEmpty())
-            m_log->addMessage(error, Severity::Error);
+        logError(m_session.resetOptions(id));
     });
     connect(m_log, &widgets::LogPanel::subjectActivated, this, [this](const QString& subject) {
         if (const auto id = m_session.instanceNamed(subject))
@@ -195,8 +191,7 @@ void MainWindow::connectOptions()
     connect(m_historyView, &widgets::HistoryView::jumpRequested, this,
             [this](int index) { m_session.history().jumpTo(std::size_t(index)); });
     connect(m_library, &widgets::TemplateLibrary::templateActivated, this, [this](const QString& id) {
-        if (const QString error = m_session.addTemplate(id, m_session.selection().joint); !error.isEmpty())
-            m_log->addMessage(error, Severity::Error);
+        logError(m_session.addTemplate(id, m_session.selection().joint));
     });
     refreshLists();
     connect(m_options, &widgets::OptionsEditor::optionEdited, this,
@@ -206,6 +201,12 @@ void MainWindow::connectOptions()
                     m_session.select(m_session.selection()); // show the stored value again
                 }
             });
+}
+
+void MainWindow::logError(const QString& error)
+{
+    if (!error.isEmpty())
+        m_log->addMessage(error, Severity::Error);
 }
 
 void MainWindow::refreshViews()
@@ -237,8 +238,7 @@ void MainWindow::connectRigMode()
         m_session.endDrag(node, QString("%1 %2").arg(verbs[int(m_viewport->gizmoMode())], name));
     });
     connect(m_channelBox, &widgets::ChannelBox::channelEdited, this, [this](int channel, double value, bool match) {
-        if (const QString error = m_session.setChannel(channel, value, match); !error.isEmpty())
-            m_log->addMessage(error, Severity::Error);
+        logError(m_session.setChannel(channel, value, match));
     });
 }
 

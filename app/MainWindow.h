@@ -62,6 +62,7 @@ private:
     void refreshScene();
     void updateTitle();
     void report(const QString& what, const Diagnostics& diagnostics);
+    void logError(const QString& error); // an edit's refusal message, when there is one
 
     EditorSession m_session;
     viewport::ViewportWidget* m_viewport = nullptr;
