@@ -56,6 +56,8 @@ void MainWindow::createActions()
 
     const QString filter = tr("Rigsmith guides (*.yml *.yaml)");
     connect(open, &QAction::triggered, this, [this, filter] {
+        if (!maySwitchDocument(tr("Save the guide before opening another?")))
+            return;
         const QString path = QFileDialog::getOpenFileName(this, tr("Open guide"), QString::fromStdString(samplesDirectory()), filter);
         if (!path.isEmpty())
             openFile(path);
@@ -95,7 +97,10 @@ void MainWindow::createActions()
     QMenu* newMenu = file->addMenu(tr("&New"));
     newMenu->setObjectName("newMenu");
     QAction* empty = makeAction(this, "new:empty", tr("&Empty guide"), QKeySequence::New);
-    connect(empty, &QAction::triggered, this, [this] { newFromSample(QString()); });
+    connect(empty, &QAction::triggered, this, [this] {
+        if (maySwitchDocument(tr("Save the guide before starting a new one?")))
+            newFromSample(QString());
+    });
     newMenu->addAction(empty);
     newMenu->addSeparator();
     const QDir samples(QString::fromStdString(samplesDirectory()));
@@ -103,7 +108,10 @@ void MainWindow::createActions()
         QAction* a = makeAction(this, "new:" + sample.completeBaseName(), sample.completeBaseName(), {});
         a->setToolTip(tr("A new guide starting from the %1 sample").arg(sample.completeBaseName()));
         const QString path = sample.absoluteFilePath();
-        connect(a, &QAction::triggered, this, [this, path] { newFromSample(path); });
+        connect(a, &QAction::triggered, this, [this, path] {
+            if (maySwitchDocument(tr("Save the guide before starting a new one?")))
+                newFromSample(path);
+        });
         newMenu->addAction(a);
     }
     file->addAction(open);
@@ -113,7 +121,10 @@ void MainWindow::createActions()
         recent->clear();
         const QStringList files = settings::recentFiles();
         for (const QString& path : files)
-            recent->addAction(path, this, [this, path] { openFile(path); });
+            recent->addAction(path, this, [this, path] {
+                if (maySwitchDocument(tr("Save the guide before opening another?")))
+                    openFile(path);
+            });
         if (files.isEmpty())
             recent->addAction(tr("No recent guides"))->setEnabled(false);
     });

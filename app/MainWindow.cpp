@@ -377,22 +377,24 @@ void MainWindow::buildRig()
     m_session.setMode(EditorMode::Rig); // a build is for checking the rig as an animator will use it
 }
 
+bool MainWindow::maySwitchDocument(const QString& question)
+{
+    if (m_session.history().isClean() || !isVisible() || property("skipUnsavedPrompt").toBool())
+        return true;
+    const auto answer = QMessageBox::question(this, tr("Unsaved changes"), question,
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    if (answer == QMessageBox::Save)
+        action("save")->trigger();
+    return answer == QMessageBox::Discard || m_session.history().isClean();
+}
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (!m_session.history().isClean() && isVisible() && !property("skipUnsavedPrompt").toBool()) {
-        const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("Save the guide before closing?"),
-                                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-        if (answer == QMessageBox::Cancel) {
-            event->ignore();
-            return;
-        }
-        if (answer == QMessageBox::Save) {
-            action("save")->trigger();
-            if (!m_session.history().isClean()) {
-                event->ignore();
-                return;
-            }
-        }
+    if (!maySwitchDocument(tr("Save the guide before closing?"))) {
+        event->ignore();
+        return;
     }
     settings::saveWindow(*this);
     m_session.discardAutosave(); // a clean close: saved, or the changes were discarded

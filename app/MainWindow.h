@@ -63,6 +63,8 @@ private:
     void updateTitle();
     void report(const QString& what, const Diagnostics& diagnostics);
     void logError(const QString& error); // an edit's refusal message, when there is one
+    // Unsaved changes: asks Save / Discard / Cancel; true when the document may be replaced.
+    bool maySwitchDocument(const QString& question);
 
     EditorSession m_session;
     viewport::ViewportWidget* m_viewport = nullptr;

@@ -2,7 +2,10 @@
 #include "EditorTestSupport.h"
 
 #include <QAction>
+#include <QAbstractButton>
+#include <QApplication>
 #include <QFile>
+#include <QMessageBox>
 #include <QTimer>
 
 #include <fstream>
@@ -54,4 +57,28 @@ TEST(Autosave, AnAutosaveLeftByACrashIsOfferedAndRecoveredUnsaved)
     EXPECT_TRUE(s.history().isClean());
     EXPECT_FALSE(QFile::exists(app::EditorSession::autosavePathFor(file))) << "saving removes the autosave";
     EXPECT_FALSE(app::EditorSession::hasRecovery(file));
+}
+
+TEST(Files, NewAsksBeforeDroppingUnsavedChanges)
+{
+    test::Editor editor;
+    auto& w = editor.window;
+    w.setProperty("skipUnsavedPrompt", false);
+    app::EditorSession& s = w.session();
+    ASSERT_TRUE(s.renameInstance(s.instanceNamed("neck"), "neck_main").isEmpty());
+    // Cancel the question box: the edited guide stays open.
+    QTimer::singleShot(200, [] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+            box->button(QMessageBox::Cancel)->click();
+    });
+    w.action("new:empty")->trigger();
+    EXPECT_NE(s.instanceNamed("neck_main"), model::kNoId) << "cancelled: nothing lost";
+    // Discard: the new guide replaces it.
+    QTimer::singleShot(200, [] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+            box->button(QMessageBox::Discard)->click();
+    });
+    w.action("new:empty")->trigger();
+    EXPECT_TRUE(s.document().instances().empty());
+    w.setProperty("skipUnsavedPrompt", true);
 }
