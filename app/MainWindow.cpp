@@ -61,6 +61,15 @@ void MainWindow::offerUntitledRecovery()
     updateTitle();
 }
 
+QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area)
+{
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(objectName);
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    return dock;
+}
+
 void MainWindow::createDocks()
 {
     m_viewport = new viewport::ViewportWidget(this);
@@ -68,44 +77,21 @@ void MainWindow::createDocks()
     setCentralWidget(m_viewport);
 
     m_outliner = new widgets::OutlinerView(this);
-    auto* outlinerDock = new QDockWidget(tr("Outliner"), this);
-    outlinerDock->setObjectName("outlinerDock");
-    outlinerDock->setWidget(m_outliner);
-    addDockWidget(Qt::LeftDockWidgetArea, outlinerDock);
-
+    addDock(m_outliner, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
     m_library = new widgets::TemplateLibrary(this);
-    auto* libraryDock = new QDockWidget(tr("Templates"), this);
-    libraryDock->setObjectName("libraryDock");
-    libraryDock->setWidget(m_library);
-    addDockWidget(Qt::LeftDockWidgetArea, libraryDock);
+    addDock(m_library, tr("Templates"), "libraryDock", Qt::LeftDockWidgetArea);
 
     m_log = new widgets::LogPanel(this);
-    auto* logDock = new QDockWidget(tr("Build log"), this);
-    logDock->setObjectName("logDock");
-    logDock->setWidget(m_log);
-    addDockWidget(Qt::BottomDockWidgetArea, logDock);
+    QDockWidget* logDock = addDock(m_log, tr("Build log"), "logDock", Qt::BottomDockWidgetArea);
+    m_historyView = new widgets::HistoryView(this);
+    tabifyDockWidget(logDock, addDock(m_historyView, tr("History"), "historyDock", Qt::BottomDockWidgetArea));
+    logDock->raise();
 
     m_channelBox = new widgets::ChannelBox(this);
     m_channelBox->setObjectName("channelBox");
-    auto* channelDock = new QDockWidget(tr("Channel box"), this);
-    channelDock->setObjectName("channelBoxDock");
-    channelDock->setWidget(m_channelBox);
-    addDockWidget(Qt::RightDockWidgetArea, channelDock);
-
-    m_historyView = new widgets::HistoryView(this);
-    auto* historyDock = new QDockWidget(tr("History"), this);
-    historyDock->setObjectName("historyDock");
-    historyDock->setWidget(m_historyView);
-    addDockWidget(Qt::BottomDockWidgetArea, historyDock);
-    tabifyDockWidget(logDock, historyDock);
-    logDock->raise();
-
+    addDock(m_channelBox, tr("Channel box"), "channelBoxDock", Qt::RightDockWidgetArea);
     m_options = new widgets::OptionsEditor(this);
-    auto* optionsDock = new QDockWidget(tr("Options"), this);
-    optionsDock->setObjectName("optionsDock");
-    optionsDock->setWidget(m_options);
-    addDockWidget(Qt::RightDockWidgetArea, optionsDock);
-    resizeDocks({optionsDock}, {340}, Qt::Horizontal);
+    resizeDocks({addDock(m_options, tr("Options"), "optionsDock", Qt::RightDockWidgetArea)}, {340}, Qt::Horizontal);
 
     m_status = new QLabel(this);
     statusBar()->addPermanentWidget(m_status);

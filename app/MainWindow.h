@@ -8,6 +8,7 @@
 #include <functional>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 
 namespace rs::viewport { class ViewportWidget; }
@@ -55,6 +56,7 @@ private:
     void createActions();   // Actions.cpp
     void createPoseActions(); // Actions.cpp: Guide/Rig mode, pose tools, gizmo space
     void createDocks();
+    QDockWidget* addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area);
     void connectDocument();
     void connectRigMode();
     void connectOptions();  // options, template library and history docks  // viewport picks, walks and drags, channel box

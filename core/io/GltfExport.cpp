@@ -5,6 +5,8 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <filesystem>
 #include <sstream>
 
@@ -99,9 +101,28 @@ std::vector<Index> packJoints(const SkinnedMesh& mesh)
     return joints;
 }
 
+// At most kMaxInfluences weights summing to 1 on every vertex: what glTF
+// requires, and what the validator already ensured unless the export was forced.
+bool isPackable(const SkinnedMesh& mesh)
+{
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        if (mesh.influenceCount(v) > std::size_t(kMaxInfluences))
+            return false;
+        double sum = 0.0;
+        for (std::size_t k = 0; k < mesh.influenceCount(v); ++k)
+            sum += mesh.influencesOf(v)[k].weight;
+        if (std::abs(sum - 1.0) > kWeightTolerance)
+            return false;
+    }
+    return true;
+}
+
 int addMesh(tinygltf::Model& m, GltfBuilder& b, const SkinnedMesh& source, std::size_t jointCount)
 {
-    const SkinnedMesh mesh = limitInfluences(source); // what forced exports need; a no-op on valid meshes
+    std::optional<SkinnedMesh> limited; // only forced exports of bad weights pay for a fixed copy
+    if (!isPackable(source))
+        limited = limitInfluences(source);
+    const SkinnedMesh& mesh = limited ? *limited : source;
     std::vector<float> positions, normals, weights(mesh.vertexCount() * 4, 0.f);
     positions.reserve(mesh.vertexCount() * 3);
     for (const auto& p : mesh.positions)
