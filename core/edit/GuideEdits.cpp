@@ -1,7 +1,10 @@
 #include "edit/GuideEdits.h"
 
+#include "edit/GuideMove.h"
+
 #include <algorithm>
 #include <cctype>
+#include <map>
 
 namespace rs::edit {
 
@@ -121,6 +124,40 @@ private:
     std::string m_what;
 };
 
+// Instances taken out (each at its index then) and others appended, in one
+// step: duplicating appends copies; re-hanging takes a subtree and appends its
+// new version, so parents stay before children.
+class ReplaceInstances final : public Command {
+public:
+    ReplaceInstances(std::vector<InstanceId> removed, std::vector<TemplateInstance> added, std::string what)
+        : m_removedIds(std::move(removed)), m_added(std::move(added)), m_what(std::move(what)) {}
+    std::string text() const override { return m_what; }
+    void redo(GuideDocument& d) override
+    {
+        m_removed.clear();
+        for (InstanceId id : m_removedIds) {
+            const std::size_t index = *d.indexOf(id);
+            m_removed.emplace_back(index, d.takeInstance(id));
+        }
+        for (const TemplateInstance& instance : m_added)
+            d.insertInstance(instance, d.instances().size());
+    }
+    void undo(GuideDocument& d) override
+    {
+        for (auto it = m_added.rbegin(); it != m_added.rend(); ++it)
+            d.takeInstance(it->id);
+        for (auto it = m_removed.rbegin(); it != m_removed.rend(); ++it)
+            d.insertInstance(it->second, it->first);
+        m_removed.clear();
+    }
+
+private:
+    std::vector<InstanceId> m_removedIds;
+    std::vector<TemplateInstance> m_added;
+    std::string m_what;
+    std::vector<std::pair<std::size_t, TemplateInstance>> m_removed;
+};
+
 } // namespace
 
 bool isValidInstanceName(const std::string& name)
@@ -231,6 +268,71 @@ Error setPose(History& history, model::PoseValues pose, const std::string& what)
     if (pose == history.document().pose)
         return "the pose did not change";
     history.push(std::make_unique<SetPose>(history.document().pose, std::move(pose), what));
+    return std::nullopt;
+}
+
+Error duplicateInstances(History& history, const std::vector<InstanceId>& ids, std::vector<InstanceId>* copies)
+{
+    GuideDocument scratch = history.document(); // names and ids are taken from it as copies land
+    std::vector<TemplateInstance> added;
+    std::string what;
+    for (InstanceId top : ids) {
+        const TemplateInstance* original = scratch.instance(top);
+        if (!original)
+            return "no instance with id " + std::to_string(top);
+        what += (what.empty() ? "'" : ", '") + original->name + "'";
+        std::map<InstanceId, InstanceId> instanceIds;
+        std::map<model::JointId, model::JointId> jointIds;
+        for (InstanceId id : scratch.subtree(top)) {
+            TemplateInstance copy = *scratch.instance(id);
+            copy.id = instanceIds[id] = scratch.nextInstanceId();
+            copy.name = scratch.uniqueName(copy.name);
+            model::JointId next = scratch.nextJointId();
+            for (auto& joint : copy.joints) jointIds[joint.id] = next++;
+            for (auto& joint : copy.joints) {
+                joint.id = jointIds[joint.id];
+                if (joint.parent != model::kNoId) joint.parent = jointIds[joint.parent];
+            }
+            if (id != top) {
+                copy.parent = instanceIds[copy.parent];
+                copy.parentJoint = jointIds[copy.parentJoint];
+            }
+            if (id == top && copies) copies->push_back(copy.id);
+            scratch.insertInstance(copy, scratch.instances().size());
+            added.push_back(std::move(copy));
+        }
+    }
+    if (added.empty())
+        return "nothing to duplicate";
+    history.push(std::make_unique<ReplaceInstances>(std::vector<InstanceId>{}, std::move(added), "Duplicate " + what));
+    return std::nullopt;
+}
+
+Error reparentInstance(History& history, InstanceId id, model::JointId hookJoint)
+{
+    const GuideDocument& d = history.document();
+    const TemplateInstance* instance = d.instance(id);
+    if (!instance)
+        return "no instance with id " + std::to_string(id);
+    const TemplateInstance* newParent = hookJoint == model::kNoId ? nullptr : d.ownerOf(hookJoint);
+    if (hookJoint != model::kNoId && !newParent)
+        return "no guide joint with id " + std::to_string(hookJoint);
+    const std::vector<InstanceId> subtree = d.subtree(id);
+    if (newParent && std::find(subtree.begin(), subtree.end(), newParent->id) != subtree.end())
+        return "'" + instance->name + "' cannot hang under itself or an instance below it";
+    if (hookJoint == instance->parentJoint)
+        return "'" + instance->name + "' already hangs there";
+    std::vector<TemplateInstance> moved;
+    for (InstanceId sub : subtree)
+        moved.push_back(*d.instance(sub));
+    TemplateInstance& root = moved.front();
+    const Mat4 world = d.jointWorldMatrix(root.joints.front().id);
+    const Mat4 hookWorld = newParent ? d.jointWorldMatrix(hookJoint) : Mat4(1.0);
+    root.parent = newParent ? newParent->id : model::kNoId;
+    root.parentJoint = hookJoint;
+    root.joints.front().local = localTransformOf(glm::inverse(hookWorld) * world);
+    const std::string where = newParent ? "'" + newParent->name + "'" : "the top level";
+    history.push(std::make_unique<ReplaceInstances>(subtree, std::move(moved), "Re-hang '" + instance->name + "' under " + where));
     return std::nullopt;
 }
 

@@ -16,6 +16,15 @@ Error addInstance(History& history, model::TemplateInstance instance);
 // Removes the instance and everything hanging below it.
 Error removeInstance(History& history, model::InstanceId id);
 Error renameInstance(History& history, model::InstanceId id, const std::string& newName);
+// Copies the instances (each with everything hanging below it) in place, with
+// new ids and free names ("arm" -> "arm1"), as one undo step. `copies` gets the
+// ids of the new top instances, in order.
+Error duplicateInstances(History& history, const std::vector<model::InstanceId>& ids,
+                         std::vector<model::InstanceId>* copies = nullptr);
+// Re-hangs an instance (and what hangs below it) under another joint (kNoId:
+// top level), keeping its guide where it is in the world. Refused under its own
+// subtree.
+Error reparentInstance(History& history, model::InstanceId id, model::JointId hookJoint);
 Error setJointTransform(History& history, model::JointId joint, const Transform& local);
 // `value` equal to `defaultValue` removes the stored option (instances keep only
 // values that differ from the defaults).

@@ -22,21 +22,6 @@ Id sibling(const std::vector<Id>& siblings, Id from, int step)
     return siblings[static_cast<std::size_t>(index)];
 }
 
-std::string mirroredName(const std::string& name)
-{
-    static const std::pair<const char*, const char*> pairs[] = {{"L", "R"}, {"l", "r"}, {"Left", "Right"}, {"left", "right"}};
-    for (const auto& [a, b] : pairs)
-        for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
-            const std::string token(from);
-            if (name.size() > token.size() + 1 && name.compare(name.size() - token.size(), token.size(), token) == 0) {
-                const char separator = name[name.size() - token.size() - 1];
-                if (separator == '_' || separator == '.')
-                    return name.substr(0, name.size() - token.size()) + to;
-            }
-        }
-    return {};
-}
-
 } // namespace
 
 model::RigNodeIndex pickwalk(const model::Rig& rig, model::RigNodeIndex from, WalkDirection direction)
@@ -88,7 +73,7 @@ model::InstanceId pickwalk(const model::GuideDocument& guide, model::InstanceId 
         return sibling(siblings, from, direction == WalkDirection::Right ? 1 : -1);
     }
     case WalkDirection::Mirror: {
-        const std::string name = mirroredName(instance->name);
+        const std::string name = model::mirroredName(instance->name);
         const auto* twin = name.empty() ? nullptr : guide.instanceNamed(name);
         return twin ? twin->id : from;
     }

@@ -34,4 +34,19 @@ std::optional<NamingRules> namingPreset(const std::string& name)
     return std::nullopt;
 }
 
+std::string mirroredName(const std::string& name)
+{
+    static const std::pair<const char*, const char*> pairs[] = {{"L", "R"}, {"l", "r"}, {"Left", "Right"}, {"left", "right"}};
+    for (const auto& [a, b] : pairs)
+        for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+            const std::string token(from);
+            if (name.size() > token.size() + 1 && name.compare(name.size() - token.size(), token.size(), token) == 0) {
+                const char separator = name[name.size() - token.size() - 1];
+                if (separator == '_' || separator == '.')
+                    return name.substr(0, name.size() - token.size()) + to;
+            }
+        }
+    return {};
+}
+
 } // namespace rs::model

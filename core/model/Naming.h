@@ -26,4 +26,9 @@ struct NamingRules {
 // "mikan" or "suffix"; nullopt for an unknown preset.
 std::optional<NamingRules> namingPreset(const std::string& name);
 
+// The name with its side token swapped ("arm_L" -> "arm_R", "eye.left" ->
+// "eye.right"; L/R, l/r, Left/Right, left/right after '_' or '.'); empty when
+// the name has no side.
+std::string mirroredName(const std::string& name);
+
 } // namespace rs::model
