@@ -2,6 +2,8 @@
 // stays a thin composition root.
 #include "MainWindow.h"
 
+#include "ActionKit.h"
+
 #include "ExportDialog.h"
 #include "Settings.h"
 
@@ -20,10 +22,8 @@
 
 namespace rs::app {
 
-namespace {
-
 QAction* makeAction(QObject* owner, const QString& objectName, const QString& text, const QKeySequence& shortcut,
-                    const QString& icon = {})
+                    const QString& icon)
 {
     auto* a = new QAction(text, owner);
     a->setObjectName(objectName);
@@ -33,8 +33,6 @@ QAction* makeAction(QObject* owner, const QString& objectName, const QString& te
         a->setIcon(QIcon(QString::fromStdString(iconsDirectory()) + "/" + icon + ".svg"));
     return a;
 }
-
-} // namespace
 
 QAction* MainWindow::action(const QString& objectName) const
 {
@@ -147,6 +145,7 @@ void MainWindow::createActions()
     bar->addSeparator();
     bar->addActions({undo, redo});
     createPoseActions();
+    createViewActions();
 }
 
 void MainWindow::createPoseActions()

@@ -3,6 +3,7 @@
 // registry, the last built rig and the selection. All edits go through
 // rs::edit on the history; this object only adds Qt signals so the views can
 // follow. It holds no widgets.
+#include "edit/GuideMove.h"
 #include "edit/History.h"
 #include "eval/Pickwalk.h"
 #include "eval/PoseTools.h"
@@ -21,7 +22,8 @@ namespace rs::app {
 
 struct Selection {
     model::InstanceId instance = model::kNoId;
-    model::JointId joint = model::kNoId;
+    model::JointId joint = model::kNoId;           // the current guide joint (the gizmo's)
+    std::vector<model::JointId> joints;            // every selected guide joint, `joint` among them
     model::RigNodeIndex node = model::kNoNode;     // the current controller (rig mode)
     std::vector<model::RigNodeIndex> nodes;        // every selected controller, `node` among them
 
@@ -98,6 +100,24 @@ public:
     void select(const Selection& selection);
     model::InstanceId instanceNamed(const QString& name) const;
 
+    // Guide authoring in the viewport (GuideSession.cpp). Joints: click (add
+    // toggles) and box select; the current joint (or a selected instance's
+    // root) carries the gizmo. A drag previews without history and lands as one
+    // undo step; symmetry moves side-named twins, snapping rounds to the grid.
+    void selectGuideJoints(const std::vector<model::JointId>& joints, bool add);
+    model::JointId gizmoJoint() const;
+    void beginGuideDrag(model::JointId lead);
+    void dragGuideTo(const Mat4& leadWorld);
+    QString endGuideDrag(const QString& what);
+    void setGuideDragOptions(edit::GuideDragOptions options) { m_guideDragOptions = options; }
+    const edit::GuideDragOptions& guideDragOptions() const { return m_guideDragOptions; }
+    // Duplicates the instances (with what hangs below them) and selects the copies.
+    QString duplicateInstances(const std::vector<model::InstanceId>& ids);
+    QString reparentInstance(model::InstanceId id, model::JointId hookJoint);
+    // A reference model (FBX, OBJ, glTF...) shown see-through for placing guides; empty path clears it.
+    bool loadReference(const QString& path, Diagnostics& diagnostics);
+    const std::vector<glm::vec3>& referenceTriangles() const { return m_reference; }
+
     // Rig mode: the built rig posed by the document's pose (Build switches to it).
     EditorMode mode() const { return m_mode; }
     void setMode(EditorMode mode);
@@ -126,6 +146,8 @@ signals:
     void templatesReloaded();
     void modeChanged();
     void poseChanged();
+    void guidePreviewed(); // a guide drag moved joints (no history yet)
+    void referenceChanged();
 
 private:
     // Replaces the open document (selection, rig and history start over).
@@ -151,6 +173,11 @@ private:
     eval::Pose m_pose;
     eval::EvalState m_evaluation;
     std::optional<eval::Pose> m_dragStart;
+    std::optional<edit::GuideDrag> m_guideDrag;
+    std::vector<edit::JointTransform> m_guideDragLast;
+    edit::GuideDragOptions m_guideDragOptions;
+    std::vector<glm::vec3> m_reference;
+    void previewJoints(const std::vector<edit::JointTransform>& transforms);
 };
 
 } // namespace rs::app

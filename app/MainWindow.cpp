@@ -139,13 +139,9 @@ void MainWindow::connectDocument()
         if (const auto id = m_session.instanceNamed(subject))
             m_session.select(Selection::ofInstance(id));
     });
-    connect(m_viewport, &viewport::ViewportWidget::guideJointPicked, this,
-            [this](quint32 joint, quint32 owner) { m_session.select(Selection::ofInstance(owner, joint)); });
-    connect(m_viewport, &viewport::ViewportWidget::controllerPicked, this,
-            [this](quint32 node, bool add) { m_session.selectControllers({node}, add); });
-    connect(m_viewport, &viewport::ViewportWidget::nothingPicked, this, [this] { m_session.select({}); });
     connect(m_outliner, &widgets::OutlinerView::walkRequested, this,
             [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction), true); });
+    connectViewport();
     connectRigMode();
     connectOptions();
 
@@ -200,53 +196,6 @@ void MainWindow::refreshViews()
     m_outliner->refresh(m_session.document(), m_session.templates());
     m_outliner->selectInstance(m_session.selection().instance);
     refreshScene();
-}
-
-void MainWindow::connectRigMode()
-{
-    connect(&m_session, &EditorSession::modeChanged, this, [this] {
-        m_viewport->setRigMode(m_session.mode() == EditorMode::Rig);
-        refreshScene();
-    });
-    connect(&m_session, &EditorSession::poseChanged, this, &MainWindow::refreshScene);
-    connect(m_viewport, &viewport::ViewportWidget::controllersBoxSelected, this, [this](const QList<quint32>& nodes, bool add) {
-        m_session.selectControllers(std::vector<model::RigNodeIndex>(nodes.begin(), nodes.end()), add);
-    });
-    connect(m_viewport, &viewport::ViewportWidget::pickwalkRequested, this,
-            [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction)); });
-    connect(m_viewport, &viewport::ViewportWidget::gizmoDragStarted, this, [this](quint32 node) { m_session.beginDrag(node); });
-    connect(m_viewport, &viewport::ViewportWidget::gizmoDragged, this,
-            [this](quint32 node, const glm::dmat4& world) { m_session.dragTo(node, world); });
-    connect(m_viewport, &viewport::ViewportWidget::gizmoDragFinished, this, [this](quint32 node) {
-        static const char* verbs[] = {"Move", "Rotate", "Scale"};
-        const auto* rig = m_session.rig();
-        const QString name = rig && node < rig->nodes.size() ? QString::fromStdString(rig->nodes[node].name) : QString();
-        m_session.endDrag(node, QString("%1 %2").arg(verbs[int(m_viewport->gizmoMode())], name));
-    });
-    connect(m_channelBox, &widgets::ChannelBox::channelEdited, this, [this](int channel, double value, bool match) {
-        logError(m_session.setChannel(channel, value, match));
-    });
-}
-
-void MainWindow::refreshScene()
-{
-    const Selection& s = m_session.selection();
-    const bool rigMode = m_session.mode() == EditorMode::Rig;
-    const eval::EvalState* pose = rigMode ? m_session.evaluation() : nullptr;
-    m_viewport->setScene(viewport::makeScene(m_session.document(), m_session.rig(), {s.instance, s.joint, s.node, s.nodes}, pose));
-    const auto* rig = m_session.rig();
-    const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();
-    m_viewport->setGizmoTarget(hasNode ? s.node : model::kNoNode, hasNode ? pose->worldMatrix(s.node) : glm::dmat4(1.0));
-    m_channelBox->showNode(rigMode && m_session.program() ? &m_session.program()->channels() : nullptr,
-                           hasNode ? s.node : model::kNoNode, hasNode ? QString::fromStdString(rig->nodes[s.node].name) : QString(),
-                           &m_session.pose());
-    if (!rig)
-        m_status->setText(tr("Guide: %1 templates").arg(m_session.document().instances().size()));
-    else
-        m_status->setText(tr("Rig%1: %2 controllers, %3 skin joints")
-                              .arg(m_session.isRigStale() ? tr(" (out of date, press Build)") : QString())
-                              .arg(rig->count(model::RigNodeKind::Controller))
-                              .arg(rig->skinJointCount()));
 }
 
 void MainWindow::updateTitle()

@@ -47,6 +47,8 @@ public:
     bool exportRig(const io::ExportRequest& request);
     widgets::ExportDialog* exportDialog(); // File > Export..., made on first use
     void buildRig();
+    // Shows a model see-through for placing guides (Guide > Import Reference Model); empty clears it.
+    bool loadReference(const QString& path);
     void reloadTemplates();
 
 protected:
@@ -55,11 +57,13 @@ protected:
 private:
     void createActions();   // Actions.cpp
     void createPoseActions(); // Actions.cpp: Guide/Rig mode, pose tools, gizmo space
+    void createViewActions(); // ViewActions.cpp: camera views, framing, guide authoring tools
+    void connectViewport();   // ViewportWiring.cpp: picks, box selection, gizmo drags
     void createDocks();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area);
     void connectDocument();
-    void connectRigMode();
-    void connectOptions();  // options, template library and history docks  // viewport picks, walks and drags, channel box
+    void connectRigMode();  // pickwalk, channel box
+    void connectOptions();  // options, template library and history docks
     void refreshViews();
     void refreshScene();
     void updateTitle();

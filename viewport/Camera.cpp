@@ -19,18 +19,43 @@ glm::dmat4 Camera::viewMatrix() const
 
 glm::dmat4 Camera::projectionMatrix(double aspect) const
 {
-    return glm::perspective(fovYRadians, std::max(aspect, 1e-3), nearPlane, farPlane);
+    aspect = std::max(aspect, 1e-3);
+    if (orthographic) {
+        const double h = distance * std::tan(fovYRadians / 2.0);
+        return glm::ortho(-h * aspect, h * aspect, -h, h, -farPlane, farPlane);
+    }
+    return glm::perspective(fovYRadians, aspect, nearPlane, farPlane);
+}
+
+double Camera::metresPerPixel(double viewportHeightPixels) const
+{
+    return 2.0 * distance * std::tan(fovYRadians / 2.0) / std::max(viewportHeightPixels, 1.0);
+}
+
+void Camera::setView(CameraView view)
+{
+    constexpr double kHalfPi = 1.5707963267948966;
+    m_view = view;
+    orthographic = view != CameraView::Perspective;
+    switch (view) {
+    case CameraView::Perspective: yaw = 0.5; pitch = -0.3; break;
+    case CameraView::Front: yaw = 0.0; pitch = 0.0; break;
+    case CameraView::Side: yaw = kHalfPi; pitch = 0.0; break;
+    case CameraView::Top: yaw = 0.0; pitch = -(kHalfPi - 1e-6); break;
+    }
 }
 
 void Camera::orbit(double dxPixels, double dyPixels)
 {
+    orthographic = false;
+    m_view = CameraView::Perspective;
     yaw -= dxPixels * 0.01;
     pitch = std::clamp(pitch - dyPixels * 0.01, -1.55, 1.55);
 }
 
 void Camera::pan(double dxPixels, double dyPixels, double viewportHeightPixels)
 {
-    const double metresPerPixel = 2.0 * distance * std::tan(fovYRadians / 2.0) / std::max(viewportHeightPixels, 1.0);
+    const double metresPerPixel = this->metresPerPixel(viewportHeightPixels);
     const glm::dmat4 view = viewMatrix();
     const glm::dvec3 right(view[0][0], view[1][0], view[2][0]);
     const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);

@@ -5,8 +5,18 @@
 
 namespace rs::viewport {
 
+// The standard views (Maya's and Blender's): the front looks down -Z at a
+// character facing +Z, the side down -X, the top down -Y.
+enum class CameraView { Perspective, Front, Side, Top };
+
 class Camera {
 public:
+    // Turns the camera to a view; the three axis views are orthographic.
+    // Orbiting an orthographic view turns it back into a perspective one.
+    void setView(CameraView view);
+    CameraView view() const { return m_view; }
+    // World units per pixel at the target (the view's scale for pan and the gizmo).
+    double metresPerPixel(double viewportHeightPixels) const;
     glm::dmat4 viewMatrix() const;
     glm::dmat4 projectionMatrix(double aspect) const;
     glm::dvec3 position() const;
@@ -25,6 +35,10 @@ public:
     double pitch = -0.3;         // negative looks down on the scene
     double fovYRadians = 0.7;
     double nearPlane = 0.01, farPlane = 1000.0;
+    bool orthographic = false;
+
+private:
+    CameraView m_view = CameraView::Perspective;
 };
 
 // Projects a world point to pixel coordinates (origin top-left); z > 1 or < -1

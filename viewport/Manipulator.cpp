@@ -49,6 +49,8 @@ glm::dvec3 Gizmo::axis(int k) const
 
 double Gizmo::sizeFor(const Camera& camera, const glm::dvec3& origin, double heightPixels, double sizePixels)
 {
+    if (camera.orthographic)
+        return camera.metresPerPixel(heightPixels) * sizePixels;
     const double distance = glm::length(camera.position() - origin);
     return 2.0 * distance * std::tan(camera.fovYRadians / 2.0) * sizePixels / std::max(1.0, heightPixels);
 }

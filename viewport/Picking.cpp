@@ -45,19 +45,46 @@ PickResult pick(const Scene& scene, const Camera& camera, double width, double h
     return best;
 }
 
+namespace {
+
+// Tests world points against a pixel rectangle.
+struct PixelBox {
+    PixelBox(const Camera& camera, double width, double height, glm::dvec2 a, glm::dvec2 b)
+        : viewProjection(camera.projectionMatrix(width / height) * camera.viewMatrix()), width(width), height(height),
+          lo(glm::min(a, b)), hi(glm::max(a, b)) {}
+    bool contains(const glm::dvec3& world) const
+    {
+        glm::dvec2 p;
+        return projectToPixels(viewProjection, world, width, height, p) && p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y;
+    }
+    glm::dmat4 viewProjection;
+    double width, height;
+    glm::dvec2 lo, hi;
+};
+
+} // namespace
+
+std::vector<model::JointId> boxPickJoints(const Scene& scene, const Camera& camera, double width, double height,
+                                          glm::dvec2 cornerA, glm::dvec2 cornerB)
+{
+    const PixelBox box(camera, width, height, cornerA, cornerB);
+    std::vector<model::JointId> out;
+    if (scene.showGuides)
+        for (const auto& j : scene.guideJoints)
+            if (box.contains(j.position)) out.push_back(j.id);
+    return out;
+}
+
 std::vector<model::RigNodeIndex> boxPick(const Scene& scene, const Camera& camera, double width, double height,
                                          glm::dvec2 cornerA, glm::dvec2 cornerB)
 {
-    const glm::dmat4 viewProjection = camera.projectionMatrix(width / height) * camera.viewMatrix();
-    const glm::dvec2 lo = glm::min(cornerA, cornerB), hi = glm::max(cornerA, cornerB);
+    const PixelBox box(camera, width, height, cornerA, cornerB);
     std::vector<model::RigNodeIndex> out;
     for (const auto& c : scene.curves) {
         if (!out.empty() && out.back() == c.node)
             continue;
         for (const auto& point : c.points) {
-            glm::dvec2 p;
-            if (projectToPixels(viewProjection, point, width, height, p) && p.x >= lo.x && p.x <= hi.x && p.y >= lo.y &&
-                p.y <= hi.y) {
+            if (box.contains(point)) {
                 if (std::find(out.begin(), out.end(), c.node) == out.end())
                     out.push_back(c.node);
                 break;

@@ -24,4 +24,8 @@ double distanceToSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b);
 std::vector<model::RigNodeIndex> boxPick(const Scene& scene, const Camera& camera, double width, double height,
                                          glm::dvec2 cornerA, glm::dvec2 cornerB);
 
+// Guide joints inside the pixel rectangle, in scene order.
+std::vector<model::JointId> boxPickJoints(const Scene& scene, const Camera& camera, double width, double height,
+                                          glm::dvec2 cornerA, glm::dvec2 cornerB);
+
 } // namespace rs::viewport

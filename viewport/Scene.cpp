@@ -1,5 +1,7 @@
 #include "Scene.h"
 
+#include "build/BranchStage.h"
+
 #include <algorithm>
 
 namespace rs::viewport {
@@ -16,8 +18,53 @@ bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const
     return any;
 }
 
+bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi)
+{
+    lo = glm::dvec3(1e300);
+    hi = glm::dvec3(-1e300);
+    bool any = false;
+    auto add = [&](const glm::dvec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); any = true; };
+    if (scene.showGuides)
+        for (const auto& j : scene.guideJoints) if (j.selected) add(j.position);
+    for (const auto& c : scene.curves)
+        if (c.selected) for (const auto& p : c.points) add(p);
+    return any;
+}
+
+namespace {
+
+std::vector<SceneJoint> mirroredGuides(const model::GuideDocument& guide, const templates::TemplateRegistry& templates)
+{
+    Diagnostics ignored; // the build reports branch problems
+    const build::ExpandedGuide expanded = build::expandBranches(guide, templates, ignored);
+    std::vector<SceneJoint> out;
+    for (const auto& instance : expanded.document.instances()) {
+        const auto copy = expanded.copies.find(instance.id);
+        if (copy == expanded.copies.end() || copy->second.mirror == Mat4(1.0))
+            continue;
+        const Mat4& mirror = copy->second.mirror;
+        auto placed = [&](model::JointId id) { return glm::dvec3(mirror * glm::dvec4(translationOf(expanded.document.jointWorldMatrix(id)), 1.0)); };
+        for (const auto& joint : instance.joints) {
+            SceneJoint j;
+            j.owner = copy->second.original;
+            j.position = placed(joint.id);
+            const model::JointId parent = joint.parent != model::kNoId ? joint.parent : instance.parentJoint;
+            if (parent != model::kNoId) {
+                j.hasParent = true;
+                const auto parentCopy = expanded.copies.find(expanded.document.ownerOf(parent)->id);
+                const Mat4& parentMirror = parentCopy != expanded.copies.end() ? parentCopy->second.mirror : Mat4(1.0);
+                j.parentPosition = glm::dvec3(parentMirror * glm::dvec4(translationOf(expanded.document.jointWorldMatrix(parent)), 1.0));
+            }
+            out.push_back(j);
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
-                const eval::EvalState* pose)
+                const eval::EvalState* pose, const templates::TemplateRegistry* templates)
 {
     Scene scene;
     scene.showGuides = pose == nullptr;
@@ -32,9 +79,13 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                 j.hasParent = true;
                 j.parentPosition = translationOf(guide.jointWorldMatrix(parent));
             }
-            j.selected = joint.id == selection.joint || (selection.joint == model::kNoId && instance.id == selection.instance);
+            j.selected = joint.id == selection.joint ||
+                         std::find(selection.joints.begin(), selection.joints.end(), joint.id) != selection.joints.end() ||
+                         (selection.joint == model::kNoId && instance.id == selection.instance);
             scene.guideJoints.push_back(j);
         }
+    if (templates && scene.showGuides)
+        scene.mirrorJoints = mirroredGuides(guide, *templates);
     if (!rig)
         return scene;
     const bool posed = pose && pose->world.size() == rig->nodes.size();

@@ -5,6 +5,7 @@
 #include "eval/RigProgram.h"
 #include "model/GuideDocument.h"
 #include "model/Rig.h"
+#include "templates/TemplateRegistry.h"
 
 #include <glm/glm.hpp>
 #include <vector>
@@ -30,6 +31,7 @@ struct SceneCurve {
 struct SceneSelection {
     model::InstanceId instance = model::kNoId;
     model::JointId joint = model::kNoId;
+    std::vector<model::JointId> joints;     // every selected guide joint (guide mode), `joint` among them
     model::RigNodeIndex node = model::kNoNode;
     std::vector<model::RigNodeIndex> nodes; // every selected controller (rig mode)
 };
@@ -38,6 +40,10 @@ struct Scene {
     std::vector<SceneJoint> guideJoints;
     std::vector<SceneCurve> curves;
     std::vector<SceneJoint> skinJoints;   // id unused; owner = instance
+    // The other side of mirrored branches (`branches: [L, R]`): derived from the
+    // authored guide, drawn dimmer, not pickable; they follow every edit.
+    std::vector<SceneJoint> mirrorJoints;
+    std::vector<glm::vec3> reference;     // a see-through reference model, triangles
     std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo)
     bool showGuides = true;
 
@@ -47,7 +53,10 @@ struct Scene {
 
 // `rig` may be null (not built yet). With `pose` (an evaluation of the rig) the
 // controllers and skin joints are drawn posed and the guides hidden: Rig mode.
+// With `templates` the mirrored branches' guides are drawn too.
 Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
-                const eval::EvalState* pose = nullptr);
+                const eval::EvalState* pose = nullptr, const templates::TemplateRegistry* templates = nullptr);
+// Bounds of the selected guide joints or controllers; false when nothing is selected.
+bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
 
 } // namespace rs::viewport

@@ -65,17 +65,33 @@ QPoint ViewportWidget::toWidgetPixels(const glm::dvec3& world) const
     return QPoint(int(std::lround(p.x)), int(std::lround(p.y)));
 }
 
-void ViewportWidget::setRigMode(bool on)
+void ViewportWidget::frameSelection()
 {
-    m_rigMode = on;
-    if (!on)
-        m_gizmoNode = model::kNoNode;
+    glm::dvec3 lo, hi;
+    if (selectionBounds(m_scene, lo, hi))
+        m_camera.frame(lo, hi);
+    else
+        frameAll();
     update();
 }
 
-void ViewportWidget::setGizmoTarget(model::RigNodeIndex node, const glm::dmat4& world)
+void ViewportWidget::setView(CameraView view)
 {
-    m_gizmoNode = m_rigMode ? node : model::kNoNode;
+    m_camera.setView(view);
+    emit viewChanged(int(view));
+    update();
+}
+
+void ViewportWidget::setRigMode(bool on)
+{
+    m_rigMode = on;
+    m_gizmoTarget = model::kNoNode;
+    update();
+}
+
+void ViewportWidget::setGizmoTarget(quint32 target, const glm::dmat4& world)
+{
+    m_gizmoTarget = target;
     if (!m_gizmoDrag) // mid-drag the gizmo stays where the drag began
         m_gizmo.target = world;
     update();
@@ -98,7 +114,7 @@ void ViewportWidget::setGizmoWorldSpace(bool world)
 
 std::optional<Gizmo> ViewportWidget::gizmo() const
 {
-    if (m_gizmoNode == model::kNoNode)
+    if (m_gizmoTarget == model::kNoNode)
         return std::nullopt;
     Gizmo g = m_gizmo;
     g.size = Gizmo::sizeFor(m_camera, g.origin(), height());
@@ -130,8 +146,8 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
     m_pressPosition = m_lastPosition = event->position().toPoint();
     m_dragButton = event->button();
     m_dragged = false;
-    m_orbiting = event->modifiers() & Qt::AltModifier || !m_rigMode;
-    if (event->button() != Qt::LeftButton || !m_rigMode || (event->modifiers() & Qt::AltModifier))
+    m_orbiting = event->modifiers() & Qt::AltModifier;
+    if (event->button() != Qt::LeftButton || m_orbiting)
         return;
     const glm::dvec2 pixel(event->position().x(), event->position().y());
     if (const auto g = gizmo()) {
@@ -140,7 +156,7 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
             m_gizmoDrag.emplace(*g, handle, rayThroughPixel(m_camera, width(), height(), pixel));
             m_activeHandle = handle;
             m_orbiting = false;
-            emit gizmoDragStarted(m_gizmoNode);
+            emit gizmoDragStarted(m_gizmoTarget);
             update();
         }
     }
@@ -157,11 +173,12 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         return;
     if (m_gizmoDrag) {
         const Ray ray = rayThroughPixel(m_camera, width(), height(), glm::dvec2(p.x(), p.y()));
-        emit gizmoDragged(m_gizmoNode, m_gizmoDrag->worldFor(ray));
+        emit gizmoDragged(m_gizmoTarget, m_gizmoDrag->worldFor(ray));
         return;
     }
     const bool alt = event->modifiers() & Qt::AltModifier;
-    if (m_dragButton == Qt::LeftButton && !m_orbiting) { // Rig mode: box select
+    const bool wasOrtho = m_camera.orthographic;
+    if (m_dragButton == Qt::LeftButton && !m_orbiting) { // box select
         if (!m_rubberBand)
             m_rubberBand = new QRubberBand(QRubberBand::Rectangle, this);
         m_rubberBand->setGeometry(QRect(m_pressPosition, p).normalized());
@@ -174,6 +191,8 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         m_camera.pan(delta.x(), delta.y(), height());
     else if (m_dragButton == Qt::RightButton && alt)
         m_camera.dolly(delta.x() * 0.05);
+    if (wasOrtho && !m_camera.orthographic)
+        emit viewChanged(int(m_camera.view()));
     update();
 }
 
@@ -183,18 +202,23 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
     if (m_gizmoDrag) {
         m_gizmoDrag.reset();
         m_activeHandle = -1;
-        emit gizmoDragFinished(m_gizmoNode);
+        emit gizmoDragFinished(m_gizmoTarget);
     } else if (event->button() == Qt::LeftButton && m_dragged && !m_orbiting) {
         if (m_rubberBand)
             m_rubberBand->hide();
-        const auto nodes = boxPick(m_scene, m_camera, width(), height(), glm::dvec2(m_pressPosition.x(), m_pressPosition.y()),
-                                   glm::dvec2(event->position().x(), event->position().y()));
-        emit controllersBoxSelected(QList<quint32>(nodes.begin(), nodes.end()), add);
+        const glm::dvec2 a(m_pressPosition.x(), m_pressPosition.y()), b(event->position().x(), event->position().y());
+        if (m_rigMode) {
+            const auto nodes = boxPick(m_scene, m_camera, width(), height(), a, b);
+            emit controllersBoxSelected(QList<quint32>(nodes.begin(), nodes.end()), add);
+        } else {
+            const auto joints = boxPickJoints(m_scene, m_camera, width(), height(), a, b);
+            emit guideJointsBoxSelected(QList<quint32>(joints.begin(), joints.end()), add);
+        }
     } else if (event->button() == Qt::LeftButton && !m_dragged) {
         const PickResult hit = pick(m_scene, m_camera, width(), height(),
                                     glm::dvec2(event->position().x(), event->position().y()));
         if (hit.kind == PickResult::Kind::GuideJoint)
-            emit guideJointPicked(hit.joint, hit.owner);
+            emit guideJointPicked(hit.joint, hit.owner, add);
         else if (hit.kind == PickResult::Kind::Controller)
             emit controllerPicked(hit.node, add);
         else if (!add)
@@ -210,12 +234,31 @@ void ViewportWidget::wheelEvent(QWheelEvent* event)
     update();
 }
 
+bool ViewportWidget::handleViewKey(QKeyEvent* event)
+{
+    if ((event->modifiers() & ~Qt::KeypadModifier) != Qt::NoModifier)
+        return false;
+    const std::pair<int, CameraView> views[] = {{Qt::Key_1, CameraView::Front}, {Qt::Key_3, CameraView::Side},
+                                                {Qt::Key_7, CameraView::Top},   {Qt::Key_5, CameraView::Perspective},
+                                                {Qt::Key_0, CameraView::Perspective}};
+    for (const auto& [key, view] : views)
+        if (event->key() == key) {
+            setView(view);
+            return true;
+        }
+    if (event->key() == Qt::Key_F)
+        frameSelection();
+    else if (event->key() == Qt::Key_A)
+        frameAll();
+    else
+        return false;
+    return true;
+}
+
 void ViewportWidget::keyPressEvent(QKeyEvent* event)
 {
-    if (event->key() == Qt::Key_A || event->key() == Qt::Key_F) {
-        frameAll();
+    if (handleViewKey(event))
         return;
-    }
     const std::pair<int, GizmoMode> gizmoKeys[] = {
         {Qt::Key_W, GizmoMode::Translate}, {Qt::Key_E, GizmoMode::Rotate}, {Qt::Key_R, GizmoMode::Scale}};
     for (const auto& [key, mode] : gizmoKeys)

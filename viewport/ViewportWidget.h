@@ -1,13 +1,15 @@
 #pragma once
-// The Qt host of the Renderer: a QOpenGLWidget with an orbit camera.
-// Alt+left drag orbits (in Guide mode a left drag on empty space too), middle
-// drag pans, the wheel (or Alt+right drag) zooms, a left click picks, F frames
-// the selection's scene and A frames all. In Rig mode a left drag on empty
-// space box-selects controllers (Shift adds), W/E/R pick the gizmo (translate,
-// rotate, scale) whose handles drag the selected controller, the arrow keys
-// pickwalk and M walks to the mirror twin. Knows nothing about the widgets
-// library or the app; it reports picks, walks and drags as signals carrying
-// core ids and world matrices.
+// The Qt host of the Renderer: a QOpenGLWidget with an orbit camera, as in
+// Maya: Alt+left drag orbits, middle drag (or Alt+middle) pans, the wheel (or
+// Alt+right drag) zooms, a left click picks (Shift adds), a left drag on empty
+// space box-selects (guide joints in Guide mode, controllers in Rig mode), F
+// frames the selection and A frames all; 1 / 3 / 7 turn to the front, side and
+// top orthographic views and 5 (or 0) back to perspective, as Blender's keypad.
+// W/E/R pick the gizmo (translate, rotate, scale) whose handles drag the
+// target the app sets (a guide joint or a controller). In Rig mode the arrow
+// keys pickwalk and M walks to the mirror twin. Knows nothing about the
+// widgets library or the app; it reports picks, walks and drags as signals
+// carrying core ids and world matrices.
 #include "Camera.h"
 #include "Manipulator.h"
 #include "Picking.h"
@@ -40,8 +42,12 @@ public:
 
     void setRigMode(bool on);
     bool isRigMode() const { return m_rigMode; }
-    // The controller the gizmo drags and its world matrix; kNoNode hides it.
-    void setGizmoTarget(model::RigNodeIndex node, const glm::dmat4& world);
+    // What the gizmo drags (a guide joint id in Guide mode, a controller's
+    // node index in Rig mode) and its world matrix; kNoNode hides it.
+    void setGizmoTarget(quint32 target, const glm::dmat4& world);
+    void setView(CameraView view);
+    // Frames the selected guide joints or controllers (everything when none).
+    void frameSelection();
     void setGizmoMode(GizmoMode mode);
     GizmoMode gizmoMode() const { return m_gizmo.mode; }
     void setGizmoWorldSpace(bool world);
@@ -49,15 +55,17 @@ public:
     std::optional<Gizmo> gizmo() const;
 
 signals:
-    void guideJointPicked(quint32 joint, quint32 owner);
+    void guideJointPicked(quint32 joint, quint32 owner, bool add);
+    void guideJointsBoxSelected(const QList<quint32>& joints, bool add);
     void controllerPicked(quint32 node, bool add);
     void controllersBoxSelected(const QList<quint32>& nodes, bool add);
     void nothingPicked();
     void pickwalkRequested(int direction); // an rs::eval::WalkDirection
     void gizmoModeChanged(int mode);       // a GizmoMode
-    void gizmoDragStarted(quint32 node);
-    void gizmoDragged(quint32 node, const glm::dmat4& world);
-    void gizmoDragFinished(quint32 node);
+    void gizmoDragStarted(quint32 target);
+    void gizmoDragged(quint32 target, const glm::dmat4& world);
+    void gizmoDragFinished(quint32 target);
+    void viewChanged(int view); // a CameraView
 
 protected:
     void initializeGL() override;
@@ -70,6 +78,7 @@ protected:
 
 private:
     void cleanup();
+    bool handleViewKey(QKeyEvent* event);
 
     std::unique_ptr<Renderer> m_renderer;
     Scene m_scene;
@@ -81,7 +90,7 @@ private:
     QString m_renderError;
     bool m_rigMode = false;
     Gizmo m_gizmo;
-    model::RigNodeIndex m_gizmoNode = model::kNoNode;
+    quint32 m_gizmoTarget = model::kNoNode;
     std::optional<GizmoDrag> m_gizmoDrag;
     int m_activeHandle = -1;
     QRubberBand* m_rubberBand = nullptr;

@@ -11,6 +11,7 @@
 #include <QMenu>
 #include <QStandardItemModel>
 
+#include <algorithm>
 #include <map>
 
 namespace rs::widgets {
@@ -93,6 +94,16 @@ model::InstanceId OutlinerView::selectedInstance() const
 {
     const QModelIndex current = currentIndex();
     return current.isValid() ? current.data(kInstanceRole).toUInt() : model::kNoId;
+}
+
+std::vector<model::InstanceId> OutlinerView::selectedInstances() const
+{
+    std::vector<model::InstanceId> out;
+    for (const QModelIndex& index : selectionModel()->selectedRows())
+        if (const auto id = index.data(kInstanceRole).toUInt(); id != model::kNoId &&
+                                                                std::find(out.begin(), out.end(), id) == out.end())
+            out.push_back(id);
+    return out;
 }
 
 void OutlinerView::addTemplateEntries(QMenu* menu, model::JointId hookJoint)

@@ -23,6 +23,8 @@ public:
     void refresh(const model::GuideDocument& document, const templates::TemplateRegistry& templates);
     void selectInstance(model::InstanceId id);
     model::InstanceId selectedInstance() const;
+    // Every selected instance (Ctrl/Shift+click select several), in tree order.
+    std::vector<model::InstanceId> selectedInstances() const;
     // The context menu for an instance (kNoId: the empty area, top-level adds).
     // Owned by the caller. Public so tests drive the same menu users see.
     QMenu* createContextMenu(model::InstanceId instance, QWidget* parent);

@@ -24,11 +24,12 @@ void main() {
 const char* kFragmentShader = R"(#version 330 core
 in vec3 vertexColor;
 uniform bool roundPoints;
+uniform float alpha;
 out vec4 fragmentColor;
 void main() {
     if (roundPoints && length(gl_PointCoord - vec2(0.5)) > 0.5)
         discard;
-    fragmentColor = vec4(vertexColor, 1.0);
+    fragmentColor = vec4(vertexColor, alpha);
 }
 )";
 
@@ -61,12 +62,13 @@ GLuint compile(GLenum type, const char* source, std::string& error)
 const glm::dvec3 kGuideColor(0.95, 0.55, 0.2);
 const glm::dvec3 kSelectedColor(1.0, 1.0, 1.0);
 const glm::dvec3 kSkinColor(0.3, 0.9, 0.9);
+const glm::dvec3 kReferenceColor(0.55, 0.6, 0.7);
 
 } // namespace
 
 struct Renderer::GlState {
     GLuint program = 0, vao = 0, vbo = 0;
-    GLint viewProjection = -1, pointSize = -1, roundPoints = -1;
+    GLint viewProjection = -1, pointSize = -1, roundPoints = -1, alpha = -1;
 };
 
 Renderer::Renderer() = default;
@@ -102,6 +104,7 @@ bool Renderer::initialize(std::string& error)
     gl->viewProjection = glGetUniformLocation(gl->program, "viewProjection");
     gl->pointSize = glGetUniformLocation(gl->program, "pointSize");
     gl->roundPoints = glGetUniformLocation(gl->program, "roundPoints");
+    gl->alpha = glGetUniformLocation(gl->program, "alpha");
     glGenVertexArrays(1, &gl->vao);
     glGenBuffers(1, &gl->vbo);
     glBindVertexArray(gl->vao);
@@ -153,6 +156,18 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
             }
             push(guidePoints, j.position, c);
         }
+    std::vector<Vertex> mirrorPoints;
+    if (scene.showGuides)
+        for (const auto& j : scene.mirrorJoints) {
+            if (j.hasParent) {
+                push(lines, j.parentPosition, kGuideColor * 0.4);
+                push(lines, j.position, kGuideColor * 0.4);
+            }
+            push(mirrorPoints, j.position, kGuideColor * 0.5);
+        }
+    std::vector<Vertex> reference;
+    for (const glm::vec3& p : scene.reference)
+        push(reference, glm::dvec3(p), kReferenceColor);
     for (const auto& j : scene.skinJoints) {
         if (j.hasParent) {
             push(lines, j.parentPosition, kSkinColor * 0.6);
@@ -182,12 +197,24 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
         glUniform1i(m_gl->roundPoints, mode == GL_POINTS);
         glDrawArrays(mode, 0, GLsizei(v.size()));
     };
+    glUniform1f(m_gl->alpha, 1.0f);
     glEnable(GL_DEPTH_TEST);
     draw(grid, GL_LINES, 1.0f);
+    if (!reference.empty()) { // see-through: guides stay visible inside the model
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        glUniform1f(m_gl->alpha, 0.12f);
+        draw(reference, GL_TRIANGLES, 1.0f);
+        glUniform1f(m_gl->alpha, 1.0f);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
     glDisable(GL_DEPTH_TEST); // rig elements stay visible through each other, as in a DCC's X-ray mode
     draw(lines, GL_LINES, 1.0f);
     draw(curves, GL_LINES, 1.0f);
     draw(skinPoints, GL_POINTS, 6.0f);
+    draw(mirrorPoints, GL_POINTS, 7.0f);
     draw(guidePoints, GL_POINTS, 10.0f);
     std::vector<Vertex> overlay;
     for (const auto& c : scene.overlay)

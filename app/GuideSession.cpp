@@ -1,0 +1,115 @@
+// EditorSession's guide authoring: guide-joint selection, gizmo drags on guide
+// joints, duplicating and re-hanging instances, the reference model. A topic
+// file of the session, like PoseSession.cpp.
+#include "EditorSession.h"
+
+#include "io/ReferenceModel.h"
+
+#include <algorithm>
+
+namespace rs::app {
+
+void EditorSession::selectGuideJoints(const std::vector<model::JointId>& joints, bool add)
+{
+    Selection s = add ? m_selection : Selection{};
+    s.node = model::kNoNode;
+    s.nodes.clear();
+    if (add && s.joints.empty() && s.joint != model::kNoId)
+        s.joints.push_back(s.joint);
+    for (model::JointId joint : joints) {
+        if (!m_document.joint(joint))
+            continue;
+        const auto it = std::find(s.joints.begin(), s.joints.end(), joint);
+        if (add && joints.size() == 1 && it != s.joints.end())
+            s.joints.erase(it); // Shift+click toggles
+        else if (it == s.joints.end())
+            s.joints.push_back(joint);
+    }
+    s.joint = s.joints.empty() ? model::kNoId : s.joints.back();
+    s.instance = s.joint != model::kNoId ? m_document.ownerOf(s.joint)->id : (add ? s.instance : model::kNoId);
+    select(s);
+}
+
+model::JointId EditorSession::gizmoJoint() const
+{
+    if (m_selection.joint != model::kNoId && m_document.joint(m_selection.joint))
+        return m_selection.joint;
+    const model::TemplateInstance* instance = m_document.instance(m_selection.instance);
+    return instance && !instance->joints.empty() ? instance->joints.front().id : model::kNoId;
+}
+
+void EditorSession::beginGuideDrag(model::JointId lead)
+{
+    if (!m_document.joint(lead))
+        return;
+    std::vector<model::JointId> joints = m_selection.joints;
+    if (joints.empty())
+        joints.push_back(lead);
+    m_guideDrag.emplace(m_document, lead, joints, m_guideDragOptions);
+    m_guideDragLast.clear();
+}
+
+void EditorSession::previewJoints(const std::vector<edit::JointTransform>& transforms)
+{
+    for (const edit::JointTransform& t : transforms)
+        if (model::TemplateInstance* owner = m_document.instance(m_document.ownerOf(t.joint)->id))
+            owner->joint(t.joint)->local = t.local;
+    emit guidePreviewed();
+}
+
+void EditorSession::dragGuideTo(const Mat4& leadWorld)
+{
+    if (!m_guideDrag)
+        return;
+    // The preview writes the document directly; endGuideDrag puts the start
+    // back and records the whole drag as one command.
+    m_guideDragLast = m_guideDrag->transformsFor(leadWorld);
+    previewJoints(m_guideDragLast);
+}
+
+QString EditorSession::endGuideDrag(const QString& what)
+{
+    if (!m_guideDrag)
+        return {};
+    previewJoints(m_guideDrag->start());
+    const auto transforms = std::move(m_guideDragLast);
+    m_guideDrag.reset();
+    m_guideDragLast.clear();
+    if (transforms.empty())
+        return {};
+    const auto error = edit::setJointTransforms(m_history, transforms, what.toStdString());
+    return error && *error != "the joints did not move" ? QString::fromStdString(*error) : QString();
+}
+
+QString EditorSession::duplicateInstances(const std::vector<model::InstanceId>& ids)
+{
+    std::vector<model::InstanceId> copies;
+    if (auto error = edit::duplicateInstances(m_history, ids, &copies))
+        return QString::fromStdString(*error);
+    select(Selection::ofInstance(copies.back()));
+    return {};
+}
+
+QString EditorSession::reparentInstance(model::InstanceId id, model::JointId hookJoint)
+{
+    auto error = edit::reparentInstance(m_history, id, hookJoint);
+    return error ? QString::fromStdString(*error) : QString();
+}
+
+bool EditorSession::loadReference(const QString& path, Diagnostics& diagnostics)
+{
+    if (path.isEmpty()) {
+        m_reference.clear();
+        emit referenceChanged();
+        return true;
+    }
+    auto model = io::loadReferenceModel(path.toStdString());
+    diagnostics = model.diagnostics();
+    if (!model)
+        return false;
+    m_reference = model.take().triangles;
+    emit referenceChanged();
+    return true;
+}
+
+} // namespace rs::app

@@ -1,0 +1,94 @@
+// MainWindow's View and Guide menus: camera views and framing (the viewport
+// handles the same keys when it has focus), symmetric editing, grid snapping,
+// duplicating and the reference model.
+#include "MainWindow.h"
+
+#include "ActionKit.h"
+#include "LogPanel.h"
+#include "OutlinerView.h"
+#include "ViewportWidget.h"
+
+#include <QActionGroup>
+#include <QFileDialog>
+#include <QMenuBar>
+#include <QToolBar>
+
+namespace rs::app {
+
+void MainWindow::createViewActions()
+{
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    auto* views = new QActionGroup(this);
+    const std::tuple<const char*, QString, viewport::CameraView> cameraViews[] = {
+        {"viewPerspective", tr("&Perspective\t5"), viewport::CameraView::Perspective},
+        {"viewFront", tr("&Front\t1"), viewport::CameraView::Front},
+        {"viewSide", tr("&Side\t3"), viewport::CameraView::Side},
+        {"viewTop", tr("&Top\t7"), viewport::CameraView::Top}};
+    for (const auto& [name, text, cameraView] : cameraViews) {
+        QAction* a = makeAction(this, name, text, {});
+        a->setCheckable(true);
+        a->setChecked(cameraView == viewport::CameraView::Perspective);
+        views->addAction(a);
+        view->addAction(a);
+        const auto v = cameraView;
+        connect(a, &QAction::triggered, this, [this, v] { m_viewport->setView(v); });
+    }
+    connect(m_viewport, &viewport::ViewportWidget::viewChanged, this, [views](int v) {
+        views->actions().at(v)->setChecked(true);
+    });
+    view->addSeparator();
+    QAction* frameSelected = makeAction(this, "frameSelected", tr("Frame &Selected\tF"), {});
+    QAction* frameAll = makeAction(this, "frameAll", tr("Frame &All\tA"), {});
+    connect(frameSelected, &QAction::triggered, this, [this] { m_viewport->frameSelection(); });
+    connect(frameAll, &QAction::triggered, this, [this] { m_viewport->frameAll(); });
+    view->addActions({frameSelected, frameAll});
+
+    QMenu* guide = menuBar()->addMenu(tr("&Guide"));
+    QAction* symmetry = makeAction(this, "symmetry", tr("S&ymmetric Editing"), QKeySequence(tr("Ctrl+Shift+Y")), "mirror");
+    symmetry->setToolTip(tr("Moving a guide of a side instance (arm_L) moves its twin (arm_R) mirrored; "
+                            "mirrored branches (L/R) follow always"));
+    QAction* snap = makeAction(this, "snapGrid", tr("Snap to &Grid (5 cm)"), QKeySequence(tr("Ctrl+Shift+G")));
+    snap->setToolTip(tr("Translating a guide joint snaps its world position to a 5 cm grid"));
+    for (QAction* a : {symmetry, snap}) {
+        a->setCheckable(true);
+        connect(a, &QAction::toggled, this, [this, symmetry, snap] {
+            m_session.setGuideDragOptions({symmetry->isChecked(), snap->isChecked() ? 0.05 : 0.0});
+        });
+    }
+    QAction* duplicate = makeAction(this, "duplicate", tr("&Duplicate"), QKeySequence(tr("Ctrl+D")));
+    connect(duplicate, &QAction::triggered, this, [this] {
+        std::vector<model::InstanceId> ids = m_outliner->selectedInstances();
+        if (ids.empty() && m_session.selection().instance != model::kNoId)
+            ids.push_back(m_session.selection().instance);
+        logError(ids.empty() ? tr("select the templates to duplicate") : m_session.duplicateInstances(ids));
+    });
+    QAction* reference = makeAction(this, "importReference", tr("Import &Reference Model..."), {});
+    reference->setToolTip(tr("Show a model (FBX, OBJ, glTF...) see-through to place guides on"));
+    connect(reference, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Reference model"), {},
+                                                          tr("Models (*.fbx *.obj *.gltf *.glb *.dae *.ply *.stl);;All files (*)"));
+        if (!path.isEmpty())
+            loadReference(path);
+    });
+    QAction* clearReference = makeAction(this, "clearReference", tr("&Clear Reference Model"), {});
+    connect(clearReference, &QAction::triggered, this, [this] { loadReference({}); });
+    guide->addActions({symmetry, snap});
+    guide->addSeparator();
+    guide->addAction(duplicate);
+    guide->addSeparator();
+    guide->addActions({reference, clearReference});
+    findChild<QToolBar*>("mainToolBar")->addActions({symmetry});
+}
+
+bool MainWindow::loadReference(const QString& path)
+{
+    Diagnostics diagnostics;
+    const bool ok = m_session.loadReference(path, diagnostics);
+    if (!path.isEmpty())
+        report(ok ? tr("Reference model %1: %2 triangles").arg(path).arg(m_session.referenceTriangles().size() / 3)
+                  : tr("Could not load the reference model %1").arg(path),
+               diagnostics);
+    return ok;
+}
+
+} // namespace rs::app

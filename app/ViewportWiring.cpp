@@ -1,0 +1,103 @@
+// MainWindow's viewport wiring: picks and box selection, gizmo drags (guide
+// joints in Guide mode, controllers in Rig mode), pickwalk and the channel
+// box, and what the viewport draws.
+#include "MainWindow.h"
+
+#include "ChannelBox.h"
+#include "ViewportWidget.h"
+
+#include <QLabel>
+
+namespace rs::app {
+
+namespace {
+const char* kDragVerbs[] = {"Move", "Rotate", "Scale"};
+}
+
+void MainWindow::connectViewport()
+{
+    using viewport::ViewportWidget;
+    connect(m_viewport, &ViewportWidget::guideJointPicked, this,
+            [this](quint32 joint, quint32, bool add) { m_session.selectGuideJoints({joint}, add); });
+    connect(m_viewport, &ViewportWidget::guideJointsBoxSelected, this, [this](const QList<quint32>& joints, bool add) {
+        m_session.selectGuideJoints(std::vector<model::JointId>(joints.begin(), joints.end()), add);
+    });
+    connect(m_viewport, &ViewportWidget::controllerPicked, this,
+            [this](quint32 node, bool add) { m_session.selectControllers({node}, add); });
+    connect(m_viewport, &ViewportWidget::controllersBoxSelected, this, [this](const QList<quint32>& nodes, bool add) {
+        m_session.selectControllers(std::vector<model::RigNodeIndex>(nodes.begin(), nodes.end()), add);
+    });
+    connect(m_viewport, &ViewportWidget::nothingPicked, this, [this] { m_session.select({}); });
+
+    auto guideMode = [this] { return m_session.mode() == EditorMode::Guide; };
+    connect(m_viewport, &ViewportWidget::gizmoDragStarted, this, [this, guideMode](quint32 target) {
+        if (guideMode()) m_session.beginGuideDrag(target);
+        else m_session.beginDrag(target);
+    });
+    connect(m_viewport, &ViewportWidget::gizmoDragged, this, [this, guideMode](quint32 target, const glm::dmat4& world) {
+        if (guideMode()) m_session.dragGuideTo(world);
+        else m_session.dragTo(target, world);
+    });
+    connect(m_viewport, &ViewportWidget::gizmoDragFinished, this, [this, guideMode](quint32 target) {
+        const QString verb = kDragVerbs[int(m_viewport->gizmoMode())];
+        if (guideMode()) {
+            const model::TemplateInstance* owner = m_session.document().ownerOf(target);
+            const QString name = owner ? QString::fromStdString(owner->name) : QString();
+            const std::size_t count = std::max<std::size_t>(1, m_session.selection().joints.size());
+            logError(m_session.endGuideDrag(count > 1 ? tr("%1 %2 guide joints").arg(verb).arg(count)
+                                                      : tr("%1 guide joint of %2").arg(verb, name)));
+            return;
+        }
+        const auto* rig = m_session.rig();
+        const QString name = rig && target < rig->nodes.size() ? QString::fromStdString(rig->nodes[target].name) : QString();
+        m_session.endDrag(target, QString("%1 %2").arg(verb, name));
+    });
+    connect(&m_session, &EditorSession::guidePreviewed, this, &MainWindow::refreshScene);
+    connect(&m_session, &EditorSession::referenceChanged, this, &MainWindow::refreshScene);
+}
+
+void MainWindow::connectRigMode()
+{
+    connect(&m_session, &EditorSession::modeChanged, this, [this] {
+        m_viewport->setRigMode(m_session.mode() == EditorMode::Rig);
+        refreshScene();
+    });
+    connect(&m_session, &EditorSession::poseChanged, this, &MainWindow::refreshScene);
+    connect(m_viewport, &viewport::ViewportWidget::pickwalkRequested, this,
+            [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction)); });
+    connect(m_channelBox, &widgets::ChannelBox::channelEdited, this, [this](int channel, double value, bool match) {
+        logError(m_session.setChannel(channel, value, match));
+    });
+}
+
+void MainWindow::refreshScene()
+{
+    const Selection& s = m_session.selection();
+    const bool rigMode = m_session.mode() == EditorMode::Rig;
+    const eval::EvalState* pose = rigMode ? m_session.evaluation() : nullptr;
+    viewport::Scene scene = viewport::makeScene(m_session.document(), m_session.rig(), {s.instance, s.joint, s.joints, s.node, s.nodes},
+                                                pose, &m_session.templates());
+    scene.reference = m_session.referenceTriangles();
+    m_viewport->setScene(std::move(scene));
+    const auto* rig = m_session.rig();
+    const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();
+    if (rigMode) {
+        m_viewport->setGizmoTarget(hasNode ? s.node : model::kNoNode, hasNode ? pose->worldMatrix(s.node) : glm::dmat4(1.0));
+    } else {
+        const model::JointId joint = m_session.gizmoJoint();
+        m_viewport->setGizmoTarget(joint != model::kNoId ? joint : model::kNoNode,
+                                   joint != model::kNoId ? m_session.document().jointWorldMatrix(joint) : glm::dmat4(1.0));
+    }
+    m_channelBox->showNode(rigMode && m_session.program() ? &m_session.program()->channels() : nullptr,
+                           hasNode ? s.node : model::kNoNode, hasNode ? QString::fromStdString(rig->nodes[s.node].name) : QString(),
+                           &m_session.pose());
+    if (!rig)
+        m_status->setText(tr("Guide: %1 templates").arg(m_session.document().instances().size()));
+    else
+        m_status->setText(tr("Rig%1: %2 controllers, %3 skin joints")
+                              .arg(m_session.isRigStale() ? tr(" (out of date, press Build)") : QString())
+                              .arg(rig->count(model::RigNodeKind::Controller))
+                              .arg(rig->skinJointCount()));
+}
+
+} // namespace rs::app
