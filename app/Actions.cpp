@@ -86,6 +86,10 @@ void MainWindow::createActions()
         redo->setEnabled(h.canRedo());
         undo->setText(h.canUndo() ? tr("&Undo %1").arg(QString::fromStdString(h.undoText())) : tr("&Undo"));
         redo->setText(h.canRedo() ? tr("&Redo %1").arg(QString::fromStdString(h.redoText())) : tr("&Redo"));
+        undo->setIconText(tr("Undo")); // the toolbar keeps a short label; the menu and tooltip name the step
+        redo->setIconText(tr("Redo"));
+        undo->setToolTip(undo->text().remove('&'));
+        redo->setToolTip(redo->text().remove('&'));
     };
     connect(&m_session, &EditorSession::documentChanged, this, updateUndo);
     updateUndo();

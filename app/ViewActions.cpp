@@ -18,7 +18,7 @@ namespace rs::app {
 void MainWindow::createViewActions()
 {
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    auto* views = new QActionGroup(this);
+    auto* views = new QActionGroup(this); // in CameraView order: ViewportWiring checks the current one
     const std::tuple<const char*, QString, viewport::CameraView> cameraViews[] = {
         {"viewPerspective", tr("&Perspective\t5"), viewport::CameraView::Perspective},
         {"viewFront", tr("&Front\t1"), viewport::CameraView::Front},
@@ -33,9 +33,6 @@ void MainWindow::createViewActions()
         const auto v = cameraView;
         connect(a, &QAction::triggered, this, [this, v] { m_viewport->setView(v); });
     }
-    connect(m_viewport, &viewport::ViewportWidget::viewChanged, this, [views](int v) {
-        views->actions().at(v)->setChecked(true);
-    });
     view->addSeparator();
     QAction* frameSelected = makeAction(this, "frameSelected", tr("Frame &Selected\tF"), {});
     QAction* frameAll = makeAction(this, "frameAll", tr("Frame &All\tA"), {});

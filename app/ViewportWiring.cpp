@@ -6,6 +6,7 @@
 #include "ChannelBox.h"
 #include "ViewportWidget.h"
 
+#include <QAction>
 #include <QLabel>
 
 namespace rs::app {
@@ -51,6 +52,10 @@ void MainWindow::connectViewport()
         const auto* rig = m_session.rig();
         const QString name = rig && target < rig->nodes.size() ? QString::fromStdString(rig->nodes[target].name) : QString();
         m_session.endDrag(target, QString("%1 %2").arg(verb, name));
+    });
+    connect(m_viewport, &ViewportWidget::viewChanged, this, [this](int view) {
+        const char* names[] = {"viewPerspective", "viewFront", "viewSide", "viewTop"};
+        if (QAction* a = action(names[view])) a->setChecked(true);
     });
     connect(&m_session, &EditorSession::guidePreviewed, this, &MainWindow::refreshScene);
     connect(&m_session, &EditorSession::referenceChanged, this, &MainWindow::refreshScene);

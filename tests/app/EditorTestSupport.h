@@ -2,6 +2,7 @@
 // Shared by the GUI tests: the editor window opened on the biped sample, and
 // where tests write their outputs (screenshots, saved guides).
 #include "MainWindow.h"
+#include "ViewportWidget.h"
 
 #include <QTest>
 
@@ -31,5 +32,21 @@ struct Editor {
         EXPECT_TRUE(window.openFile(kSample));
     }
 };
+
+// Drags the gizmo's handle `axis` from `from` to `to` handle lengths out along
+// it, as a mouse would; false when no gizmo is shown.
+inline bool dragGizmoHandle(viewport::ViewportWidget* view, int axis, double from = 0.6, double to = 1.6)
+{
+    const auto gizmo = view->gizmo();
+    if (!gizmo)
+        return false;
+    const QPoint handle = view->toWidgetPixels(gizmo->origin() + gizmo->axis(axis) * gizmo->size * from);
+    const QPoint further = view->toWidgetPixels(gizmo->origin() + gizmo->axis(axis) * gizmo->size * to);
+    QTest::mousePress(view, Qt::LeftButton, {}, handle);
+    QTest::mouseMove(view, (handle + further) / 2);
+    QTest::mouseMove(view, further);
+    QTest::mouseRelease(view, Qt::LeftButton, {}, further);
+    return true;
+}
 
 } // namespace rs::test

@@ -80,12 +80,7 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
     const auto gizmo = w.viewportWidget()->gizmo();
     ASSERT_TRUE(gizmo.has_value());
     const Vec3 before = posedPosition(w, "arm.L::ctrls.ik");
-    const QPoint handle = w.viewportWidget()->toWidgetPixels(gizmo->origin() + gizmo->axis(0) * gizmo->size * 0.6);
-    const QPoint further = w.viewportWidget()->toWidgetPixels(gizmo->origin() + gizmo->axis(0) * gizmo->size * 1.6);
-    QTest::mousePress(w.viewportWidget(), Qt::LeftButton, {}, handle);
-    QTest::mouseMove(w.viewportWidget(), (handle + further) / 2);
-    QTest::mouseMove(w.viewportWidget(), further);
-    QTest::mouseRelease(w.viewportWidget(), Qt::LeftButton, {}, further);
+    ASSERT_TRUE(test::dragGizmoHandle(w.viewportWidget(), 0));
     const Vec3 moved = posedPosition(w, "arm.L::ctrls.ik") - before;
     EXPECT_GT(glm::dot(moved, gizmo->axis(0)), gizmo->size * 0.5); // moved along its X handle
     EXPECT_LT(glm::length(moved - gizmo->axis(0) * glm::dot(moved, gizmo->axis(0))), 1e-6);

@@ -1,0 +1,142 @@
+// Guide authoring in the viewport with the real widgets: picking and box
+// selection, the W/E/R gizmo on guide joints, views and framing, the
+// see-through reference model.
+#include "EditorTestSupport.h"
+
+#include "LogPanel.h"
+#include "ViewportWidget.h"
+
+#include <QAction>
+#include <QApplication>
+
+#include <fstream>
+
+using namespace rs;
+using namespace rs::test;
+
+namespace {
+
+Vec3 worldOf(app::MainWindow& w, model::JointId joint)
+{
+    return translationOf(w.session().document().jointWorldMatrix(joint));
+}
+
+} // namespace
+
+TEST(GuideAuthoring, ClickingAGuideJointAndDraggingTheGizmoIsOneUndoStep)
+{
+    Editor editor;
+    app::MainWindow& w = editor.window;
+    viewport::ViewportWidget* view = w.viewportWidget();
+    const model::GuideDocument original = w.session().document();
+    const auto& arm = w.session().document().instanceNamed("arm")->joints;
+    const model::JointId elbow = arm[2].id, hand = arm[3].id;
+    const Vec3 elbowBefore = worldOf(w, elbow), handBefore = worldOf(w, hand);
+
+    QTest::keyClick(view, Qt::Key_1); // front view: the arm's joints spread out on screen
+    EXPECT_TRUE(view->camera().orthographic);
+    EXPECT_TRUE(w.action("viewFront")->isChecked());
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->toWidgetPixels(elbowBefore));
+    ASSERT_EQ(w.session().selection().joint, elbow);
+    EXPECT_EQ(w.session().selection().instance, w.session().document().instanceNamed("arm")->id);
+    QTest::keyClick(view, Qt::Key_W);
+    ASSERT_TRUE(view->gizmo().has_value());
+    EXPECT_LT(glm::length(view->gizmo()->origin() - elbowBefore), 1e-9);
+    view->setGizmoWorldSpace(true);
+    ASSERT_TRUE(dragGizmoHandle(view, 1)); // up along world Y
+
+    const Vec3 moved = worldOf(w, elbow) - elbowBefore;
+    EXPECT_GT(moved.y, 0.05);
+    EXPECT_LT(std::abs(moved.x) + std::abs(moved.z), 1e-6) << "only along the dragged handle";
+    EXPECT_LT(glm::length(worldOf(w, hand) - handBefore - moved), 1e-9) << "the hand follows its parent";
+    EXPECT_EQ(w.session().history().size(), 1u) << "the whole drag is one step";
+    EXPECT_EQ(w.session().history().undoText(), "Move guide joint of arm");
+    EXPECT_TRUE(w.session().isRigStale() || !w.session().rig());
+    w.grab().save(QString::fromStdString(outputPath("guide-gizmo-front.png")));
+
+    w.action("undo")->trigger();
+    EXPECT_TRUE(w.session().document() == original);
+
+    // Snapping: the joint lands on the 5 cm grid.
+    w.action("snapGrid")->trigger();
+    ASSERT_TRUE(dragGizmoHandle(view, 0));
+    const Vec3 snapped = worldOf(w, elbow);
+    EXPECT_NEAR(snapped.x / 0.05, std::round(snapped.x / 0.05), 1e-6);
+    EXPECT_NEAR(snapped.y / 0.05, std::round(snapped.y / 0.05), 1e-6);
+    w.action("undo")->trigger();
+    EXPECT_TRUE(w.session().document() == original);
+}
+
+TEST(GuideAuthoring, BoxSelectingFramesAndMovesSeveralJointsTogether)
+{
+    Editor editor;
+    app::MainWindow& w = editor.window;
+    viewport::ViewportWidget* view = w.viewportWidget();
+    const model::GuideDocument original = w.session().document();
+    QTest::keyClick(view, Qt::Key_1);
+    const auto* leg = w.session().document().instanceNamed("leg");
+    // A box around the knee and the ankle (front view: they line up below the hip).
+    const QPoint knee = view->toWidgetPixels(worldOf(w, leg->joints[2].id));
+    const QPoint ankle = view->toWidgetPixels(worldOf(w, leg->joints[3].id));
+    const QPoint a(std::min(knee.x(), ankle.x()) - 6, knee.y() - 6), b(std::max(knee.x(), ankle.x()) + 6, ankle.y() + 6);
+    QTest::mousePress(view, Qt::LeftButton, {}, a);
+    QTest::mouseMove(view, (a + b) / 2);
+    QTest::mouseMove(view, b);
+    QTest::mouseRelease(view, Qt::LeftButton, {}, b);
+    const auto& selected = w.session().selection().joints;
+    ASSERT_GE(selected.size(), 2u);
+    for (model::JointId j : selected)
+        EXPECT_EQ(w.session().document().ownerOf(j)->id, leg->id);
+
+    QTest::keyClick(view, Qt::Key_F);
+    const Vec3 middle = (worldOf(w, leg->joints[2].id) + worldOf(w, leg->joints[3].id)) * 0.5;
+    EXPECT_LT(glm::length(view->camera().target - middle), 0.2) << "framed on the selection";
+    QTest::keyClick(view, Qt::Key_W);
+    view->setGizmoWorldSpace(true);
+    const Vec3 kneeBefore = worldOf(w, leg->joints[2].id);
+    ASSERT_TRUE(dragGizmoHandle(view, 0));
+    const Vec3 kneeMoved = worldOf(w, leg->joints[2].id) - kneeBefore;
+    EXPECT_GT(glm::length(kneeMoved), 0.01) << "every selected joint moved";
+    EXPECT_EQ(w.session().history().size(), 1u);
+    w.action("undo")->trigger();
+    EXPECT_TRUE(w.session().document() == original);
+
+    // Orbiting (Alt+drag) leaves the orthographic view.
+    const QPoint c(view->width() / 2, view->height() / 2);
+    QTest::mousePress(view, Qt::LeftButton, Qt::AltModifier, c);
+    QTest::mouseMove(view, c + QPoint(30, 0));
+    QTest::mouseMove(view, c + QPoint(60, 0));
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::AltModifier, c + QPoint(60, 0));
+    EXPECT_FALSE(view->camera().orthographic);
+    EXPECT_TRUE(w.action("viewPerspective")->isChecked());
+}
+
+TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
+{
+    Editor editor;
+    app::MainWindow& w = editor.window;
+    // A reference character: the biped's own proxy mesh exported as glTF.
+    w.buildRig();
+    io::ExportRequest request;
+    request.path = outputPath("reference.glb");
+    request.proxyVertices = 6000;
+    ASSERT_TRUE(w.exportRig(request));
+    w.session().setMode(app::EditorMode::Guide);
+    ASSERT_TRUE(w.loadReference(QString::fromStdString(request.path)));
+    EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u);
+    EXPECT_EQ(w.viewportWidget()->scene().reference.size() % 3, 0u);
+    QTest::keyClick(w.viewportWidget(), Qt::Key_1);
+    w.viewportWidget()->frameAll();
+    QApplication::processEvents();
+    w.grab().save(QString::fromStdString(outputPath("reference-model.png")));
+
+    const std::string broken = outputPath("broken.obj");
+    std::ofstream(broken) << "this is not a model\n";
+    const int messages = w.log()->count();
+    EXPECT_FALSE(w.loadReference(QString::fromStdString(broken)));
+    EXPECT_GT(w.log()->count(), messages);
+    EXPECT_TRUE(w.log()->item(w.log()->count() - 1)->text().contains("broken.obj"));
+    EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u) << "the shown model stays";
+    w.action("clearReference")->trigger();
+    EXPECT_TRUE(w.viewportWidget()->scene().reference.empty());
+}
