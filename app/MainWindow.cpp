@@ -132,6 +132,14 @@ void MainWindow::connectDocument()
     connect(m_outliner, &widgets::OutlinerView::branchesRequested, this, [this](quint32 id, const QString& branches) {
         logError(m_session.setOption(id, "branches", Value(branches.toStdString())));
     });
+    connect(m_outliner, &widgets::OutlinerView::duplicateRequested, this, [this](const QList<quint32>& ids) {
+        logError(m_session.duplicateInstances(std::vector<model::InstanceId>(ids.begin(), ids.end())));
+    });
+    connect(m_outliner, &widgets::OutlinerView::reparentRequested, this, [this](quint32 id, quint32 joint) {
+        logError(m_session.reparentInstance(id, joint));
+    });
+    connect(m_outliner, &widgets::OutlinerView::hookSelected, this,
+            [this](quint32 id, quint32 joint) { m_session.select(Selection::ofInstance(id, joint)); });
     connect(m_outliner, &widgets::OutlinerView::resetOptionsRequested, this, [this](quint32 id) {
         logError(m_session.resetOptions(id));
     });

@@ -54,7 +54,7 @@ void MainWindow::createViewActions()
     }
     QAction* duplicate = makeAction(this, "duplicate", tr("&Duplicate"), QKeySequence(tr("Ctrl+D")));
     connect(duplicate, &QAction::triggered, this, [this] {
-        std::vector<model::InstanceId> ids = m_outliner->selectedInstances();
+        std::vector<model::InstanceId> ids = m_outliner->topSelectedInstances();
         if (ids.empty() && m_session.selection().instance != model::kNoId)
             ids.push_back(m_session.selection().instance);
         logError(ids.empty() ? tr("select the templates to duplicate") : m_session.duplicateInstances(ids));

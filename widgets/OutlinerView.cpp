@@ -2,22 +2,26 @@
 
 #include "eval/Pickwalk.h"
 
+#include "base/Paths.h"
 #include "build/RigBuilder.h"
 
 #include <QHeaderView>
 #include <QIcon>
 #include <QInputDialog>
+#include <QDropEvent>
 #include <QKeyEvent>
 #include <QMenu>
 #include <QStandardItemModel>
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace rs::widgets {
 
 namespace {
-constexpr int kInstanceRole = Qt::UserRole + 1;
+constexpr int kInstanceRole = Qt::UserRole + 1; // the instance (a hook item's owner)
+constexpr int kHookRole = Qt::UserRole + 2;     // a hook pseudo-item's joint
 
 QIcon cachedIcon(const std::string& path)
 {
@@ -36,8 +40,18 @@ OutlinerView::OutlinerView(QWidget* parent) : QTreeView(parent), m_model(new QSt
     setHeaderHidden(true);
     setContextMenuPolicy(Qt::CustomContextMenu);
     setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::DoubleClicked);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
+    setDragEnabled(true);
+    setAcceptDrops(true);
+    setDropIndicatorShown(true);
+    setDragDropMode(QAbstractItemView::DragDrop);
+    setDefaultDropAction(Qt::MoveAction);
     connect(selectionModel(), &QItemSelectionModel::currentChanged, this, [this](const QModelIndex& current) {
-        if (!m_refreshing && current.isValid())
+        if (m_refreshing || !current.isValid())
+            return;
+        if (const auto hook = current.data(kHookRole).toUInt())
+            emit hookSelected(current.data(kInstanceRole).toUInt(), hook);
+        else
             emit instanceSelected(current.data(kInstanceRole).toUInt());
     });
     connect(this, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
@@ -64,15 +78,48 @@ void OutlinerView::refresh(const model::GuideDocument& document, const templates
     m_refreshing = true;
     m_model->clear();
     std::map<model::InstanceId, QStandardItem*> items;
+    std::map<model::JointId, QStandardItem*> hooks;
+    std::set<model::JointId> used; // joints something hangs under
+    for (const auto& instance : document.instances())
+        used.insert(instance.parentJoint);
+    const QIcon hookIcon = cachedIcon(iconsDirectory() + "/hook.svg");
     for (const auto& instance : document.instances()) {
         auto* item = new QStandardItem(QString::fromStdString(instance.name));
         item->setData(instance.id, kInstanceRole);
+        item->setDropEnabled(true);
         const templates::TemplateManifest* manifest = templates.find(instance.templateId);
         item->setIcon(cachedIcon(manifest ? templates.iconPath(*manifest) : std::string()));
         item->setToolTip(QString::fromStdString(instance.templateId + (manifest && !manifest->desc.empty() ? "\n" + manifest->desc : "")));
+        auto hook = hooks.find(instance.parentJoint);
         auto parent = items.find(instance.parent);
-        (parent == items.end() ? m_model->invisibleRootItem() : parent->second)->appendRow(item);
+        QStandardItem* under = hook != hooks.end() ? hook->second : parent != items.end() ? parent->second : m_model->invisibleRootItem();
+        under->appendRow(item);
         items[instance.id] = item;
+        if (!manifest)
+            continue;
+        const std::vector<build::HookPoint> points = build::hookPoints(*manifest, instance);
+        for (const build::HookPoint& point : points) {
+            const bool named = std::any_of(points.begin(), points.end(), [&](const build::HookPoint& other) {
+                return other.joint == point.joint && other.label != "default";
+            });
+            const bool indexed = point.label.find('[') != std::string::npos; // one of a chain's joints
+            if (manifest->hooks.empty() || hooks.count(point.joint) || (point.label == "default" && named) ||
+                (indexed && !used.count(point.joint)))
+                continue; // named hooks once each, chain joints when used (the menu offers every hook)
+            auto* hookItem = new QStandardItem(hookIcon, QString::fromStdString(point.label));
+            hookItem->setData(instance.id, kInstanceRole);
+            hookItem->setData(point.joint, kHookRole);
+            hookItem->setEditable(false);
+            hookItem->setDragEnabled(false);
+            hookItem->setForeground(QColor(150, 160, 175));
+            QFont italic = hookItem->font();
+            italic.setItalic(true);
+            hookItem->setFont(italic);
+            hookItem->setToolTip(tr("Hook %1 of %2: drop templates here").arg(QString::fromStdString(point.label),
+                                                                          QString::fromStdString(instance.name)));
+            item->appendRow(hookItem);
+            hooks[point.joint] = hookItem;
+        }
     }
     expandAll();
     m_refreshing = false;
@@ -81,7 +128,11 @@ void OutlinerView::refresh(const model::GuideDocument& document, const templates
 
 void OutlinerView::selectInstance(model::InstanceId id)
 {
-    const QModelIndexList found = m_model->match(m_model->index(0, 0), kInstanceRole, id, 1, Qt::MatchRecursive);
+    if (id != model::kNoId && selectedInstance() == id)
+        return; // keeps a multi-selection made here
+
+    QModelIndexList found = m_model->match(m_model->index(0, 0), kInstanceRole, id, -1, Qt::MatchRecursive);
+    found.removeIf([](const QModelIndex& index) { return index.data(kHookRole).toUInt() != 0; });
     m_refreshing = true;
     if (found.isEmpty())
         selectionModel()->clearSelection();
@@ -100,10 +151,48 @@ std::vector<model::InstanceId> OutlinerView::selectedInstances() const
 {
     std::vector<model::InstanceId> out;
     for (const QModelIndex& index : selectionModel()->selectedRows())
-        if (const auto id = index.data(kInstanceRole).toUInt(); id != model::kNoId &&
-                                                                std::find(out.begin(), out.end(), id) == out.end())
+        if (const auto id = index.data(kInstanceRole).toUInt();
+            id != model::kNoId && !index.data(kHookRole).toUInt() && std::find(out.begin(), out.end(), id) == out.end())
             out.push_back(id);
     return out;
+}
+
+std::vector<model::InstanceId> OutlinerView::topSelectedInstances() const
+{
+    std::vector<model::InstanceId> ids = selectedInstances();
+    std::erase_if(ids, [&](model::InstanceId id) {
+        for (auto* i = m_document->instance(id); i && i->parent != model::kNoId; i = m_document->instance(i->parent))
+            if (std::find(ids.begin(), ids.end(), i->parent) != ids.end())
+                return true;
+        return false;
+    });
+    return ids;
+}
+
+model::JointId OutlinerView::dropTarget(const QPoint& pos) const
+{
+    const QModelIndex index = indexAt(pos);
+    if (!index.isValid())
+        return model::kNoId;
+    if (const auto hook = index.data(kHookRole).toUInt())
+        return hook;
+    const model::TemplateInstance* instance = m_document ? m_document->instance(index.data(kInstanceRole).toUInt()) : nullptr;
+    if (!instance)
+        return model::kNoId;
+    const templates::TemplateManifest* manifest = m_templates->find(instance->templateId);
+    return manifest ? build::hookPoints(*manifest, *instance).front().joint : instance->joints.front().id;
+}
+
+void OutlinerView::dropEvent(QDropEvent* event)
+{
+    // The tree is a view of the document: the drop becomes re-hang requests and
+    // the refresh after the edit moves the items, never Qt's own row move.
+    const model::JointId target = dropTarget(event->position().toPoint());
+    const std::vector<model::InstanceId> dragged = topSelectedInstances();
+    event->setDropAction(Qt::IgnoreAction);
+    event->accept();
+    for (model::InstanceId id : dragged)
+        emit reparentRequested(id, target);
 }
 
 void OutlinerView::addTemplateEntries(QMenu* menu, model::JointId hookJoint)
@@ -152,6 +241,14 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
         if (ok && text != name)
             emit renameRequested(id, text);
     });
+    QAction* duplicate = menu->addAction(tr("Duplicate"));
+    duplicate->setObjectName("duplicate");
+    connect(duplicate, &QAction::triggered, this, [this, id] {
+        std::vector<model::InstanceId> ids = topSelectedInstances();
+        if (std::find(ids.begin(), ids.end(), id) == ids.end())
+            ids = {id};
+        emit duplicateRequested(QList<quint32>(ids.begin(), ids.end()));
+    });
     QAction* mirror = menu->addAction(tr("Mirror (L/R branches)"));
     mirror->setObjectName("mirror");
     mirror->setCheckable(true);
@@ -171,14 +268,21 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
     connect(reset, &QAction::triggered, this, [this, id] { emit resetOptionsRequested(id); });
     QAction* remove = menu->addAction(tr("Delete"));
     remove->setObjectName("delete");
-    connect(remove, &QAction::triggered, this, [this, id] { emit removeRequested(id); });
+    connect(remove, &QAction::triggered, this, [this, id] {
+        std::vector<model::InstanceId> ids = topSelectedInstances();
+        if (std::find(ids.begin(), ids.end(), id) == ids.end())
+            ids = {id};
+        for (model::InstanceId each : ids)
+            emit removeRequested(each);
+    });
     return menu;
 }
 
 void OutlinerView::keyPressEvent(QKeyEvent* event)
 {
-    if (event->key() == Qt::Key_Delete && selectedInstance() != model::kNoId) {
-        emit removeRequested(selectedInstance());
+    if (event->key() == Qt::Key_Delete && !selectedInstances().empty()) {
+        for (model::InstanceId id : topSelectedInstances())
+            emit removeRequested(id);
         return;
     }
     // Pickwalk, as in the viewport: Up parent, Down first child, Left/Right siblings.

@@ -1,9 +1,12 @@
 #pragma once
-// The outliner: template instances as a tree (children under the instance they
-// hang from), with the manifest's ui.icon. Its context menu offers "Add template"
-// with one entry per hook of the instance's ui.hooks, then the templates by
-// category; it only emits requests, the app turns them into edits. The arrow
-// keys pickwalk over instances (parent, first child, siblings).
+// The outliner: template instances as a tree with the manifest's ui.icon, each
+// with its hooks (ui.hooks) as pseudo-items and child instances under the hook
+// (or instance) they hang from. Its context menu offers "Add template" with one
+// entry per hook, then the templates by category, Rename, Duplicate, Mirror,
+// Reset options and Delete; dragging instances onto a hook, an instance or the
+// empty area re-hangs them there. Ctrl/Shift+click selects several. It only
+// emits requests; the app turns them into edits. The arrow keys pickwalk over
+// instances (parent, first child, siblings).
 #include "model/GuideDocument.h"
 #include "templates/TemplateRegistry.h"
 
@@ -25,6 +28,9 @@ public:
     model::InstanceId selectedInstance() const;
     // Every selected instance (Ctrl/Shift+click select several), in tree order.
     std::vector<model::InstanceId> selectedInstances() const;
+    // The selected instances not below another selected one (what a delete,
+    // duplicate or drag acts on: the others come along).
+    std::vector<model::InstanceId> topSelectedInstances() const;
     // The context menu for an instance (kNoId: the empty area, top-level adds).
     // Owned by the caller. Public so tests drive the same menu users see.
     QMenu* createContextMenu(model::InstanceId instance, QWidget* parent);
@@ -33,11 +39,24 @@ signals:
     void instanceSelected(quint32 instance);
     void addTemplateRequested(const QString& templateId, quint32 hookJoint);
     void removeRequested(quint32 instance);
+    void duplicateRequested(const QList<quint32>& instances);
+    // Drag and drop: hang `instance` under `hookJoint` (0: top level).
+    void reparentRequested(quint32 instance, quint32 hookJoint);
+    // A hook pseudo-item was clicked: its instance and joint.
+    void hookSelected(quint32 instance, quint32 joint);
     void renameRequested(quint32 instance, const QString& newName);
     // Mirror: the instance's `branches` option ("[L, R]" to mirror, "[]" for one side).
     void branchesRequested(quint32 instance, const QString& branches);
     void resetOptionsRequested(quint32 instance);
     void walkRequested(int direction); // arrow keys: an rs::eval::WalkDirection over instances
+
+public:
+    // Where a drop at `pos` (viewport coordinates) hangs instances: a hook's
+    // joint, an instance's first hook, or 0 for the top level.
+    model::JointId dropTarget(const QPoint& pos) const;
+
+protected:
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void addTemplateEntries(QMenu* menu, model::JointId hookJoint);
