@@ -1,6 +1,8 @@
 // rigsmith: the editor.
 //   rigsmith [GUIDE]                     open a guide (default: none)
 //   rigsmith --screenshot OUT.png [GUIDE]  load, build, render the window, save it, exit
+//   rigsmith --startup-time [GUIDE]      print how long it took until the window with
+//                                        the guide loaded showed its first frame, exit
 #include "MainWindow.h"
 
 #include "ViewportWidget.h"
@@ -10,7 +12,13 @@
 #include <QStyleFactory>
 #include <QTimer>
 
+#include <QElapsedTimer>
+#include <QOpenGLWidget>
+
 #include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
 
 namespace {
 
@@ -34,10 +42,44 @@ void applyDarkTheme(QApplication& app)
     app.setPalette(p);
 }
 
+// Milliseconds since the process started (Linux: from /proc), so the dynamic
+// loading of Qt before main() counts too; -1 when unknown.
+double msSinceProcessStart()
+{
+    std::ifstream statFile("/proc/self/stat"), uptimeFile("/proc/uptime");
+    std::string stat((std::istreambuf_iterator<char>(statFile)), std::istreambuf_iterator<char>());
+    double uptime = 0.0;
+    const auto close = stat.rfind(')');
+    if (close == std::string::npos || !(uptimeFile >> uptime))
+        return -1.0;
+    std::istringstream fields(stat.substr(close + 2));
+    std::string field;
+    for (int i = 3; i < 22 && fields >> field; ++i) {} // field 22 is starttime, in clock ticks after boot
+    double startTicks = 0.0;
+    if (!(fields >> startTicks))
+        return -1.0;
+    return (uptime - startTicks / double(sysconf(_SC_CLK_TCK))) * 1000.0;
+}
+
+// --startup-time: reports when the viewport has drawn its first frame.
+int reportStartup(QApplication& app, rs::app::MainWindow& window, const QElapsedTimer& sinceMain)
+{
+    QObject::connect(window.viewportWidget(), &QOpenGLWidget::frameSwapped, &window, [&] {
+        std::printf("{\"ms_since_main\": %.1f, \"ms_since_process_start\": %.0f, \"templates\": %zu}\n",
+                    sinceMain.nsecsElapsed() / 1e6, msSinceProcessStart(), window.session().document().instances().size());
+        std::fflush(stdout);
+        window.setProperty("skipUnsavedPrompt", true);
+        app.quit();
+    }, Qt::SingleShotConnection);
+    return app.exec();
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+    QElapsedTimer sinceMain;
+    sinceMain.start();
     rs::viewport::requestOpenGl33Core();
     QApplication app(argc, argv);
     QApplication::setApplicationName("Rigsmith");
@@ -54,12 +96,15 @@ int main(int argc, char** argv)
         args.remove(at, 2);
     }
 
+    const bool startupTime = args.removeAll("--startup-time") > 0;
     rs::app::MainWindow window;
-    if (!screenshot.isEmpty())
+    if (!screenshot.isEmpty() || startupTime)
         window.setRecoveryPrompt([](const QString&, const QString&) { return false; }); // never asks
     if (!args.isEmpty() && !window.openFile(args.front()) && !screenshot.isEmpty())
         return 1;
     window.show();
+    if (startupTime)
+        return reportStartup(app, window, sinceMain);
     if (screenshot.isEmpty()) {
         if (args.isEmpty())
             window.offerUntitledRecovery();
