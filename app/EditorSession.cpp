@@ -193,6 +193,16 @@ QString EditorSession::resetOptions(model::InstanceId id)
     return error ? QString::fromStdString(*error) : QString();
 }
 
+QString EditorSession::setNameOverride(model::InstanceId id, const std::string& token, const QString& name)
+{
+    const model::TemplateInstance* instance = m_document.instance(id);
+    const templates::TemplateManifest* manifest = instance ? m_templates->find(instance->templateId) : nullptr;
+    if (!manifest)
+        return tr("no template for this instance");
+    auto error = edit::setNameOverride(m_history, id, token, name.toStdString(), manifest->defaultName(token));
+    return error ? QString::fromStdString(*error) : QString();
+}
+
 void EditorSession::select(const Selection& selection)
 {
     m_selection = selection;

@@ -97,6 +97,8 @@ public:
     // Every `opts` value back to the template's default (guide parameters, which
     // shape the joints, stay), one undo step.
     QString resetOptions(model::InstanceId id);
+    // A name override of one of the template's name tokens (empty: the default).
+    QString setNameOverride(model::InstanceId id, const std::string& token, const QString& name);
     void select(const Selection& selection);
     model::InstanceId instanceNamed(const QString& name) const;
 

@@ -191,6 +191,10 @@ void MainWindow::connectOptions()
                     m_session.select(m_session.selection()); // show the stored value again
                 }
             });
+    connect(m_options, &widgets::OptionsEditor::nameEdited, this,
+            [this](model::InstanceId id, const std::string& token, const QString& name) {
+                logError(m_session.setNameOverride(id, token, name));
+            });
 }
 
 void MainWindow::logError(const QString& error)

@@ -5,6 +5,8 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QLineEdit>
+#include <QRegularExpressionValidator>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -97,8 +99,36 @@ void OptionsEditor::setInstance(const model::TemplateInstance* instance, const t
     };
     group(tr("Guides"), manifest->guides);
     group(tr("Options"), manifest->opts);
+    addNames(layout, *instance, *manifest);
     layout->addStretch(1);
     m_scroll->setWidget(m_body); // shown whole, once filled
+}
+
+void OptionsEditor::addNames(QVBoxLayout* layout, const model::TemplateInstance& instance,
+                             const templates::TemplateManifest& manifest)
+{
+    if (manifest.names.empty())
+        return;
+    auto* box = new QGroupBox(tr("Names"), m_body);
+    box->setToolTip(tr("The name each part of the rig takes (c_<instance>_<name>_L); empty keeps the template's"));
+    auto* form = new QFormLayout(box);
+    const model::InstanceId id = m_instance;
+    for (const auto& [token, fallback] : manifest.names) {
+        const auto stored = instance.names.find(token);
+        auto* edit = new QLineEdit(stored == instance.names.end() ? QString() : text(stored->second), box);
+        edit->setObjectName(text("name:" + token));
+        edit->setPlaceholderText(text(fallback));
+        edit->setValidator(new QRegularExpressionValidator(QRegularExpression("[A-Za-z0-9_]*"), edit));
+        connect(edit, &QLineEdit::editingFinished, this, [this, id, token = token, edit] {
+            emit nameEdited(id, token, edit->text());
+        });
+        auto* label = new QLabel(text(token), box);
+        if (stored != instance.names.end())
+            label->setStyleSheet("font-weight: bold");
+        m_editors["name:" + token] = edit;
+        form->addRow(label, edit);
+    }
+    layout->addWidget(box);
 }
 
 void OptionsEditor::addParameter(QFormLayout* form, const templates::Parameter& parameter, const Value& value)

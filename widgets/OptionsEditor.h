@@ -5,8 +5,9 @@
 // (with a slider when both are given) for numbers, a line edit for text and
 // YAML text (validated), three spin boxes for vectors. `help` is the tooltip;
 // values that differ from the default are shown bold with a reset button.
-// Edits are not applied here: optionEdited(instance, name, value) goes to the
-// owner, which makes it one undo step (edit::setOption).
+// A "Names" group lists the manifest's name tokens with the instance's
+// overrides (placeholder: the default name). Edits are not applied here:
+// optionEdited / nameEdited go to the owner, which makes each one undo step.
 #include "model/GuideDocument.h"
 #include "templates/Manifest.h"
 
@@ -15,6 +16,7 @@
 class QFormLayout;
 class QLabel;
 class QScrollArea;
+class QVBoxLayout;
 
 namespace rs::widgets {
 
@@ -32,10 +34,13 @@ public:
 
 signals:
     void optionEdited(rs::model::InstanceId instance, const std::string& name, const rs::Value& value);
+    // An empty name removes the override.
+    void nameEdited(rs::model::InstanceId instance, const std::string& token, const QString& name);
 
 private:
     void addParameter(QFormLayout* form, const templates::Parameter& parameter, const Value& value);
     QWidget* makeEditor(const templates::Parameter& parameter, const Value& value);
+    void addNames(QVBoxLayout* layout, const model::TemplateInstance& instance, const templates::TemplateManifest& manifest);
 
     model::InstanceId m_instance = model::kNoId;
     QLabel* m_title = nullptr;

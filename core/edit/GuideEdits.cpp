@@ -245,6 +245,25 @@ Error setOption(History& history, InstanceId id, const std::string& option, cons
     return std::nullopt;
 }
 
+Error setNameOverride(History& history, InstanceId id, const std::string& token, const std::string& name,
+                      const std::string& defaultName)
+{
+    const TemplateInstance* instance = history.document().instance(id);
+    if (!instance)
+        return "no instance with id " + std::to_string(id);
+    if (!name.empty() && !std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; }))
+        return "'" + name + "' is not a valid name (letters, digits and _)";
+    TemplateInstance changed = *instance;
+    if (name.empty() || name == defaultName)
+        changed.names.erase(token);
+    else
+        changed.names[token] = name;
+    if (changed.names == instance->names)
+        return std::nullopt;
+    history.push(std::make_unique<ReplaceInstance>(*instance, std::move(changed), "Name " + token + " of " + instance->name));
+    return std::nullopt;
+}
+
 Error replaceInstance(History& history, TemplateInstance instance, const std::string& what)
 {
     const GuideDocument& d = history.document();

@@ -31,6 +31,11 @@ Error setJointTransform(History& history, model::JointId joint, const Transform&
 Error setOption(History& history, model::InstanceId id, const std::string& option, const Value& value,
                 const Value& defaultValue);
 
+// A per-instance name override of a manifest name token; an empty name (or the
+// template's default) removes the override. Names are letters, digits and _.
+Error setNameOverride(History& history, model::InstanceId id, const std::string& token, const std::string& name,
+                      const std::string& defaultName);
+
 // Replaces an instance (same id) as one undo step named `what`: used when its
 // guide joints are regenerated. Refused when a child instance hangs under a
 // joint the new one no longer has, or a joint id belongs to another instance.

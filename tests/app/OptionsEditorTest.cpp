@@ -5,6 +5,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QDockWidget>
+#include <QLineEdit>
 #include <QMenu>
 #include "OutlinerView.h"
 #include <QSpinBox>
@@ -81,5 +82,34 @@ TEST(OptionsEditor, OutlinerMirrorsAndResetsOptionsAsUndoableSteps)
     EXPECT_EQ(w.session().history().undoText(), "Reset options of neck");
     while (w.action("undo")->isEnabled())
         w.action("undo")->trigger();
+    EXPECT_TRUE(w.session().document() == original);
+}
+
+TEST(OptionsEditor, NameOverridesRenameTheBuiltControls)
+{
+    test::Editor editor;
+    auto& w = editor.window;
+    const model::GuideDocument original = w.session().document();
+    const auto arm = w.session().instanceNamed("arm");
+    w.session().select(app::Selection::ofInstance(arm));
+    QApplication::processEvents();
+    auto* ik = qobject_cast<QLineEdit*>(w.optionsEditor()->editorFor("name:ik"));
+    ASSERT_NE(ik, nullptr);
+    EXPECT_EQ(ik->placeholderText(), "ik") << "the template's name shows as the placeholder";
+    ik->setFocus();
+    QTest::keyClicks(ik, "hand");
+    QTest::keyClick(ik, Qt::Key_Return);
+    QApplication::processEvents();
+    EXPECT_EQ(w.session().document().instance(arm)->names.at("ik"), "hand");
+    EXPECT_EQ(w.session().history().undoText(), "Name ik of arm");
+    w.action("build")->trigger();
+    ASSERT_NE(w.session().rig(), nullptr);
+    const auto control = w.session().rig()->find("arm.L::ctrls.ik");
+    ASSERT_TRUE(control.has_value());
+    EXPECT_EQ(w.session().rig()->nodes[*control].name, "c_arm_hand_L");
+
+    EXPECT_FALSE(w.session().setNameOverride(arm, "ik", "bad name!").isEmpty()) << "refused, nothing changes";
+    EXPECT_EQ(w.session().history().size(), 1u);
+    w.action("undo")->trigger();
     EXPECT_TRUE(w.session().document() == original);
 }
