@@ -169,6 +169,14 @@ std::vector<model::InstanceId> OutlinerView::topSelectedInstances() const
     return ids;
 }
 
+std::vector<model::InstanceId> OutlinerView::actedOn(model::InstanceId clicked) const
+{
+    std::vector<model::InstanceId> ids = topSelectedInstances();
+    if (std::find(ids.begin(), ids.end(), clicked) == ids.end())
+        ids = {clicked};
+    return ids;
+}
+
 model::JointId OutlinerView::dropTarget(const QPoint& pos) const
 {
     const QModelIndex index = indexAt(pos);
@@ -244,9 +252,7 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
     QAction* duplicate = menu->addAction(tr("Duplicate"));
     duplicate->setObjectName("duplicate");
     connect(duplicate, &QAction::triggered, this, [this, id] {
-        std::vector<model::InstanceId> ids = topSelectedInstances();
-        if (std::find(ids.begin(), ids.end(), id) == ids.end())
-            ids = {id};
+        const std::vector<model::InstanceId> ids = actedOn(id);
         emit duplicateRequested(QList<quint32>(ids.begin(), ids.end()));
     });
     QAction* mirror = menu->addAction(tr("Mirror (L/R branches)"));
@@ -269,10 +275,7 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
     QAction* remove = menu->addAction(tr("Delete"));
     remove->setObjectName("delete");
     connect(remove, &QAction::triggered, this, [this, id] {
-        std::vector<model::InstanceId> ids = topSelectedInstances();
-        if (std::find(ids.begin(), ids.end(), id) == ids.end())
-            ids = {id};
-        for (model::InstanceId each : ids)
+        for (model::InstanceId each : actedOn(id))
             emit removeRequested(each);
     });
     return menu;

@@ -59,6 +59,8 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    // What a context-menu command acts on: the selection when the clicked instance is in it.
+    std::vector<model::InstanceId> actedOn(model::InstanceId clicked) const;
     void addTemplateEntries(QMenu* menu, model::JointId hookJoint);
     void keyPressEvent(QKeyEvent* event) override;
 

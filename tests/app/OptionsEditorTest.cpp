@@ -13,14 +13,25 @@
 
 using namespace rs;
 
+namespace {
+
+// Selects the instance named `name` and lets the options dock show it.
+model::InstanceId showOptionsOf(app::MainWindow& w, const QString& name)
+{
+    const auto id = w.session().instanceNamed(name);
+    w.session().select(app::Selection::ofInstance(id));
+    QApplication::processEvents();
+    return id;
+}
+
+} // namespace
+
 TEST(OptionsEditor, EditsOptionsAndGuideParametersAsUndoableSteps)
 {
     test::Editor editor;
     auto& w = editor.window;
     const model::GuideDocument original = w.session().document();
-    const auto spine = w.session().instanceNamed("spine");
-    w.session().select(app::Selection::ofInstance(spine));
-    QApplication::processEvents();
+    const auto spine = showOptionsOf(w, "spine");
     widgets::OptionsEditor* options = w.optionsEditor();
     ASSERT_EQ(options->instance(), spine);
 
@@ -90,9 +101,7 @@ TEST(OptionsEditor, NameOverridesRenameTheBuiltControls)
     test::Editor editor;
     auto& w = editor.window;
     const model::GuideDocument original = w.session().document();
-    const auto arm = w.session().instanceNamed("arm");
-    w.session().select(app::Selection::ofInstance(arm));
-    QApplication::processEvents();
+    const auto arm = showOptionsOf(w, "arm");
     auto* ik = qobject_cast<QLineEdit*>(w.optionsEditor()->editorFor("name:ik"));
     ASSERT_NE(ik, nullptr);
     EXPECT_EQ(ik->placeholderText(), "ik") << "the template's name shows as the placeholder";
