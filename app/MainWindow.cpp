@@ -316,11 +316,17 @@ widgets::ExportDialog* MainWindow::exportDialog()
 
 void MainWindow::buildRig()
 {
+    statusBar()->showMessage(tr("Building..."));
+    statusBar()->repaint(); // shown before the (synchronous) build runs
     const double ms = m_session.build();
     const auto* rig = m_session.rig();
     m_log->addMessage(tr("Built %1 nodes in %2 ms").arg(rig->nodes.size()).arg(ms, 0, 'f', 2),
                       hasErrors(rig->diagnostics) ? Severity::Error : Severity::Note);
-    statusBar()->showMessage(tr("Build: %1 ms").arg(ms, 0, 'f', 2), 5000);
+    std::size_t errors = 0, warnings = 0;
+    for (const Diagnostic& d : rig->diagnostics)
+        (d.severity == Severity::Error ? errors : warnings) += d.severity != Severity::Note ? 1 : 0;
+    statusBar()->showMessage(tr("Build: %1 ms, %2 errors, %3 warnings (details in the build log)")
+                                 .arg(ms, 0, 'f', 2).arg(errors).arg(warnings), 8000);
     m_session.setMode(EditorMode::Rig); // a build is for checking the rig as an animator will use it
 }
 

@@ -15,6 +15,7 @@
 #include <QCheckBox>
 #include <QDockWidget>
 #include <QMenu>
+#include <QStatusBar>
 
 using namespace rs;
 using namespace rs::test;
@@ -86,6 +87,7 @@ TEST(Scenario, FromSampleToSavedRigAndBackToTheStart)
     ASSERT_NE(rig, nullptr);
     EXPECT_FALSE(hasErrors(rig->diagnostics)) << formatAll(rig->diagnostics);
     EXPECT_EQ(session.mode(), app::EditorMode::Rig);
+    EXPECT_TRUE(w.statusBar()->currentMessage().contains(" ms, 0 errors")) << w.statusBar()->currentMessage().toStdString();
     const std::string digitName = session.document().instance(digit)->name;
     const auto fk = rig->find(digitName + ".L::ctrls.fk.1");
     ASSERT_TRUE(fk.has_value()) << digitName;
