@@ -321,6 +321,27 @@ void mirrorBranchShapes(RigAssembly& a)
     }
 }
 
+// The rigger's shape edits (an instance's `shapes`), in the controller's space,
+// before the mirrored branches copy their twins' curves.
+void applyShapeEdits(RigAssembly& a, const std::map<std::string, const InstanceRecord*>& records)
+{
+    for (auto& node : a.rig.nodes) {
+        if (node.kind != model::RigNodeKind::Controller)
+            continue;
+        const auto record = records.find(node.id.substr(0, node.id.find("::")));
+        if (record == records.end())
+            continue;
+        const auto& edits = record->second->instance->shapes;
+        const auto edit = edits.find(tagOf(node));
+        if (edit == edits.end())
+            continue;
+        const Mat4 m = edit->second.matrix();
+        for (auto& curve : node.curves)
+            for (Vec3& p : curve.points)
+                p = Vec3(m * Vec4(p, 1.0));
+    }
+}
+
 } // namespace
 
 void applyShapes(RigAssembly& a)
@@ -380,6 +401,7 @@ void applyShapes(RigAssembly& a)
     }
     for (const PendingClone& c : clones)
         cloneCurves(a, c);
+    applyShapeEdits(a, records);
     mirrorBranchShapes(a);
 }
 

@@ -264,6 +264,24 @@ Error setNameOverride(History& history, InstanceId id, const std::string& token,
     return std::nullopt;
 }
 
+Error setShapeEdit(History& history, InstanceId id, const std::string& tag, const Transform& edit)
+{
+    const TemplateInstance* instance = history.document().instance(id);
+    if (!instance)
+        return "no instance with id " + std::to_string(id);
+    if (tag.empty())
+        return "a shape edit needs the controller's tag";
+    TemplateInstance changed = *instance;
+    if (edit == Transform{})
+        changed.shapes.erase(tag);
+    else
+        changed.shapes[tag] = edit;
+    if (changed.shapes == instance->shapes)
+        return std::nullopt;
+    history.push(std::make_unique<ReplaceInstance>(*instance, std::move(changed), "Edit shape " + tag + " of " + instance->name));
+    return std::nullopt;
+}
+
 Error replaceInstance(History& history, TemplateInstance instance, const std::string& what)
 {
     const GuideDocument& d = history.document();

@@ -36,6 +36,10 @@ Error setOption(History& history, model::InstanceId id, const std::string& optio
 Error setNameOverride(History& history, model::InstanceId id, const std::string& token, const std::string& name,
                       const std::string& defaultName);
 
+// A controller shape's edit (`tag` as "ctrls.ik") in the controller's space;
+// the identity removes the edit. One undo step.
+Error setShapeEdit(History& history, model::InstanceId id, const std::string& tag, const Transform& edit);
+
 // Replaces an instance (same id) as one undo step named `what`: used when its
 // guide joints are regenerated. Refused when a child instance hangs under a
 // joint the new one no longer has, or a joint id belongs to another instance.

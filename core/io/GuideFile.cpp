@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -36,6 +37,23 @@ void readPose(YamlReader& r, const YAML::Node& node, model::PoseValues& pose)
             if (auto value = r.number(channel.second, "pose channel '" + id + "." + channel.first.Scalar() + "'"))
                 pose[id][channel.first.Scalar()] = *value;
     }
+}
+
+// shapes: {ctrls.ik: {t: [x, y, z], r: [...], s: [...]}}: a controller shape's edit.
+std::optional<Transform> readShapeEdit(YamlReader& r, const YAML::Node& node, const std::string& tag)
+{
+    const std::string what = "shape edit of '" + tag + "'";
+    if (!r.expectMap(node, what))
+        return std::nullopt;
+    Transform t;
+    for (const auto& kv : node) {
+        const std::string key = kv.first.Scalar();
+        Vec3* target = key == "t" ? &t.translate : key == "r" ? &t.rotateDegrees : key == "s" ? &t.scale : nullptr;
+        if (!target) { r.warning(kv.first, "unknown key '" + key + "' in the " + what); continue; }
+        if (auto x = r.vec3(kv.second, what + " '" + key + "'")) *target = *x;
+        else return std::nullopt;
+    }
+    return t;
 }
 
 void readJoint(YamlReader& r, const YAML::Node& node, TemplateInstance& instance, bool& ok)
@@ -87,6 +105,11 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
             auto& target = key == "structure" ? instance.structure : instance.names;
             for (const auto& o : v)
                 if (auto text = r.string(o.second, key + " " + o.first.Scalar())) target[o.first.Scalar()] = *text;
+                else ok = false;
+        } else if (key == "shapes") {
+            if (!r.expectMap(v, "shapes")) { ok = false; continue; }
+            for (const auto& entry : v)
+                if (auto t = readShapeEdit(r, entry.second, entry.first.Scalar())) instance.shapes[entry.first.Scalar()] = *t;
                 else ok = false;
         } else if (key == "joints") jointsNode = v;
         else r.warning(kv.first, "unknown key '" + key + "' in an instance");
@@ -258,6 +281,17 @@ std::string writeGuideText(const GuideDocument& doc)
             out << "    " << (section == &i.structure ? "structure" : "names") << ":\n";
             for (const auto& [key, text] : *section)
                 out << "      " << quoteIfNeeded(key) << ": " << quoteIfNeeded(text) << "\n";
+        }
+        if (!i.shapes.empty()) {
+            out << "    shapes:\n";
+            for (const auto& [tag, t] : i.shapes) {
+                out << "      " << quoteIfNeeded(tag) << ": {t: " << vec3Text(t.translate);
+                if (t.rotateDegrees != Vec3(0.0))
+                    out << ", r: " << vec3Text(t.rotateDegrees);
+                if (t.scale != Vec3(1.0))
+                    out << ", s: " << vec3Text(t.scale);
+                out << "}\n";
+            }
         }
         out << "    joints:\n";
         for (const GuideJoint& j : i.joints) {

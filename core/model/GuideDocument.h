@@ -48,6 +48,9 @@ struct TemplateInstance {
     std::map<std::string, Value> options; // only values that differ from the defaults
     std::map<std::string, std::string> structure; // per-instance structure overrides: tag -> address
     std::map<std::string, std::string> names;     // per-instance name overrides: token -> name
+    // The rigger's edits of controller shapes: controller tag ("ctrls.ik") ->
+    // a transform of the shape in the controller's space (moved, turned, scaled).
+    std::map<std::string, Transform> shapes;
     std::vector<GuideJoint> joints;  // joints[0] is the root; parents come before children
 
     const GuideJoint* joint(JointId id) const;

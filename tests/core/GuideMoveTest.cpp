@@ -1,6 +1,7 @@
 #include "build/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "edit/GuideMove.h"
+#include "io/GuideFile.h"
 
 #include <gtest/gtest.h>
 
@@ -158,6 +159,51 @@ TEST(GuideMove, ReHangingKeepsTheGuideInPlaceAndRefusesCycles)
 
     const model::JointId finger = doc.instance(doc.subtree(arm).back())->joints.front().id;
     EXPECT_EQ(edit::reparentInstance(history, arm, finger), "'arm' cannot hang under itself or an instance below it");
+    history.undo();
+    EXPECT_TRUE(doc == original);
+}
+
+TEST(GuideMove, AShapeEditMovesTheControllersCurvesOnBothSidesAndIsSaved)
+{
+    model::GuideDocument doc = test::loadSample("biped");
+    const model::GuideDocument original = doc;
+    edit::History history(doc);
+    const model::InstanceId arm = doc.instanceNamed("arm")->id;
+    const model::Rig before = build::buildRig(doc, test::builtinTemplates());
+    Transform edit;
+    edit.translate = Vec3(0.0, 0.1, 0.0);
+    edit.scale = Vec3(2.0);
+    ASSERT_FALSE(edit::setShapeEdit(history, arm, "ctrls.ik", edit));
+    EXPECT_EQ(history.undoText(), "Edit shape ctrls.ik of arm");
+    const model::Rig after = build::buildRig(doc, test::builtinTemplates());
+    EXPECT_FALSE(hasErrors(after.diagnostics)) << formatAll(after.diagnostics);
+
+    const auto& left0 = test::node(before, "arm.L::ctrls.ik");
+    const auto& left1 = test::node(after, "arm.L::ctrls.ik");
+    ASSERT_EQ(left0.curves.size(), left1.curves.size());
+    ASSERT_FALSE(left0.curves.empty());
+    for (std::size_t k = 0; k < left0.curves.front().points.size(); ++k)
+        EXPECT_LT(glm::length(left1.curves.front().points[k] - Vec3(edit.matrix() * Vec4(left0.curves.front().points[k], 1.0))), 1e-12);
+    // The right side shows the same edit, mirrored: its curves in the world are the left's reflected.
+    const auto& right1 = test::node(after, "arm.R::ctrls.ik");
+    const Vec3 l = Vec3(left1.worldMatrix * Vec4(left1.curves.front().points[0], 1.0));
+    const Vec3 r = Vec3(right1.worldMatrix * Vec4(right1.curves.front().points[0], 1.0));
+    EXPECT_LT(glm::length(r - Vec3(-l.x, l.y, l.z)), 1e-9);
+    EXPECT_EQ(test::node(after, "arm.L::ctrls.fk.0").curves.front().points,
+              test::node(before, "arm.L::ctrls.fk.0").curves.front().points) << "other controls unchanged";
+
+    // Saved and read back; a bad value is an error with its line.
+    const std::string text = io::writeGuideText(doc);
+    EXPECT_NE(text.find("shapes:\n      ctrls.ik: {t: [0, 0.1, 0], s: [2, 2, 2]}"), std::string::npos) << text;
+    auto read = io::readGuideText(text, "edited.yml");
+    ASSERT_TRUE(read) << formatAll(read.diagnostics());
+    EXPECT_TRUE(*read == doc);
+    std::string broken = text;
+    broken.replace(broken.find("{t: [0, 0.1, 0]"), 15, "{t: [0, up, 0]");
+    auto refused = io::readGuideText(broken, "broken.yml");
+    EXPECT_FALSE(refused);
+    EXPECT_NE(formatAll(refused.diagnostics()).find("broken.yml:"), std::string::npos) << formatAll(refused.diagnostics());
+
     history.undo();
     EXPECT_TRUE(doc == original);
 }
