@@ -113,6 +113,13 @@ public:
     QString endGuideDrag(const QString& what);
     void setGuideDragOptions(edit::GuideDragOptions options) { m_guideDragOptions = options; }
     const edit::GuideDragOptions& guideDragOptions() const { return m_guideDragOptions; }
+    // Shape editing (Guide mode, a controller selected): the gizmo moves, turns
+    // or scales the controller's shape in its space (an instance `shapes` edit).
+    // Only controllers of authored instances (not a mirrored copy: it follows).
+    std::optional<Mat4> shapeFrame(model::RigNodeIndex node) const;
+    void beginShapeDrag(model::RigNodeIndex node);
+    void dragShapeTo(const Mat4& world);
+    QString endShapeDrag();
     // Duplicates the instances (with what hangs below them) and selects the copies.
     QString duplicateInstances(const std::vector<model::InstanceId>& ids);
     QString reparentInstance(model::InstanceId id, model::JointId hookJoint);
@@ -179,6 +186,15 @@ private:
     std::vector<edit::JointTransform> m_guideDragLast;
     edit::GuideDragOptions m_guideDragOptions;
     std::vector<glm::vec3> m_reference;
+    struct ShapeDrag {
+        model::RigNodeIndex node;
+        model::InstanceId instance;
+        std::string tag;
+        Transform start, now;
+        Mat4 nodeWorld;
+        std::vector<model::ControllerCurve> curves;
+    };
+    std::optional<ShapeDrag> m_shapeDrag;
     void previewJoints(const std::vector<edit::JointTransform>& transforms);
 };
 

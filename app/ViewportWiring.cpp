@@ -30,17 +30,25 @@ void MainWindow::connectViewport()
     });
     connect(m_viewport, &ViewportWidget::nothingPicked, this, [this] { m_session.select({}); });
 
+    // Guide mode: the gizmo is on a guide joint, or on the selected controller's shape.
     auto guideMode = [this] { return m_session.mode() == EditorMode::Guide; };
-    connect(m_viewport, &ViewportWidget::gizmoDragStarted, this, [this, guideMode](quint32 target) {
-        if (guideMode()) m_session.beginGuideDrag(target);
+    auto shapeMode = [this, guideMode] { return guideMode() && m_session.selection().node != model::kNoNode; };
+    connect(m_viewport, &ViewportWidget::gizmoDragStarted, this, [this, guideMode, shapeMode](quint32 target) {
+        if (shapeMode()) m_session.beginShapeDrag(target);
+        else if (guideMode()) m_session.beginGuideDrag(target);
         else m_session.beginDrag(target);
     });
-    connect(m_viewport, &ViewportWidget::gizmoDragged, this, [this, guideMode](quint32 target, const glm::dmat4& world) {
-        if (guideMode()) m_session.dragGuideTo(world);
+    connect(m_viewport, &ViewportWidget::gizmoDragged, this, [this, guideMode, shapeMode](quint32 target, const glm::dmat4& world) {
+        if (shapeMode()) m_session.dragShapeTo(world);
+        else if (guideMode()) m_session.dragGuideTo(world);
         else m_session.dragTo(target, world);
     });
-    connect(m_viewport, &ViewportWidget::gizmoDragFinished, this, [this, guideMode](quint32 target) {
+    connect(m_viewport, &ViewportWidget::gizmoDragFinished, this, [this, guideMode, shapeMode](quint32 target) {
         const QString verb = kDragVerbs[int(m_viewport->gizmoMode())];
+        if (shapeMode()) {
+            logError(m_session.endShapeDrag());
+            return;
+        }
         if (guideMode()) {
             const model::TemplateInstance* owner = m_session.document().ownerOf(target);
             const QString name = owner ? QString::fromStdString(owner->name) : QString();
@@ -88,6 +96,8 @@ void MainWindow::refreshScene()
     const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();
     if (rigMode) {
         m_viewport->setGizmoTarget(hasNode ? s.node : model::kNoNode, hasNode ? pose->worldMatrix(s.node) : glm::dmat4(1.0));
+    } else if (const auto frame = s.node != model::kNoNode ? m_session.shapeFrame(s.node) : std::nullopt) {
+        m_viewport->setGizmoTarget(s.node, *frame); // the selected controller's shape
     } else {
         const model::JointId joint = m_session.gizmoJoint();
         m_viewport->setGizmoTarget(joint != model::kNoId ? joint : model::kNoNode,

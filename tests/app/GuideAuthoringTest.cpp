@@ -10,6 +10,7 @@
 #include <QApplication>
 
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
 
 using namespace rs;
 using namespace rs::test;
@@ -139,4 +140,39 @@ TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
     EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u) << "the shown model stays";
     w.action("clearReference")->trigger();
     EXPECT_TRUE(w.viewportWidget()->scene().reference.empty());
+}
+
+TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)
+{
+    Editor editor;
+    app::MainWindow& w = editor.window;
+    const model::GuideDocument original = w.session().document();
+    w.buildRig();
+    w.session().setMode(app::EditorMode::Guide);
+    const model::Rig* rig = w.session().rig();
+    const auto ik = rig->find("arm.L::ctrls.ik");
+    ASSERT_TRUE(ik.has_value());
+    w.session().selectControllers({*ik}, false);
+    viewport::ViewportWidget* view = w.viewportWidget();
+    QTest::keyClick(view, Qt::Key_W);
+    view->setGizmoWorldSpace(true);
+    ASSERT_TRUE(view->gizmo().has_value());
+    EXPECT_LT(maxAbsDifference(view->gizmo()->target, rig->nodes[*ik].worldMatrix), 1e-9) << "on the shape, in the controller's frame";
+    const Vec3 rightBefore = translationOf(w.session().rig()->nodes[*w.session().rig()->find("arm.R::ctrls.ik")].worldMatrix *
+                                           glm::translate(glm::dmat4(1.0), w.session().rig()->nodes[*w.session().rig()->find("arm.R::ctrls.ik")].curves.front().points[0]));
+    ASSERT_TRUE(dragGizmoHandle(view, 1));
+
+    const auto* arm = w.session().document().instanceNamed("arm");
+    ASSERT_EQ(arm->shapes.count("ctrls.ik"), 1u);
+    EXPECT_GT(arm->shapes.at("ctrls.ik").translate.y + arm->shapes.at("ctrls.ik").translate.z, 0.0) << "moved up in the world";
+    EXPECT_EQ(w.session().history().size(), 1u);
+    EXPECT_EQ(w.session().history().undoText(), "Edit shape ctrls.ik of arm");
+    EXPECT_FALSE(w.session().isRigStale()) << "rebuilt at once";
+    EXPECT_EQ(w.session().mode(), app::EditorMode::Guide);
+    const auto& right = w.session().rig()->nodes[*w.session().rig()->find("arm.R::ctrls.ik")];
+    const Vec3 rightAfter = translationOf(right.worldMatrix * glm::translate(glm::dmat4(1.0), right.curves.front().points[0]));
+    EXPECT_GT(rightAfter.y - rightBefore.y, 0.01) << "the mirrored side follows";
+    w.grab().save(QString::fromStdString(outputPath("shape-edit.png")));
+    w.action("undo")->trigger();
+    EXPECT_TRUE(w.session().document() == original);
 }
