@@ -141,20 +141,24 @@ QString EditorSession::addTemplate(const QString& templateId, model::JointId hoo
 
 QString EditorSession::removeInstance(model::InstanceId id)
 {
-    auto error = edit::removeInstance(m_history, id);
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(edit::removeInstance(m_history, id));
 }
 
 QString EditorSession::renameInstance(model::InstanceId id, const QString& name)
 {
-    auto error = edit::renameInstance(m_history, id, name.toStdString());
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(edit::renameInstance(m_history, id, name.toStdString()));
+}
+
+const templates::TemplateManifest* EditorSession::manifestOf(model::InstanceId id) const
+{
+    const model::TemplateInstance* instance = m_document.instance(id);
+    return instance ? m_templates->find(instance->templateId) : nullptr;
 }
 
 QString EditorSession::setOption(model::InstanceId id, const std::string& name, const Value& value)
 {
     const model::TemplateInstance* instance = m_document.instance(id);
-    const templates::TemplateManifest* manifest = instance ? m_templates->find(instance->templateId) : nullptr;
+    const templates::TemplateManifest* manifest = manifestOf(id);
     if (!manifest)
         return tr("no template for this instance");
     const templates::Parameter* guide = manifest->findGuide(name);
@@ -162,8 +166,7 @@ QString EditorSession::setOption(model::InstanceId id, const std::string& name, 
     if (!option)
         return tr("%1 has no option '%2'").arg(QString::fromStdString(manifest->id), QString::fromStdString(name));
     if (!guide) {
-        auto error = edit::setOption(m_history, id, name, value, option->value);
-        return error ? QString::fromStdString(*error) : QString();
+        return messageOf(edit::setOption(m_history, id, name, value, option->value));
     }
     auto options = instance->options;
     if (value == option->value)
@@ -175,32 +178,28 @@ QString EditorSession::setOption(model::InstanceId id, const std::string& name, 
     auto regenerated = build::regenerateGuide(m_document, *m_templates, id, options);
     if (!regenerated)
         return QString::fromStdString(formatAll(regenerated.diagnostics()));
-    auto error = edit::replaceInstance(m_history, regenerated.take(), "Set guide option " + name);
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(edit::replaceInstance(m_history, regenerated.take(), "Set guide option " + name));
 }
 
 QString EditorSession::resetOptions(model::InstanceId id)
 {
     const model::TemplateInstance* instance = m_document.instance(id);
-    const templates::TemplateManifest* manifest = instance ? m_templates->find(instance->templateId) : nullptr;
+    const templates::TemplateManifest* manifest = manifestOf(id);
     if (!manifest)
         return tr("no template for this instance");
     model::TemplateInstance reset = *instance;
     std::erase_if(reset.options, [&](const auto& entry) { return !manifest->findGuide(entry.first); });
     if (reset.options == instance->options)
         return {};
-    auto error = edit::replaceInstance(m_history, std::move(reset), "Reset options of " + instance->name);
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(edit::replaceInstance(m_history, std::move(reset), "Reset options of " + instance->name));
 }
 
 QString EditorSession::setNameOverride(model::InstanceId id, const std::string& token, const QString& name)
 {
-    const model::TemplateInstance* instance = m_document.instance(id);
-    const templates::TemplateManifest* manifest = instance ? m_templates->find(instance->templateId) : nullptr;
+    const templates::TemplateManifest* manifest = manifestOf(id);
     if (!manifest)
         return tr("no template for this instance");
-    auto error = edit::setNameOverride(m_history, id, token, name.toStdString(), manifest->defaultName(token));
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(edit::setNameOverride(m_history, id, token, name.toStdString(), manifest->defaultName(token)));
 }
 
 void EditorSession::select(const Selection& selection)

@@ -159,6 +159,10 @@ signals:
     void referenceChanged();
 
 private:
+    // An edit's refusal as the message the views show (empty on success).
+    static QString messageOf(const edit::Error& error) { return error ? QString::fromStdString(*error) : QString(); }
+    // The manifest of an instance's template; null when either is missing.
+    const templates::TemplateManifest* manifestOf(model::InstanceId id) const;
     // Replaces the open document (selection, rig and history start over).
     void replaceDocument(model::GuideDocument document, const QString& path);
     mutable bool m_ownsAutosave = false;

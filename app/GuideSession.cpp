@@ -74,12 +74,10 @@ QString EditorSession::endGuideDrag(const QString& what)
         return {};
     previewJoints(m_guideDrag->start());
     const auto transforms = std::move(m_guideDragLast);
+    const bool moved = !transforms.empty() && transforms != m_guideDrag->start(); // a click on a handle moves nothing
     m_guideDrag.reset();
     m_guideDragLast.clear();
-    if (transforms.empty())
-        return {};
-    const auto error = edit::setJointTransforms(m_history, transforms, what.toStdString());
-    return error && *error != "the joints did not move" ? QString::fromStdString(*error) : QString();
+    return moved ? messageOf(edit::setJointTransforms(m_history, transforms, what.toStdString())) : QString();
 }
 
 std::optional<Mat4> EditorSession::shapeFrame(model::RigNodeIndex node) const
@@ -131,7 +129,7 @@ QString EditorSession::endShapeDrag()
     auto error = edit::setShapeEdit(m_history, drag.instance, drag.tag, drag.now);
     if (!error && wasCurrent && m_rigStale)
         build(); // a shape edit is cheap to rebuild and the mirrored side follows at once
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(error);
 }
 
 QString EditorSession::duplicateInstances(const std::vector<model::InstanceId>& ids)
@@ -145,8 +143,7 @@ QString EditorSession::duplicateInstances(const std::vector<model::InstanceId>& 
 
 QString EditorSession::reparentInstance(model::InstanceId id, model::JointId hookJoint)
 {
-    auto error = edit::reparentInstance(m_history, id, hookJoint);
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(edit::reparentInstance(m_history, id, hookJoint));
 }
 
 bool EditorSession::loadReference(const QString& path, Diagnostics& diagnostics)

@@ -60,8 +60,7 @@ QString EditorSession::commitPose(const eval::Pose& pose, const QString& what)
         poseFromDocument(); // a drag that ended where it began: show the stored pose
         return {};
     }
-    const auto error = edit::setPose(m_history, std::move(values), what.toStdString());
-    return error ? QString::fromStdString(*error) : QString();
+    return messageOf(edit::setPose(m_history, std::move(values), what.toStdString()));
 }
 
 void EditorSession::selectControllers(const std::vector<model::RigNodeIndex>& nodes, bool add)

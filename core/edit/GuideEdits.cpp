@@ -245,41 +245,46 @@ Error setOption(History& history, InstanceId id, const std::string& option, cons
     return std::nullopt;
 }
 
-Error setNameOverride(History& history, InstanceId id, const std::string& token, const std::string& name,
-                      const std::string& defaultName)
+namespace {
+
+// Sets (or, with nullopt, removes) one entry of a keyed per-instance section
+// (`names`, `shapes`) as one undo step; no step when nothing changes.
+template <class Map>
+Error setInstanceEntry(History& history, InstanceId id, Map TemplateInstance::*section, const std::string& key,
+                       std::optional<typename Map::mapped_type> value, const std::string& what)
 {
     const TemplateInstance* instance = history.document().instance(id);
     if (!instance)
         return "no instance with id " + std::to_string(id);
+    TemplateInstance changed = *instance;
+    if (value)
+        (changed.*section)[key] = *value;
+    else
+        (changed.*section).erase(key);
+    if (changed.*section == instance->*section)
+        return std::nullopt;
+    history.push(std::make_unique<ReplaceInstance>(*instance, std::move(changed), what + " of " + instance->name));
+    return std::nullopt;
+}
+
+} // namespace
+
+Error setNameOverride(History& history, InstanceId id, const std::string& token, const std::string& name,
+                      const std::string& defaultName)
+{
     if (!name.empty() && !std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; }))
         return "'" + name + "' is not a valid name (letters, digits and _)";
-    TemplateInstance changed = *instance;
-    if (name.empty() || name == defaultName)
-        changed.names.erase(token);
-    else
-        changed.names[token] = name;
-    if (changed.names == instance->names)
-        return std::nullopt;
-    history.push(std::make_unique<ReplaceInstance>(*instance, std::move(changed), "Name " + token + " of " + instance->name));
-    return std::nullopt;
+    const bool fallback = name.empty() || name == defaultName;
+    return setInstanceEntry(history, id, &TemplateInstance::names, token,
+                            fallback ? std::nullopt : std::optional<std::string>(name), "Name " + token);
 }
 
 Error setShapeEdit(History& history, InstanceId id, const std::string& tag, const Transform& edit)
 {
-    const TemplateInstance* instance = history.document().instance(id);
-    if (!instance)
-        return "no instance with id " + std::to_string(id);
     if (tag.empty())
         return "a shape edit needs the controller's tag";
-    TemplateInstance changed = *instance;
-    if (edit == Transform{})
-        changed.shapes.erase(tag);
-    else
-        changed.shapes[tag] = edit;
-    if (changed.shapes == instance->shapes)
-        return std::nullopt;
-    history.push(std::make_unique<ReplaceInstance>(*instance, std::move(changed), "Edit shape " + tag + " of " + instance->name));
-    return std::nullopt;
+    return setInstanceEntry(history, id, &TemplateInstance::shapes, tag,
+                            edit == Transform{} ? std::nullopt : std::optional<Transform>(edit), "Edit shape " + tag);
 }
 
 Error replaceInstance(History& history, TemplateInstance instance, const std::string& what)

@@ -120,7 +120,7 @@ bool isBelow(const GuideDocument& document, JointId joint, JointId ancestor)
 }
 
 GuideDrag::GuideDrag(const GuideDocument& document, JointId lead, std::vector<JointId> joints, GuideDragOptions options)
-    : m_lead(lead), m_leadStart(document.jointWorldMatrix(lead)), m_options(options)
+    : m_leadStart(document.jointWorldMatrix(lead)), m_options(options)
 {
     if (std::find(joints.begin(), joints.end(), lead) == joints.end())
         joints.push_back(lead);

@@ -17,6 +17,7 @@ namespace rs::edit {
 struct JointTransform {
     model::JointId joint = model::kNoId;
     Transform local;
+    bool operator==(const JointTransform&) const = default;
 };
 
 // A local matrix as translate / rotate (XYZ, degrees) / scale, float noise
@@ -61,7 +62,6 @@ private:
         model::JointId mirrorOf; // kNoId, or the selected joint this one mirrors
         Mat4 sourceStart;        // that joint's world matrix at the start
     };
-    model::JointId m_lead;
     Mat4 m_leadStart;
     GuideDragOptions m_options;
     std::vector<Moved> m_moved;
