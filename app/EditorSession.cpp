@@ -17,6 +17,21 @@ bool sameGuide(const model::GuideDocument& a, const model::GuideDocument& b)
     return a.name == b.name && a.naming == b.naming && a.instances() == b.instances();
 }
 
+// Only shape edits differ: a rebuild cannot fail or move anything else.
+bool differsOnlyInShapes(const model::GuideDocument& a, const model::GuideDocument& b)
+{
+    if (!(a.name == b.name && a.naming == b.naming && a.instances().size() == b.instances().size()))
+        return false;
+    for (std::size_t i = 0; i < a.instances().size(); ++i) {
+        model::TemplateInstance x = a.instances()[i], y = b.instances()[i];
+        x.shapes.clear();
+        y.shapes.clear();
+        if (!(x == y))
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 EditorSession::EditorSession(QObject* parent) : QObject(parent)
@@ -27,6 +42,8 @@ EditorSession::EditorSession(QObject* parent) : QObject(parent)
         m_rigStale = m_rig.has_value() && !sameGuide(m_document, m_builtFrom); // posing does not age the rig
         if (m_selection.instance != model::kNoId && !m_document.instance(m_selection.instance))
             m_selection = {};
+        if (m_rigStale && differsOnlyInShapes(m_document, m_builtFrom))
+            build(); // a shape edit (or its undo) shows at once, on both sides of mirrored branches
         emit documentChanged();
         poseFromDocument();
     });
@@ -89,11 +106,15 @@ bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
 double EditorSession::build()
 {
     const auto start = std::chrono::steady_clock::now();
-    // Rebuilding keeps the selected controllers (by id: indices may move).
+    // Rebuilding keeps the selected controllers and CVs (by id: indices may move).
     std::vector<std::string> selectedIds;
-    if (m_rig)
+    std::vector<std::pair<std::string, model::CurveCv>> selectedCvs;
+    if (m_rig) {
         for (auto n : m_selection.nodes)
             selectedIds.push_back(m_rig->nodes[n].id);
+        for (const auto& cv : m_selection.cvs)
+            selectedCvs.emplace_back(m_rig->nodes[cv.node].id, cv);
+    }
     m_rig = build::buildRig(m_document, *m_templates);
     compileRig();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -105,6 +126,13 @@ double EditorSession::build()
         if (auto n = m_rig->find(id)) {
             m_selection.nodes.push_back(*n);
             m_selection.node = *n;
+        }
+    m_selection.cvs.clear();
+    for (auto [id, cv] : selectedCvs)
+        if (auto n = m_rig->find(id); n && std::size_t(cv.curve) < m_rig->nodes[*n].curves.size() &&
+                                      std::size_t(cv.cv) < m_rig->nodes[*n].curves[cv.curve].cvs.size()) {
+            cv.node = *n;
+            m_selection.cvs.push_back(cv);
         }
     emit rigChanged();
     emit diagnosticsReported(m_rig->diagnostics);

@@ -4,6 +4,7 @@
 // rs::edit on the history; this object only adds Qt signals so the views can
 // follow. It holds no widgets.
 #include "edit/GuideMove.h"
+#include "edit/ShapeCvEdit.h"
 #include "edit/History.h"
 #include "eval/Pickwalk.h"
 #include "eval/PoseTools.h"
@@ -26,6 +27,7 @@ struct Selection {
     std::vector<model::JointId> joints;            // every selected guide joint, `joint` among them
     model::RigNodeIndex node = model::kNoNode;     // the current controller (rig mode)
     std::vector<model::RigNodeIndex> nodes;        // every selected controller, `node` among them
+    std::vector<model::CurveCv> cvs;               // CV mode: selected CVs, all of `node`
 
     // An instance (and one of its guide joints), no controllers.
     static Selection ofInstance(model::InstanceId id, model::JointId joint = model::kNoId)
@@ -113,13 +115,27 @@ public:
     QString endGuideDrag(const QString& what);
     void setGuideDragOptions(edit::GuideDragOptions options) { m_guideDragOptions = options; }
     const edit::GuideDragOptions& guideDragOptions() const { return m_guideDragOptions; }
-    // Shape editing (Guide mode, a controller selected): the gizmo moves, turns
-    // or scales the controller's shape in its space (an instance `shapes` edit).
-    // Only controllers of authored instances (not a mirrored copy: it follows).
+    // Shape editing (Guide mode, a controller selected; ShapeSession.cpp): the
+    // gizmo moves, turns or scales the controller's shape in its space (an
+    // instance `shapes` edit). On a mirrored branch copy the edit lands on the
+    // authored side, reflected. A shape edit (or its undo) rebuilds a current rig at once.
     std::optional<Mat4> shapeFrame(model::RigNodeIndex node) const;
     void beginShapeDrag(model::RigNodeIndex node);
     void dragShapeTo(const Mat4& world);
     QString endShapeDrag();
+    // CV mode (Guide mode; ShapeSession.cpp): the selected controllers show
+    // their shapes' CVs; CVs of one controller are picked (add toggles) or
+    // box-selected, and the gizmo moves, turns or scales them about their
+    // centre, previewed live, one undo step, rebuilt at once so a mirrored
+    // side follows. Turning it on builds the rig when it is missing or stale.
+    bool isCvMode() const { return m_cvMode; }
+    void setCvMode(bool on);
+    void selectCvs(const std::vector<model::CurveCv>& cvs, bool add);
+    // The gizmo's frame on the selected CVs; nullopt without an editable selection.
+    std::optional<Mat4> cvFrame() const;
+    void beginCvDrag();
+    void dragCvsTo(const Mat4& world);
+    QString endCvDrag(const QString& verb);
     // Duplicates the instances (with what hangs below them) and selects the copies.
     QString duplicateInstances(const std::vector<model::InstanceId>& ids);
     QString reparentInstance(model::InstanceId id, model::JointId hookJoint);
@@ -194,11 +210,20 @@ private:
         model::RigNodeIndex node;
         model::InstanceId instance;
         std::string tag;
-        Transform start, now;
+        model::ShapeEdit start, now;
         Mat4 nodeWorld;
+        Mat4 reflection;                             // dragging a mirrored copy: its space -> the authored side's
         std::vector<model::ControllerCurve> curves;
     };
     std::optional<ShapeDrag> m_shapeDrag;
+    bool m_cvMode = false;
+    struct CvDragState {
+        edit::CvDrag drag;
+        Mat4 change{1.0};
+        std::map<model::RigNodeIndex, std::vector<model::ControllerCurve>> original; // the previewed nodes' curves
+    };
+    std::optional<CvDragState> m_cvDrag;
+
     void previewJoints(const std::vector<edit::JointTransform>& transforms);
 };
 

@@ -1,5 +1,6 @@
 // EditorSession's guide authoring: guide-joint selection, gizmo drags on guide
-// joints, duplicating and re-hanging instances, the reference model. A topic
+// joints, duplicating and re-hanging instances, the reference model (shapes
+// and CVs: ShapeSession.cpp). A topic
 // file of the session, like PoseSession.cpp.
 #include "EditorSession.h"
 
@@ -15,6 +16,7 @@ void EditorSession::selectGuideJoints(const std::vector<model::JointId>& joints,
     Selection s = add ? m_selection : Selection{};
     s.node = model::kNoNode;
     s.nodes.clear();
+    s.cvs.clear();
     if (add && s.joints.empty() && s.joint != model::kNoId)
         s.joints.push_back(s.joint);
     for (model::JointId joint : joints) {
@@ -78,58 +80,6 @@ QString EditorSession::endGuideDrag(const QString& what)
     m_guideDrag.reset();
     m_guideDragLast.clear();
     return moved ? messageOf(edit::setJointTransforms(m_history, transforms, what.toStdString())) : QString();
-}
-
-std::optional<Mat4> EditorSession::shapeFrame(model::RigNodeIndex node) const
-{
-    if (!m_rig || node >= m_rig->nodes.size() || m_rig->nodes[node].kind != model::RigNodeKind::Controller)
-        return std::nullopt;
-    const model::RigNode& n = m_rig->nodes[node];
-    const model::TemplateInstance* owner = m_document.instance(n.owner);
-    if (!owner || n.id.find("::") == std::string::npos)
-        return std::nullopt;
-    const auto edit = owner->shapes.find(n.id.substr(n.id.find("::") + 2));
-    return n.worldMatrix * (edit == owner->shapes.end() ? Mat4(1.0) : edit->second.matrix());
-}
-
-void EditorSession::beginShapeDrag(model::RigNodeIndex node)
-{
-    if (!shapeFrame(node))
-        return;
-    const model::RigNode& n = m_rig->nodes[node];
-    const model::TemplateInstance* owner = m_document.instance(n.owner);
-    const std::string tag = n.id.substr(n.id.find("::") + 2);
-    const auto edit = owner->shapes.find(tag);
-    const Transform start = edit == owner->shapes.end() ? Transform{} : edit->second;
-    m_shapeDrag = ShapeDrag{node, owner->id, tag, start, start, n.worldMatrix, n.curves};
-}
-
-void EditorSession::dragShapeTo(const Mat4& world)
-{
-    if (!m_shapeDrag)
-        return;
-    // Preview on the built curves: the change from the edit they were built with.
-    m_shapeDrag->now = edit::localTransformOf(glm::inverse(m_shapeDrag->nodeWorld) * world);
-    const Mat4 change = m_shapeDrag->now.matrix() * glm::inverse(m_shapeDrag->start.matrix());
-    auto& curves = m_rig->nodes[m_shapeDrag->node].curves;
-    curves = m_shapeDrag->curves;
-    for (auto& curve : curves)
-        for (Vec3& p : curve.points)
-            p = Vec3(change * Vec4(p, 1.0));
-    emit guidePreviewed();
-}
-
-QString EditorSession::endShapeDrag()
-{
-    if (!m_shapeDrag)
-        return {};
-    const ShapeDrag drag = *std::exchange(m_shapeDrag, std::nullopt);
-    m_rig->nodes[drag.node].curves = drag.curves;
-    const bool wasCurrent = !m_rigStale;
-    auto error = edit::setShapeEdit(m_history, drag.instance, drag.tag, drag.now);
-    if (!error && wasCurrent && m_rigStale)
-        build(); // a shape edit is cheap to rebuild and the mirrored side follows at once
-    return messageOf(error);
 }
 
 QString EditorSession::duplicateInstances(const std::vector<model::InstanceId>& ids)

@@ -1,6 +1,6 @@
 // MainWindow's View and Guide menus: camera views and framing (the viewport
 // handles the same keys when it has focus), symmetric editing, grid snapping,
-// duplicating and the reference model.
+// CV mode, duplicating and the reference model.
 #include "MainWindow.h"
 
 #include "ActionKit.h"
@@ -52,6 +52,11 @@ void MainWindow::createViewActions()
             m_session.setGuideDragOptions({symmetry->isChecked(), snap->isChecked() ? 0.05 : 0.0});
         });
     }
+    QAction* cvMode = makeAction(this, "cvMode", tr("&CV Mode"), QKeySequence(Qt::Key_F8), "cvs");
+    cvMode->setCheckable(true);
+    cvMode->setToolTip(tr("Edit the control points of the selected controllers' shapes (F8, as Maya's component mode): "
+                          "click or box-select CVs, then W/E/R"));
+    connect(cvMode, &QAction::toggled, this, [this](bool on) { m_session.setCvMode(on); });
     QAction* duplicate = makeAction(this, "duplicate", tr("&Duplicate"), QKeySequence(tr("Ctrl+D")));
     connect(duplicate, &QAction::triggered, this, [this] {
         std::vector<model::InstanceId> ids = m_outliner->topSelectedInstances();
@@ -69,12 +74,12 @@ void MainWindow::createViewActions()
     });
     QAction* clearReference = makeAction(this, "clearReference", tr("&Clear Reference Model"), {});
     connect(clearReference, &QAction::triggered, this, [this] { loadReference({}); });
-    guide->addActions({symmetry, snap});
+    guide->addActions({symmetry, snap, cvMode});
     guide->addSeparator();
     guide->addAction(duplicate);
     guide->addSeparator();
     guide->addActions({reference, clearReference});
-    findChild<QToolBar*>("mainToolBar")->addActions({symmetry});
+    findChild<QToolBar*>("mainToolBar")->addActions({symmetry, cvMode});
 }
 
 bool MainWindow::loadReference(const QString& path)

@@ -1,6 +1,6 @@
 // MainWindow's viewport wiring: picks and box selection, gizmo drags (guide
-// joints in Guide mode, controllers in Rig mode), pickwalk and the channel
-// box, and what the viewport draws.
+// joints, shapes or CVs in Guide mode, controllers in Rig mode), pickwalk and
+// the channel box, and what the viewport draws.
 #include "MainWindow.h"
 
 #include "ChannelBox.h"
@@ -28,23 +28,39 @@ void MainWindow::connectViewport()
     connect(m_viewport, &ViewportWidget::controllersBoxSelected, this, [this](const QList<quint32>& nodes, bool add) {
         m_session.selectControllers(std::vector<model::RigNodeIndex>(nodes.begin(), nodes.end()), add);
     });
-    connect(m_viewport, &ViewportWidget::nothingPicked, this, [this] { m_session.select({}); });
+    connect(m_viewport, &ViewportWidget::cvsSelected, this,
+            [this](const std::vector<model::CurveCv>& cvs, bool add) { m_session.selectCvs(cvs, add); });
+    connect(m_viewport, &ViewportWidget::nothingPicked, this, [this] {
+        if (m_session.isCvMode() && !m_session.selection().cvs.empty())
+            m_session.selectCvs({}, false); // CV mode: a click on nothing drops the CVs, keeps the controller
+        else
+            m_session.select({});
+    });
 
-    // Guide mode: the gizmo is on a guide joint, or on the selected controller's shape.
+    // Guide mode: the gizmo is on a guide joint, on the selected controller's
+    // shape, or (CV mode) on the selected CVs.
     auto guideMode = [this] { return m_session.mode() == EditorMode::Guide; };
+    auto cvMode = [this, guideMode] { return guideMode() && m_session.isCvMode(); };
     auto shapeMode = [this, guideMode] { return guideMode() && m_session.selection().node != model::kNoNode; };
-    connect(m_viewport, &ViewportWidget::gizmoDragStarted, this, [this, guideMode, shapeMode](quint32 target) {
-        if (shapeMode()) m_session.beginShapeDrag(target);
+    connect(m_viewport, &ViewportWidget::gizmoDragStarted, this, [this, guideMode, shapeMode, cvMode](quint32 target) {
+        if (cvMode()) m_session.beginCvDrag();
+        else if (shapeMode()) m_session.beginShapeDrag(target);
         else if (guideMode()) m_session.beginGuideDrag(target);
         else m_session.beginDrag(target);
     });
-    connect(m_viewport, &ViewportWidget::gizmoDragged, this, [this, guideMode, shapeMode](quint32 target, const glm::dmat4& world) {
-        if (shapeMode()) m_session.dragShapeTo(world);
-        else if (guideMode()) m_session.dragGuideTo(world);
-        else m_session.dragTo(target, world);
-    });
-    connect(m_viewport, &ViewportWidget::gizmoDragFinished, this, [this, guideMode, shapeMode](quint32 target) {
+    connect(m_viewport, &ViewportWidget::gizmoDragged, this,
+            [this, guideMode, shapeMode, cvMode](quint32 target, const glm::dmat4& world) {
+                if (cvMode()) m_session.dragCvsTo(world);
+                else if (shapeMode()) m_session.dragShapeTo(world);
+                else if (guideMode()) m_session.dragGuideTo(world);
+                else m_session.dragTo(target, world);
+            });
+    connect(m_viewport, &ViewportWidget::gizmoDragFinished, this, [this, guideMode, shapeMode, cvMode](quint32 target) {
         const QString verb = kDragVerbs[int(m_viewport->gizmoMode())];
+        if (cvMode()) {
+            logError(m_session.endCvDrag(verb));
+            return;
+        }
         if (shapeMode()) {
             logError(m_session.endShapeDrag());
             return;
@@ -88,14 +104,19 @@ void MainWindow::refreshScene()
     const Selection& s = m_session.selection();
     const bool rigMode = m_session.mode() == EditorMode::Rig;
     const eval::EvalState* pose = rigMode ? m_session.evaluation() : nullptr;
-    viewport::Scene scene = viewport::makeScene(m_session.document(), m_session.rig(), {s.instance, s.joint, s.joints, s.node, s.nodes},
-                                                pose, &m_session.templates());
+    const bool cvMode = !rigMode && m_session.isCvMode();
+    viewport::Scene scene = viewport::makeScene(m_session.document(), m_session.rig(),
+                                                {s.instance, s.joint, s.joints, s.node, s.nodes, cvMode, s.cvs}, pose,
+                                                &m_session.templates());
     scene.reference = m_session.referenceTriangles();
     m_viewport->setScene(std::move(scene));
     const auto* rig = m_session.rig();
     const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();
     if (rigMode) {
         m_viewport->setGizmoTarget(hasNode ? s.node : model::kNoNode, hasNode ? pose->worldMatrix(s.node) : glm::dmat4(1.0));
+    } else if (cvMode) {
+        const auto frame = m_session.cvFrame(); // no gizmo until CVs are picked
+        m_viewport->setGizmoTarget(frame ? s.node : model::kNoNode, frame.value_or(glm::dmat4(1.0)));
     } else if (const auto frame = s.node != model::kNoNode ? m_session.shapeFrame(s.node) : std::nullopt) {
         m_viewport->setGizmoTarget(s.node, *frame); // the selected controller's shape
     } else {

@@ -19,6 +19,18 @@ PickResult pick(const Scene& scene, const Camera& camera, double width, double h
     const glm::dmat4 viewProjection = camera.projectionMatrix(width / height) * camera.viewMatrix();
     PickResult best;
     best.distancePixels = std::numeric_limits<double>::max();
+    for (const auto& cv : scene.cvs) {
+        glm::dvec2 p;
+        if (!projectToPixels(viewProjection, cv.position, width, height, p))
+            continue;
+        const double d = glm::length(p - cursor);
+        if (d <= jointRadius && d < best.distancePixels) {
+            best = {PickResult::Kind::Cv, model::kNoId, model::kNoId, cv.cv.node, d};
+            best.cv = cv.cv;
+        }
+    }
+    if (best.kind != PickResult::Kind::Nothing)
+        return best;
     if (scene.showGuides)
         for (const auto& j : scene.guideJoints) {
             glm::dvec2 p;
@@ -63,6 +75,16 @@ struct PixelBox {
 };
 
 } // namespace
+
+std::vector<model::CurveCv> boxPickCvs(const Scene& scene, const Camera& camera, double width, double height,
+                                       glm::dvec2 cornerA, glm::dvec2 cornerB)
+{
+    const PixelBox box(camera, width, height, cornerA, cornerB);
+    std::vector<model::CurveCv> out;
+    for (const auto& cv : scene.cvs)
+        if (box.contains(cv.position)) out.push_back(cv.cv);
+    return out;
+}
 
 std::vector<model::JointId> boxPickJoints(const Scene& scene, const Camera& camera, double width, double height,
                                           glm::dvec2 cornerA, glm::dvec2 cornerB)

@@ -24,6 +24,10 @@ bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi)
     hi = glm::dvec3(-1e300);
     bool any = false;
     auto add = [&](const glm::dvec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); any = true; };
+    for (const auto& cv : scene.cvs)
+        if (cv.selected) add(cv.position);
+    if (any) // CV mode frames the selected CVs
+        return true;
     if (scene.showGuides)
         for (const auto& j : scene.guideJoints) if (j.selected) add(j.position);
     for (const auto& c : scene.curves)
@@ -32,6 +36,8 @@ bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi)
 }
 
 namespace {
+
+const glm::dvec3 kHullColor{0.55, 0.3, 0.6}; // Maya draws hulls and CVs in violet
 
 std::vector<SceneJoint> mirroredGuides(const model::GuideDocument& guide, const templates::TemplateRegistry& templates)
 {
@@ -59,6 +65,32 @@ std::vector<SceneJoint> mirroredGuides(const model::GuideDocument& guide, const 
         }
     }
     return out;
+}
+
+bool showsCvs(const SceneSelection& selection, model::RigNodeIndex node)
+{
+    return selection.cvMode &&
+           (node == selection.node || std::find(selection.nodes.begin(), selection.nodes.end(), node) != selection.nodes.end());
+}
+
+// A controller's CVs and hulls (CV mode), in world space.
+void addCvs(Scene& scene, const model::RigNode& node, model::RigNodeIndex index, const std::vector<model::CurveCv>& selected)
+{
+    for (std::size_t k = 0; k < node.curves.size(); ++k) {
+        const model::ControllerCurve& curve = node.curves[k];
+        SceneCurve hull;
+        hull.node = index;
+        hull.color = kHullColor;
+        for (std::size_t i = 0; i < curve.cvs.size(); ++i) {
+            SceneCv cv{{index, int(k), int(i)}, glm::dvec3(node.worldMatrix * glm::dvec4(curve.cvs[i], 1.0)), false};
+            cv.selected = std::find(selected.begin(), selected.end(), cv.cv) != selected.end();
+            hull.points.push_back(cv.position);
+            scene.cvs.push_back(cv);
+        }
+        if (curve.periodic && !hull.points.empty())
+            hull.points.push_back(hull.points.front());
+        scene.hulls.push_back(std::move(hull));
+    }
 }
 
 } // namespace
@@ -106,6 +138,8 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                     c.points.push_back(glm::dvec3(nodeWorld * glm::dvec4(p, 1.0)));
                 scene.curves.push_back(std::move(c));
             }
+        if (showsCvs(selection, i) && !posed)
+            addCvs(scene, node, i, selection.cvs);
         if (node.kind == model::RigNodeKind::Joint && !node.hidden && node.domain() == "skin") {
             SceneJoint j;
             j.owner = node.owner;

@@ -28,12 +28,21 @@ struct SceneCurve {
     bool selected = false;
 };
 
+// CV mode: a control point of a selected controller's shape.
+struct SceneCv {
+    model::CurveCv cv;
+    glm::dvec3 position{0.0}; // world
+    bool selected = false;
+};
+
 struct SceneSelection {
     model::InstanceId instance = model::kNoId;
     model::JointId joint = model::kNoId;
     std::vector<model::JointId> joints;     // every selected guide joint (guide mode), `joint` among them
     model::RigNodeIndex node = model::kNoNode;
     std::vector<model::RigNodeIndex> nodes; // every selected controller (rig mode)
+    bool cvMode = false;                    // guide mode: show the selected controllers' CVs
+    std::vector<model::CurveCv> cvs;        // the selected CVs
 };
 
 struct Scene {
@@ -44,6 +53,8 @@ struct Scene {
     // authored guide, drawn dimmer, not pickable; they follow every edit.
     std::vector<SceneJoint> mirrorJoints;
     std::vector<glm::vec3> reference;     // a see-through reference model, triangles
+    std::vector<SceneCv> cvs;             // CV mode: pickable control points
+    std::vector<SceneCurve> hulls;        // CV mode: the hulls joining them
     std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo)
     bool showGuides = true;
 

@@ -210,6 +210,8 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
         if (m_rigMode) {
             const auto nodes = boxPick(m_scene, m_camera, width(), height(), a, b);
             emit controllersBoxSelected(QList<quint32>(nodes.begin(), nodes.end()), add);
+        } else if (!m_scene.cvs.empty()) {
+            emit cvsSelected(boxPickCvs(m_scene, m_camera, width(), height(), a, b), add);
         } else {
             const auto joints = boxPickJoints(m_scene, m_camera, width(), height(), a, b);
             emit guideJointsBoxSelected(QList<quint32>(joints.begin(), joints.end()), add);
@@ -217,7 +219,9 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
     } else if (event->button() == Qt::LeftButton && !m_dragged) {
         const PickResult hit = pick(m_scene, m_camera, width(), height(),
                                     glm::dvec2(event->position().x(), event->position().y()));
-        if (hit.kind == PickResult::Kind::GuideJoint)
+        if (hit.kind == PickResult::Kind::Cv)
+            emit cvsSelected({hit.cv}, add);
+        else if (hit.kind == PickResult::Kind::GuideJoint)
             emit guideJointPicked(hit.joint, hit.owner, add);
         else if (hit.kind == PickResult::Kind::Controller)
             emit controllerPicked(hit.node, add);

@@ -2,11 +2,12 @@
 // The Qt host of the Renderer: a QOpenGLWidget with an orbit camera, as in
 // Maya: Alt+left drag orbits, middle drag (or Alt+middle) pans, the wheel (or
 // Alt+right drag) zooms, a left click picks (Shift adds), a left drag on empty
-// space box-selects (guide joints in Guide mode, controllers in Rig mode), F
+// space box-selects (guide joints in Guide mode, the shown CVs in CV mode,
+// controllers in Rig mode), F
 // frames the selection and A frames all; 1 / 3 / 7 turn to the front, side and
 // top orthographic views and 5 (or 0) back to perspective, as Blender's keypad.
 // W/E/R pick the gizmo (translate, rotate, scale) whose handles drag the
-// target the app sets (a guide joint or a controller). In Rig mode the arrow
+// target the app sets (a guide joint, a shape, CVs or a controller). In Rig mode the arrow
 // keys pickwalk and M walks to the mirror twin. Knows nothing about the
 // widgets library or the app; it reports picks, walks and drags as signals
 // carrying core ids and world matrices.
@@ -58,6 +59,8 @@ signals:
     void guideJointPicked(quint32 joint, quint32 owner, bool add);
     void guideJointsBoxSelected(const QList<quint32>& joints, bool add);
     void controllerPicked(quint32 node, bool add);
+    // CV mode: a click on a CV (one, add toggles) or a box around several.
+    void cvsSelected(const std::vector<rs::model::CurveCv>& cvs, bool add);
     void controllersBoxSelected(const QList<quint32>& nodes, bool add);
     void nothingPicked();
     void pickwalkRequested(int direction); // an rs::eval::WalkDirection

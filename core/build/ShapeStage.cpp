@@ -267,8 +267,7 @@ void cloneCurves(RigAssembly& a, const PendingClone& c)
     node.shape = from.shape;
     node.curves = from.curves;
     for (auto& curve : node.curves) {
-        for (Vec3& p : curve.points)
-            p = Vec3(toLocal * Vec4(p, 1.0)) * c.spec->size;
+        curve.transform(glm::scale(Mat4(1.0), Vec3(c.spec->size)) * toLocal);
         if (color) curve.color = *color;
     }
 }
@@ -309,9 +308,9 @@ void mirrorBranchShapes(RigAssembly& a)
             const model::RigNode& from = a.rig.nodes[*source];
             node.shape = from.shape;
             node.curves = from.curves;
+            node.shapeFromTwin = true;
             for (auto& curve : node.curves) {
-                for (Vec3& p : curve.points)
-                    p = m * p;
+                curve.transform(Mat4(m));
                 if (copy.flip) {
                     const auto c = templates::shiftHue({curve.color.x, curve.color.y, curve.color.z}, 120.0);
                     curve.color = Vec3(c.r, c.g, c.b);
@@ -322,7 +321,8 @@ void mirrorBranchShapes(RigAssembly& a)
 }
 
 // The rigger's shape edits (an instance's `shapes`), in the controller's space,
-// before the mirrored branches copy their twins' curves.
+// before the mirrored branches copy their twins' curves: moved CVs (the curve
+// sampled again), then the whole shape's transform.
 void applyShapeEdits(RigAssembly& a, const std::map<std::string, const InstanceRecord*>& records)
 {
     for (auto& node : a.rig.nodes) {
@@ -335,10 +335,22 @@ void applyShapeEdits(RigAssembly& a, const std::map<std::string, const InstanceR
         const auto edit = edits.find(tagOf(node));
         if (edit == edits.end())
             continue;
-        const Mat4 m = edit->second.matrix();
-        for (auto& curve : node.curves)
-            for (Vec3& p : curve.points)
-                p = Vec3(m * Vec4(p, 1.0));
+        for (const auto& [at, offset] : edit->second.cvs) {
+            const auto [curve, cv] = at;
+            if (curve < 0 || std::size_t(curve) >= node.curves.size() || cv < 0 ||
+                std::size_t(cv) >= node.curves[curve].cvs.size()) {
+                a.report(Severity::Warning, record->second->instance,
+                         "shapes." + edit->first + ": the shape has no CV " + std::to_string(cv) + " on curve " +
+                             std::to_string(curve) + " (the edit is ignored; was the shape changed?)");
+                continue;
+            }
+            node.curves[curve].cvs[cv] += offset;
+        }
+        for (auto& curve : node.curves) {
+            if (!edit->second.cvs.empty())
+                curve.resample();
+            curve.transform(edit->second.transform.matrix());
+        }
     }
 }
 
@@ -394,6 +406,10 @@ void applyShapes(RigAssembly& a)
             out.points.reserve(polylines.curves[k].size());
             for (const Vec3& p : polylines.curves[k])
                 out.points.push_back(Vec3(toController * Vec4(p * scale, 1.0)));
+            for (const Vec3& p : shape->curves[k].points)
+                out.cvs.push_back(Vec3(toController * Vec4(p * scale, 1.0)));
+            out.degree = shape->curves[k].degree;
+            out.periodic = shape->curves[k].periodic;
             const templates::Color c = shape->curves[k].color.value_or(color);
             out.color = Vec3(c.r, c.g, c.b);
             node.curves.push_back(std::move(out));

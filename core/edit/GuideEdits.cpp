@@ -3,6 +3,7 @@
 #include "edit/GuideMove.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <map>
 
@@ -279,12 +280,17 @@ Error setNameOverride(History& history, InstanceId id, const std::string& token,
                             fallback ? std::nullopt : std::optional<std::string>(name), "Name " + token);
 }
 
-Error setShapeEdit(History& history, InstanceId id, const std::string& tag, const Transform& edit)
+Error setShapeEdit(History& history, InstanceId id, const std::string& tag, const model::ShapeEdit& edit,
+                   const std::string& what)
 {
     if (tag.empty())
         return "a shape edit needs the controller's tag";
+    for (const auto& [at, offset] : edit.cvs)
+        if (at.first < 0 || at.second < 0 || !std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(offset.z))
+            return "a CV offset needs indices from 0 and a finite offset";
     return setInstanceEntry(history, id, &TemplateInstance::shapes, tag,
-                            edit == Transform{} ? std::nullopt : std::optional<Transform>(edit), "Edit shape " + tag);
+                            edit.isIdentity() ? std::nullopt : std::optional<model::ShapeEdit>(edit),
+                            what.empty() ? "Edit shape " + tag : what);
 }
 
 Error replaceInstance(History& history, TemplateInstance instance, const std::string& what)

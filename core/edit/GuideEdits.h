@@ -37,8 +37,9 @@ Error setNameOverride(History& history, model::InstanceId id, const std::string&
                       const std::string& defaultName);
 
 // A controller shape's edit (`tag` as "ctrls.ik") in the controller's space;
-// the identity removes the edit. One undo step.
-Error setShapeEdit(History& history, model::InstanceId id, const std::string& tag, const Transform& edit);
+// the identity removes the edit. One undo step named `what` ("Edit shape <tag>" when empty).
+Error setShapeEdit(History& history, model::InstanceId id, const std::string& tag, const model::ShapeEdit& edit,
+                   const std::string& what = {});
 
 // Replaces an instance (same id) as one undo step named `what`: used when its
 // guide joints are regenerated. Refused when a child instance hangs under a

@@ -39,21 +39,54 @@ void readPose(YamlReader& r, const YAML::Node& node, model::PoseValues& pose)
     }
 }
 
-// shapes: {ctrls.ik: {t: [x, y, z], r: [...], s: [...]}}: a controller shape's edit.
-std::optional<Transform> readShapeEdit(YamlReader& r, const YAML::Node& node, const std::string& tag)
+// One moved CV of a shape edit: {curve: 0, cv: 3, offset: [x, y, z]}.
+bool readCvOffset(YamlReader& r, const YAML::Node& node, const std::string& what, model::ShapeEdit& edit)
+{
+    if (!r.expectMap(node, what + " CV"))
+        return false;
+    std::optional<std::int64_t> curve, cv;
+    std::optional<Vec3> offset;
+    for (const auto& kv : node) {
+        const std::string key = kv.first.Scalar();
+        if (key == "curve") curve = r.integer(kv.second, what + " CV 'curve'");
+        else if (key == "cv") cv = r.integer(kv.second, what + " CV 'cv'");
+        else if (key == "offset") offset = r.vec3(kv.second, what + " CV 'offset'");
+        else r.warning(kv.first, "unknown key '" + key + "' in a CV of the " + what);
+    }
+    if (!curve || !cv || !offset || *curve < 0 || *cv < 0) {
+        r.error(node, what + ": a CV needs curve and cv (indices from 0) and an offset [x, y, z]");
+        return false;
+    }
+    if (!edit.cvs.emplace(std::pair{int(*curve), int(*cv)}, *offset).second) {
+        r.error(node, what + ": CV " + std::to_string(*cv) + " of curve " + std::to_string(*curve) + " is given twice");
+        return false;
+    }
+    return true;
+}
+
+// shapes: {ctrls.ik: {t: [x, y, z], r: [...], s: [...], cvs: [{curve, cv, offset}...]}}: a controller shape's edit.
+std::optional<model::ShapeEdit> readShapeEdit(YamlReader& r, const YAML::Node& node, const std::string& tag)
 {
     const std::string what = "shape edit of '" + tag + "'";
     if (!r.expectMap(node, what))
         return std::nullopt;
-    Transform t;
+    model::ShapeEdit edit;
+    Transform& t = edit.transform;
     for (const auto& kv : node) {
         const std::string key = kv.first.Scalar();
+        if (key == "cvs") {
+            if (!r.expectSequence(kv.second, what + " 'cvs'"))
+                return std::nullopt;
+            for (const auto& cv : kv.second)
+                if (!readCvOffset(r, cv, what, edit)) return std::nullopt;
+            continue;
+        }
         Vec3* target = key == "t" ? &t.translate : key == "r" ? &t.rotateDegrees : key == "s" ? &t.scale : nullptr;
         if (!target) { r.warning(kv.first, "unknown key '" + key + "' in the " + what); continue; }
         if (auto x = r.vec3(kv.second, what + " '" + key + "'")) *target = *x;
         else return std::nullopt;
     }
-    return t;
+    return edit;
 }
 
 void readJoint(YamlReader& r, const YAML::Node& node, TemplateInstance& instance, bool& ok)
@@ -188,6 +221,30 @@ void readNaming(YamlReader& r, const YAML::Node& node, model::NamingRules& rules
     }
 }
 
+// An edit without moved CVs on one line; with them, a line per CV (diffable).
+void writeShapeEdit(std::ostream& out, const std::string& tag, const model::ShapeEdit& edit)
+{
+    const Transform& t = edit.transform;
+    std::vector<std::string> fields{"t: " + vec3Text(t.translate)};
+    if (t.rotateDegrees != Vec3(0.0))
+        fields.push_back("r: " + vec3Text(t.rotateDegrees));
+    if (t.scale != Vec3(1.0))
+        fields.push_back("s: " + vec3Text(t.scale));
+    out << "      " << quoteIfNeeded(tag) << ":";
+    if (edit.cvs.empty()) {
+        for (std::size_t k = 0; k < fields.size(); ++k)
+            out << (k ? ", " : " {") << fields[k];
+        out << "}\n";
+        return;
+    }
+    out << "\n";
+    for (const std::string& field : fields)
+        out << "        " << field << "\n";
+    out << "        cvs:\n";
+    for (const auto& [at, offset] : edit.cvs)
+        out << "          - {curve: " << at.first << ", cv: " << at.second << ", offset: " << vec3Text(offset) << "}\n";
+}
+
 } // namespace
 
 Result<GuideDocument> readGuideText(const std::string& text, const std::string& displayName)
@@ -284,14 +341,8 @@ std::string writeGuideText(const GuideDocument& doc)
         }
         if (!i.shapes.empty()) {
             out << "    shapes:\n";
-            for (const auto& [tag, t] : i.shapes) {
-                out << "      " << quoteIfNeeded(tag) << ": {t: " << vec3Text(t.translate);
-                if (t.rotateDegrees != Vec3(0.0))
-                    out << ", r: " << vec3Text(t.rotateDegrees);
-                if (t.scale != Vec3(1.0))
-                    out << ", s: " << vec3Text(t.scale);
-                out << "}\n";
-            }
+            for (const auto& [tag, edit] : i.shapes)
+                writeShapeEdit(out, tag, edit);
         }
         out << "    joints:\n";
         for (const GuideJoint& j : i.joints) {

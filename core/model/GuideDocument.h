@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rs::model {
@@ -39,6 +40,17 @@ struct GuideJoint {
     bool operator==(const GuideJoint&) const = default;
 };
 
+// A rigger's edit of one controller's shape: control points (CVs) moved one
+// by one, then the whole shape moved, turned and scaled, both in the
+// controller's space: final CV = transform * (CV as the template places it + offset).
+struct ShapeEdit {
+    Transform transform;
+    std::map<std::pair<int, int>, Vec3> cvs; // (curve index, CV index) -> offset
+
+    bool isIdentity() const { return transform == Transform{} && cvs.empty(); }
+    bool operator==(const ShapeEdit&) const = default;
+};
+
 struct TemplateInstance {
     InstanceId id = kNoId;
     std::string templateId;          // "core.joints"
@@ -48,9 +60,8 @@ struct TemplateInstance {
     std::map<std::string, Value> options; // only values that differ from the defaults
     std::map<std::string, std::string> structure; // per-instance structure overrides: tag -> address
     std::map<std::string, std::string> names;     // per-instance name overrides: token -> name
-    // The rigger's edits of controller shapes: controller tag ("ctrls.ik") ->
-    // a transform of the shape in the controller's space (moved, turned, scaled).
-    std::map<std::string, Transform> shapes;
+    // The rigger's edits of controller shapes, by controller tag ("ctrls.ik").
+    std::map<std::string, ShapeEdit> shapes;
     std::vector<GuideJoint> joints;  // joints[0] is the root; parents come before children
 
     const GuideJoint* joint(JointId id) const;

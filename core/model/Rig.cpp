@@ -1,8 +1,24 @@
 #include "model/Rig.h"
 
+#include "base/Nurbs.h"
+
 #include <algorithm>
 
 namespace rs::model {
+
+void ControllerCurve::transform(const Mat4& m)
+{
+    for (Vec3& p : points)
+        p = Vec3(m * Vec4(p, 1.0));
+    for (Vec3& p : cvs)
+        p = Vec3(m * Vec4(p, 1.0));
+}
+
+void ControllerCurve::resample()
+{
+    if (!cvs.empty())
+        points = evaluateNurbs(cvs, degree, periodic);
+}
 
 const char* kindName(RigNodeKind kind)
 {

@@ -9,6 +9,7 @@
 #include "model/GuideDocument.h"
 
 #include <array>
+#include <compare>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -24,10 +25,28 @@ constexpr RigNodeIndex kNoNode = std::numeric_limits<RigNodeIndex>::max();
 enum class RigNodeKind { Group, Controller, Joint };
 const char* kindName(RigNodeKind kind);
 
-// One drawn curve of a controller, as a polyline in the controller's local space.
+// One drawn curve of a controller, in the controller's local space: the
+// B-spline's control points (CVs, degree, closed or not) and the polyline
+// sampled from them (rs::evaluateNurbs) that views draw.
 struct ControllerCurve {
     std::vector<Vec3> points;
     Vec3 color{1.0, 1.0, 0.0}; // sRGB, [0, 1]
+    std::vector<Vec3> cvs;
+    int degree = 1;
+    bool periodic = false;
+
+    // Moves the CVs and the polyline by an affine map (which maps the curve
+    // exactly); resample() samples the polyline again after CVs moved.
+    void transform(const Mat4& m);
+    void resample();
+};
+
+// One control point of a built controller's curve: what CV mode selects.
+struct CurveCv {
+    RigNodeIndex node = kNoNode;
+    int curve = 0;
+    int cv = 0;
+    auto operator<=>(const CurveCv&) const = default;
 };
 
 // An animatable custom attribute of a node: `ik_blend` on a limb's switch
@@ -94,6 +113,9 @@ struct RigNode {
     // matrices are exact reflections), kNoNode on centre nodes.
     RigNodeIndex twin = kNoNode;
     int mirrorPlane = -1;              // reflection plane with the twin: 0 x, 1 y, 2 z; -1 none
+    // The curves are the twin's reflected (a mirrored branch copy): shape
+    // edits are made on the twin and this side follows.
+    bool shapeFromTwin = false;
 
     const RigAttribute* attribute(const std::string& attributeName) const;
 

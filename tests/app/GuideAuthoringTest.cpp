@@ -164,7 +164,7 @@ TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)
 
     const auto* arm = w.session().document().instanceNamed("arm");
     ASSERT_EQ(arm->shapes.count("ctrls.ik"), 1u);
-    EXPECT_GT(arm->shapes.at("ctrls.ik").translate.y + arm->shapes.at("ctrls.ik").translate.z, 0.0) << "moved up in the world";
+    EXPECT_GT(arm->shapes.at("ctrls.ik").transform.translate.y + arm->shapes.at("ctrls.ik").transform.translate.z, 0.0) << "moved up in the world";
     EXPECT_EQ(w.session().history().size(), 1u);
     EXPECT_EQ(w.session().history().undoText(), "Edit shape ctrls.ik of arm");
     EXPECT_FALSE(w.session().isRigStale()) << "rebuilt at once";

@@ -173,7 +173,7 @@ TEST(GuideMove, AShapeEditMovesTheControllersCurvesOnBothSidesAndIsSaved)
     Transform edit;
     edit.translate = Vec3(0.0, 0.1, 0.0);
     edit.scale = Vec3(2.0);
-    ASSERT_FALSE(edit::setShapeEdit(history, arm, "ctrls.ik", edit));
+    ASSERT_FALSE(edit::setShapeEdit(history, arm, "ctrls.ik", {edit, {}}));
     EXPECT_EQ(history.undoText(), "Edit shape ctrls.ik of arm");
     const model::Rig after = build::buildRig(doc, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(after.diagnostics)) << formatAll(after.diagnostics);

@@ -61,6 +61,8 @@ GLuint compile(GLenum type, const char* source, std::string& error)
 
 const glm::dvec3 kGuideColor(0.95, 0.55, 0.2);
 const glm::dvec3 kSelectedColor(1.0, 1.0, 1.0);
+const glm::dvec3 kCvColor(0.85, 0.45, 1.0);         // CV mode, as Maya's violet CVs
+const glm::dvec3 kSelectedCvColor(1.0, 0.95, 0.2);
 const glm::dvec3 kSkinColor(0.3, 0.9, 0.9);
 const glm::dvec3 kReferenceColor(0.55, 0.6, 0.7);
 
@@ -183,6 +185,15 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
             push(curves, c.points[i], color);
         }
 
+    std::vector<Vertex> hulls, cvPoints;
+    for (const auto& h : scene.hulls)
+        for (std::size_t i = 1; i < h.points.size(); ++i) {
+            push(hulls, h.points[i - 1], h.color);
+            push(hulls, h.points[i], h.color);
+        }
+    for (const auto& cv : scene.cvs)
+        push(cvPoints, cv.position, cv.selected ? kSelectedCvColor : kCvColor);
+
     glUseProgram(m_gl->program);
     const glm::mat4 viewProjection(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
     glUniformMatrix4fv(m_gl->viewProjection, 1, GL_FALSE, &viewProjection[0][0]);
@@ -216,6 +227,8 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     draw(skinPoints, GL_POINTS, 6.0f);
     draw(mirrorPoints, GL_POINTS, 7.0f);
     draw(guidePoints, GL_POINTS, 10.0f);
+    draw(hulls, GL_LINES, 1.0f);
+    draw(cvPoints, GL_POINTS, 8.0f);
     std::vector<Vertex> overlay;
     for (const auto& c : scene.overlay)
         for (std::size_t i = 1; i < c.points.size(); ++i) {
