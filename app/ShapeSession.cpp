@@ -123,12 +123,17 @@ void EditorSession::selectCvs(const std::vector<model::CurveCv>& cvs, bool add)
         s.joint = model::kNoId;
         s.joints.clear();
     }
+    // With Shift, picking CVs that are all selected already deselects them (a
+    // click toggles, as Maya's Shift); otherwise they are added.
+    const bool toggle = !cvs.empty() && std::all_of(cvs.begin(), cvs.end(), [&](const model::CurveCv& cv) {
+        return cv.node != node || std::find(s.cvs.begin(), s.cvs.end(), cv) != s.cvs.end();
+    });
     for (const model::CurveCv& cv : cvs) {
         if (cv.node != node)
             continue;
         const auto it = std::find(s.cvs.begin(), s.cvs.end(), cv);
-        if (add && cvs.size() == 1 && it != s.cvs.end())
-            s.cvs.erase(it); // Shift+click toggles
+        if (add && toggle && it != s.cvs.end())
+            s.cvs.erase(it);
         else if (it == s.cvs.end())
             s.cvs.push_back(cv);
     }

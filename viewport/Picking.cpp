@@ -25,8 +25,7 @@ PickResult pick(const Scene& scene, const Camera& camera, double width, double h
             continue;
         const double d = glm::length(p - cursor);
         if (d <= jointRadius && d < best.distancePixels) {
-            best = {PickResult::Kind::Cv, model::kNoId, model::kNoId, cv.cv.node, d};
-            best.cv = cv.cv;
+            best = {PickResult::Kind::Cv, model::kNoId, model::kNoId, cv.cv.node, d, cv.cv};
         }
     }
     if (best.kind != PickResult::Kind::Nothing)
@@ -38,7 +37,7 @@ PickResult pick(const Scene& scene, const Camera& camera, double width, double h
                 continue;
             const double d = glm::length(p - cursor);
             if (d <= jointRadius && d < best.distancePixels)
-                best = {PickResult::Kind::GuideJoint, j.id, j.owner, model::kNoNode, d};
+                best = {PickResult::Kind::GuideJoint, j.id, j.owner, model::kNoNode, d, {}};
         }
     if (best.kind != PickResult::Kind::Nothing)
         return best;
@@ -50,7 +49,7 @@ PickResult pick(const Scene& scene, const Camera& camera, double width, double h
                 continue;
             const double d = distanceToSegment(cursor, a, b);
             if (d <= curveRadius && d < best.distancePixels)
-                best = {PickResult::Kind::Controller, model::kNoId, model::kNoId, c.node, d};
+                best = {PickResult::Kind::Controller, model::kNoId, model::kNoId, c.node, d, {}};
         }
     if (best.kind == PickResult::Kind::Nothing)
         best.distancePixels = 0.0;
@@ -83,6 +82,17 @@ std::vector<model::CurveCv> boxPickCvs(const Scene& scene, const Camera& camera,
     std::vector<model::CurveCv> out;
     for (const auto& cv : scene.cvs)
         if (box.contains(cv.position)) out.push_back(cv.cv);
+    return out;
+}
+
+std::vector<model::CurveCv> coincidentCvs(const Scene& scene, const model::CurveCv& cv)
+{
+    const auto hit = std::find_if(scene.cvs.begin(), scene.cvs.end(), [&](const SceneCv& c) { return c.cv == cv; });
+    if (hit == scene.cvs.end())
+        return {cv};
+    std::vector<model::CurveCv> out;
+    for (const auto& c : scene.cvs)
+        if (c.cv.node == cv.node && glm::length(c.position - hit->position) < 1e-6) out.push_back(c.cv);
     return out;
 }
 

@@ -30,6 +30,10 @@ std::vector<model::RigNodeIndex> boxPick(const Scene& scene, const Camera& camer
 std::vector<model::CurveCv> boxPickCvs(const Scene& scene, const Camera& camera, double width, double height,
                                        glm::dvec2 cornerA, glm::dvec2 cornerB);
 
+// The CV and every shown CV of the same controller at its place (a cube's
+// corner is several CVs of one polyline): a click picks them together.
+std::vector<model::CurveCv> coincidentCvs(const Scene& scene, const model::CurveCv& cv);
+
 // Guide joints inside the pixel rectangle, in scene order.
 std::vector<model::JointId> boxPickJoints(const Scene& scene, const Camera& camera, double width, double height,
                                           glm::dvec2 cornerA, glm::dvec2 cornerB);

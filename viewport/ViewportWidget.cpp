@@ -106,6 +106,12 @@ void ViewportWidget::setGizmoMode(GizmoMode mode)
     update();
 }
 
+void ViewportWidget::setSelectTool(bool on)
+{
+    m_selectTool = on;
+    update();
+}
+
 void ViewportWidget::setGizmoWorldSpace(bool world)
 {
     m_gizmo.worldSpace = world;
@@ -114,7 +120,7 @@ void ViewportWidget::setGizmoWorldSpace(bool world)
 
 std::optional<Gizmo> ViewportWidget::gizmo() const
 {
-    if (m_gizmoTarget == model::kNoNode)
+    if (m_gizmoTarget == model::kNoNode || m_selectTool)
         return std::nullopt;
     Gizmo g = m_gizmo;
     g.size = Gizmo::sizeFor(m_camera, g.origin(), height());
@@ -220,7 +226,7 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
         const PickResult hit = pick(m_scene, m_camera, width(), height(),
                                     glm::dvec2(event->position().x(), event->position().y()));
         if (hit.kind == PickResult::Kind::Cv)
-            emit cvsSelected({hit.cv}, add);
+            emit cvsSelected(coincidentCvs(m_scene, hit.cv), add);
         else if (hit.kind == PickResult::Kind::GuideJoint)
             emit guideJointPicked(hit.joint, hit.owner, add);
         else if (hit.kind == PickResult::Kind::Controller)
@@ -268,8 +274,13 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
     for (const auto& [key, mode] : gizmoKeys)
         if (event->key() == key && event->modifiers() == Qt::NoModifier) {
             setGizmoMode(mode);
+            setSelectTool(false);
             return;
         }
+    if (event->key() == Qt::Key_Q && event->modifiers() == Qt::NoModifier) {
+        setSelectTool(true);
+        return;
+    }
     if (m_rigMode) {
         using eval::WalkDirection;
         const std::pair<int, WalkDirection> walkKeys[] = {{Qt::Key_Up, WalkDirection::Up},     {Qt::Key_Down, WalkDirection::Down},

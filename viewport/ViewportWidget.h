@@ -6,7 +6,7 @@
 // controllers in Rig mode), F
 // frames the selection and A frames all; 1 / 3 / 7 turn to the front, side and
 // top orthographic views and 5 (or 0) back to perspective, as Blender's keypad.
-// W/E/R pick the gizmo (translate, rotate, scale) whose handles drag the
+// W/E/R pick the gizmo (translate, rotate, scale; Q hides it) whose handles drag the
 // target the app sets (a guide joint, a shape, CVs or a controller). In Rig mode the arrow
 // keys pickwalk and M walks to the mirror twin. Knows nothing about the
 // widgets library or the app; it reports picks, walks and drags as signals
@@ -52,6 +52,10 @@ public:
     void setGizmoMode(GizmoMode mode);
     GizmoMode gizmoMode() const { return m_gizmo.mode; }
     void setGizmoWorldSpace(bool world);
+    // Maya's select tool (Q): no gizmo, so clicks near the selection pick
+    // rather than grab a handle; W/E/R bring the gizmo back.
+    void setSelectTool(bool on);
+    bool isSelectTool() const { return m_selectTool; }
     // The gizmo as drawn (size for the current camera); nullopt when hidden.
     std::optional<Gizmo> gizmo() const;
 
@@ -95,6 +99,7 @@ private:
     Gizmo m_gizmo;
     quint32 m_gizmoTarget = model::kNoNode;
     std::optional<GizmoDrag> m_gizmoDrag;
+    bool m_selectTool = false;
     int m_activeHandle = -1;
     QRubberBand* m_rubberBand = nullptr;
 };

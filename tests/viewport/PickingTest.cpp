@@ -60,3 +60,39 @@ TEST(Picking, MissesEmptySpace)
     Fixture f;
     EXPECT_EQ(pick(f.scene, f.camera, 800, 600, {5, 5}).kind, PickResult::Kind::Nothing);
 }
+
+TEST(Picking, CvModeShowsTheSelectedControllersCvsAndPicksThemFirst)
+{
+    Fixture f;
+    const auto node = *f.rig.find("arm.L::ctrls.ik");
+    SceneSelection selection;
+    selection.node = node;
+    selection.nodes = {node};
+    selection.cvs = {{node, 0, 0}};
+    EXPECT_TRUE(makeScene(f.guide, &f.rig, selection).cvs.empty()) << "CVs only in CV mode";
+    selection.cvMode = true;
+    f.scene = makeScene(f.guide, &f.rig, selection);
+    const auto& curves = f.rig.nodes[node].curves;
+    std::size_t count = 0;
+    for (const auto& c : curves) count += c.cvs.size();
+    ASSERT_EQ(f.scene.cvs.size(), count) << "every CV of the selected controller, no other";
+    EXPECT_EQ(f.scene.hulls.size(), curves.size());
+    EXPECT_TRUE(f.scene.cvs[0].selected);
+    EXPECT_FALSE(f.scene.cvs[1].selected);
+
+    // A click near a CV picks it; the CVs sharing its place come with it.
+    const SceneCv& third = f.scene.cvs[2];
+    const PickResult hit = pick(f.scene, f.camera, 800, 600, f.pixelOf(third.position) + glm::dvec2(2, 1));
+    ASSERT_EQ(hit.kind, PickResult::Kind::Cv);
+    EXPECT_LT(glm::length(f.scene.cvs[hit.cv.cv].position - third.position), 1e-9);
+    const auto together = coincidentCvs(f.scene, hit.cv);
+    for (const auto& cv : f.scene.cvs) {
+        const bool samePlace = glm::length(cv.position - third.position) < 1e-6;
+        EXPECT_EQ(std::find(together.begin(), together.end(), cv.cv) != together.end(), samePlace) << cv.cv.cv;
+    }
+    // A box around the whole control holds every CV; a box elsewhere none.
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const auto& cv : f.scene.cvs) { lo = glm::min(lo, f.pixelOf(cv.position)); hi = glm::max(hi, f.pixelOf(cv.position)); }
+    EXPECT_EQ(boxPickCvs(f.scene, f.camera, 800, 600, lo - 2.0, hi + 2.0).size(), count);
+    EXPECT_TRUE(boxPickCvs(f.scene, f.camera, 800, 600, {0, 0}, {4, 4}).empty());
+}

@@ -191,8 +191,9 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
             push(hulls, h.points[i - 1], h.color);
             push(hulls, h.points[i], h.color);
         }
-    for (const auto& cv : scene.cvs)
-        push(cvPoints, cv.position, cv.selected ? kSelectedCvColor : kCvColor);
+    for (bool selected : {false, true}) // selected on top of unselected CVs at the same place
+        for (const auto& cv : scene.cvs)
+            if (cv.selected == selected) push(cvPoints, cv.position, selected ? kSelectedCvColor : kCvColor);
 
     glUseProgram(m_gl->program);
     const glm::mat4 viewProjection(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
