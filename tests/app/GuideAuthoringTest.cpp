@@ -176,3 +176,27 @@ TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)
     w.action("undo")->trigger();
     EXPECT_TRUE(w.session().document() == original);
 }
+
+TEST(GuideAuthoring, TheGizmoOnAMirroredCopysShapeEditsTheAuthoredSideReflected)
+{
+    Editor editor;
+    app::MainWindow& w = editor.window;
+    w.buildRig();
+    w.session().setMode(app::EditorMode::Guide);
+    auto worldPoint = [&](const std::string& id) {
+        const model::RigNode& n = w.session().rig()->nodes[*w.session().rig()->find(id)];
+        return Vec3(n.worldMatrix * Vec4(n.curves.front().points[0], 1.0));
+    };
+    const Vec3 left0 = worldPoint("arm.L::ctrls.ik"), right0 = worldPoint("arm.R::ctrls.ik");
+    w.session().selectControllers({*w.session().rig()->find("arm.R::ctrls.ik")}, false);
+    viewport::ViewportWidget* view = w.viewportWidget();
+    QTest::keyClick(view, Qt::Key_W);
+    view->setGizmoWorldSpace(true);
+    ASSERT_TRUE(dragGizmoHandle(view, 0)) << "world X on the right side";
+    EXPECT_EQ(w.session().history().undoText(), "Edit shape ctrls.ik of arm");
+    const Vec3 left1 = worldPoint("arm.L::ctrls.ik"), right1 = worldPoint("arm.R::ctrls.ik");
+    const Vec3 moved = right1 - right0;
+    EXPECT_GT(std::abs(moved.x), 0.01);
+    EXPECT_LT(std::abs(moved.y) + std::abs(moved.z), 1e-6) << "the dragged shape moved along world X only";
+    EXPECT_LT(glm::length((left1 - left0) - Vec3(-moved.x, moved.y, moved.z)), 1e-6) << "the authored side moved mirrored";
+}
