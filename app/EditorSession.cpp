@@ -167,9 +167,9 @@ QString EditorSession::addTemplate(const QString& templateId, model::JointId hoo
     return {};
 }
 
-QString EditorSession::removeInstance(model::InstanceId id)
+QString EditorSession::removeInstances(const std::vector<model::InstanceId>& ids)
 {
-    return messageOf(edit::removeInstance(m_history, id));
+    return messageOf(edit::removeInstances(m_history, ids));
 }
 
 QString EditorSession::renameInstance(model::InstanceId id, const QString& name)

@@ -91,7 +91,8 @@ public:
     // Adds a template instance hanging under `hookJoint` (kNoId: top level) and
     // selects it. Returns an error message, empty on success.
     QString addTemplate(const QString& templateId, model::JointId hookJoint);
-    QString removeInstance(model::InstanceId id);
+    // The instances with everything below them, one undo step.
+    QString removeInstances(const std::vector<model::InstanceId>& ids);
     QString renameInstance(model::InstanceId id, const QString& name);
     // One option of an instance, one undo step; a guide parameter (`guides`)
     // regenerates the instance's guide joints, keeping those that still exist.

@@ -120,8 +120,8 @@ void MainWindow::connectDocument()
     connect(m_outliner, &widgets::OutlinerView::addTemplateRequested, this, [this](const QString& id, quint32 joint) {
         logError(m_session.addTemplate(id, joint));
     });
-    connect(m_outliner, &widgets::OutlinerView::removeRequested, this, [this](quint32 id) {
-        logError(m_session.removeInstance(id));
+    connect(m_outliner, &widgets::OutlinerView::removeRequested, this, [this](const QList<quint32>& ids) {
+        logError(m_session.removeInstances({ids.begin(), ids.end()}));
     });
     connect(m_outliner, &widgets::OutlinerView::renameRequested, this, [this](quint32 id, const QString& name) {
         if (const QString error = m_session.renameInstance(id, name); !error.isEmpty()) {

@@ -275,8 +275,8 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
     QAction* remove = menu->addAction(tr("Delete"));
     remove->setObjectName("delete");
     connect(remove, &QAction::triggered, this, [this, id] {
-        for (model::InstanceId each : actedOn(id))
-            emit removeRequested(each);
+        const auto ids = actedOn(id);
+        emit removeRequested(QList<quint32>(ids.begin(), ids.end()));
     });
     return menu;
 }
@@ -284,8 +284,8 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
 void OutlinerView::keyPressEvent(QKeyEvent* event)
 {
     if (event->key() == Qt::Key_Delete && !selectedInstances().empty()) {
-        for (model::InstanceId id : topSelectedInstances())
-            emit removeRequested(id);
+        const auto ids = topSelectedInstances();
+        emit removeRequested(QList<quint32>(ids.begin(), ids.end()));
         return;
     }
     // Pickwalk, as in the viewport: Up parent, Down first child, Left/Right siblings.

@@ -38,7 +38,7 @@ public:
 signals:
     void instanceSelected(quint32 instance);
     void addTemplateRequested(const QString& templateId, quint32 hookJoint);
-    void removeRequested(quint32 instance);
+    void removeRequested(const QList<quint32>& instances); // one undo step
     void duplicateRequested(const QList<quint32>& instances);
     // Drag and drop: hang `instance` under `hookJoint` (0: top level).
     void reparentRequested(quint32 instance, quint32 hookJoint);

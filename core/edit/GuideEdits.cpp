@@ -26,16 +26,20 @@ private:
     TemplateInstance m_instance;
 };
 
-class RemoveInstance final : public Command {
+class RemoveInstances final : public Command {
 public:
-    RemoveInstance(InstanceId id, std::string name) : m_id(id), m_name(std::move(name)) {}
-    std::string text() const override { return "Remove '" + m_name + "'"; }
+    RemoveInstances(std::vector<InstanceId> ids, std::string what) : m_ids(std::move(ids)), m_what(std::move(what)) {}
+    std::string text() const override { return m_what; }
     void redo(GuideDocument& d) override
     {
         m_removed.clear();
-        for (InstanceId id : d.subtree(m_id)) {
-            const std::size_t index = *d.indexOf(id);
-            m_removed.emplace_back(index, d.takeInstance(id));
+        for (InstanceId top : m_ids) {
+            if (!d.instance(top))
+                continue; // already gone below another removed instance
+            for (InstanceId id : d.subtree(top)) {
+                const std::size_t index = *d.indexOf(id);
+                m_removed.emplace_back(index, d.takeInstance(id));
+            }
         }
     }
     void undo(GuideDocument& d) override
@@ -47,8 +51,8 @@ public:
     }
 
 private:
-    InstanceId m_id;
-    std::string m_name;
+    std::vector<InstanceId> m_ids;
+    std::string m_what;
     std::vector<std::pair<std::size_t, TemplateInstance>> m_removed;
 };
 
@@ -191,12 +195,18 @@ Error addInstance(History& history, TemplateInstance instance)
     return std::nullopt;
 }
 
-Error removeInstance(History& history, InstanceId id)
+Error removeInstance(History& history, InstanceId id) { return removeInstances(history, {id}); }
+
+Error removeInstances(History& history, const std::vector<InstanceId>& ids)
 {
-    const TemplateInstance* instance = history.document().instance(id);
-    if (!instance)
-        return "no instance with id " + std::to_string(id);
-    history.push(std::make_unique<RemoveInstance>(id, instance->name));
+    if (ids.empty())
+        return "no instance to remove";
+    for (InstanceId id : ids)
+        if (!history.document().instance(id))
+            return "no instance with id " + std::to_string(id);
+    const std::string what = ids.size() == 1 ? "Remove '" + history.document().instance(ids.front())->name + "'"
+                                             : "Remove " + std::to_string(ids.size()) + " templates";
+    history.push(std::make_unique<RemoveInstances>(ids, what));
     return std::nullopt;
 }
 

@@ -15,6 +15,8 @@ using Error = std::optional<std::string>; // nullopt on success
 Error addInstance(History& history, model::TemplateInstance instance);
 // Removes the instance and everything hanging below it.
 Error removeInstance(History& history, model::InstanceId id);
+// Removes several instances (each with everything below it) as one undo step.
+Error removeInstances(History& history, const std::vector<model::InstanceId>& ids);
 Error renameInstance(History& history, model::InstanceId id, const std::string& newName);
 // Copies the instances (each with everything hanging below it) in place, with
 // new ids and free names ("arm" -> "arm1"), as one undo step. `copies` gets the

@@ -116,6 +116,10 @@ TEST(Outliner, SeveralInstancesAreDuplicatedReHungAndDeletedTogether)
     QTest::keyClick(outliner, Qt::Key_Delete);
     EXPECT_EQ(doc.instanceNamed("index1"), nullptr);
     EXPECT_EQ(doc.instanceNamed("ring1"), nullptr);
+    EXPECT_EQ(w.session().history().undoText(), "Remove 2 templates") << "one undo step";
+    w.session().history().undo();
+    EXPECT_NE(doc.instanceNamed("index1"), nullptr);
+    EXPECT_NE(doc.instanceNamed("ring1"), nullptr);
 
     while (w.session().history().canUndo())
         w.session().history().undo();

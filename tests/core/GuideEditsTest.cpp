@@ -38,6 +38,30 @@ TEST(GuideEdits, EveryEditUndoesBackToTheOriginalDocument)
     EXPECT_EQ(doc.instances().size(), 1u);
 }
 
+TEST(GuideEdits, RemovingSeveralInstancesIsOneUndoStepEvenWhenOneHangsBelowAnother)
+{
+    model::GuideDocument doc = test::loadSample("biped");
+    const model::GuideDocument original = doc;
+    edit::History history(doc);
+    // The arm and its thumb (below it) and the leg, in the order a rigger clicked them.
+    const std::vector<model::InstanceId> ids{doc.instanceNamed("thumb")->id, doc.instanceNamed("arm")->id,
+                                             doc.instanceNamed("leg")->id};
+    const std::size_t armSubtree = doc.subtree(doc.instanceNamed("arm")->id).size();
+    ASSERT_FALSE(edit::removeInstances(history, ids));
+    EXPECT_EQ(history.size(), 1u);
+    EXPECT_EQ(history.undoText(), "Remove 3 templates");
+    EXPECT_EQ(doc.instances().size(), original.instances().size() - armSubtree - 1);
+    EXPECT_EQ(doc.instanceNamed("arm"), nullptr);
+    EXPECT_EQ(doc.instanceNamed("leg"), nullptr);
+    history.undo();
+    EXPECT_EQ(doc, original) << "every instance back at its place";
+    history.redo();
+    EXPECT_EQ(doc.instanceNamed("thumb"), nullptr);
+    EXPECT_EQ(edit::removeInstances(history, {}), "no instance to remove");
+    EXPECT_EQ(edit::removeInstances(history, {ids[2]}), "no instance with id " + std::to_string(ids[2]));
+    EXPECT_EQ(history.size(), 1u);
+}
+
 TEST(GuideEdits, RefusedEditsChangeNothing)
 {
     model::GuideDocument doc = test::loadSample("biped");
