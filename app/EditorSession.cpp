@@ -115,7 +115,10 @@ double EditorSession::build()
         for (const auto& cv : m_selection.cvs)
             selectedCvs.emplace_back(m_rig->nodes[cv.node].id, cv);
     }
-    m_rig = build::buildRig(m_document, *m_templates);
+    m_rig = build::buildRig(m_document, *m_templates, build::BuilderRegistry::builtin(),
+                            [this](double fraction, const std::string& stage) {
+                                emit buildProgressed(fraction, QString::fromStdString(stage));
+                            });
     compileRig();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     m_rigStale = false;

@@ -173,6 +173,8 @@ signals:
     void modeChanged();
     void poseChanged();
     void guidePreviewed(); // a guide drag moved joints (no history yet)
+    // During build(): the fraction done and the stage (build::BuildProgress).
+    void buildProgressed(double fraction, const QString& stage);
     void referenceChanged();
 
 private:

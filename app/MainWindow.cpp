@@ -17,6 +17,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
+#include <QProgressBar>
 #include <QMessageBox>
 #include <QStatusBar>
 
@@ -95,6 +96,14 @@ void MainWindow::createDocks()
 
     m_status = new QLabel(this);
     statusBar()->addPermanentWidget(m_status);
+    m_buildProgress = new QProgressBar(this);
+    m_buildProgress->setObjectName("buildProgress");
+    m_buildProgress->setRange(0, 1000);
+    m_buildProgress->setMaximumWidth(200);
+    m_buildProgress->setTextVisible(false);
+    m_buildProgress->hide();
+    statusBar()->addPermanentWidget(m_buildProgress);
+    connect(&m_session, &EditorSession::buildProgressed, this, &MainWindow::showBuildProgress);
     resize(1400, 900);
 }
 
@@ -314,10 +323,23 @@ widgets::ExportDialog* MainWindow::exportDialog()
     return m_exportDialog;
 }
 
+void MainWindow::showBuildProgress(double fraction, const QString& stage)
+{
+    // The build is synchronous: paint the bar and message now (no event loop
+    // runs until it ends), at most every 50 ms so small rigs lose no time.
+    const bool done = fraction >= 1.0;
+    m_buildProgress->setVisible(!done);
+    m_buildProgress->setValue(int(fraction * 1000.0));
+    if (done || (m_buildPainted.isValid() && m_buildPainted.elapsed() < 50))
+        return;
+    statusBar()->showMessage(tr("Building: %1...").arg(stage));
+    statusBar()->repaint();
+    m_buildPainted.start();
+}
+
 void MainWindow::buildRig()
 {
-    statusBar()->showMessage(tr("Building..."));
-    statusBar()->repaint(); // shown before the (synchronous) build runs
+    m_buildPainted.invalidate();
     const double ms = m_session.build();
     const auto* rig = m_session.rig();
     m_log->addMessage(tr("Built %1 nodes in %2 ms").arg(rig->nodes.size()).arg(ms, 0, 'f', 2),

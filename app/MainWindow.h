@@ -3,6 +3,7 @@
 // wires the session (core) to the views; it holds no rigging logic itself.
 #include "EditorSession.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 
 #include <functional>
@@ -10,6 +11,7 @@
 class QAction;
 class QDockWidget;
 class QLabel;
+class QProgressBar;
 
 namespace rs::viewport { class ViewportWidget; }
 namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; }
@@ -55,6 +57,7 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    void showBuildProgress(double fraction, const QString& stage);
     void createActions();   // Actions.cpp
     void createPoseActions(); // Actions.cpp: Guide/Rig mode, pose tools, gizmo space
     void createViewActions(); // ViewActions.cpp: camera views, framing, guide authoring tools
@@ -83,6 +86,8 @@ private:
     widgets::HistoryView* m_historyView = nullptr;
     widgets::TemplateLibrary* m_library = nullptr;
     QLabel* m_status = nullptr;
+    QProgressBar* m_buildProgress = nullptr;
+    QElapsedTimer m_buildPainted; // when the build's progress was last painted
 };
 
 } // namespace rs::app

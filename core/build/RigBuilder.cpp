@@ -224,6 +224,14 @@ std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& m
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders)
 {
+    return buildRig(guide, templates, builders, {});
+}
+
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders, const BuildProgress& progress)
+{
+    auto report = [&](double fraction, const std::string& stage) { if (progress) progress(fraction, stage); };
+    report(0.0, "gather");
     Diagnostics branchDiagnostics;
     const ExpandedGuide expanded = expandBranches(guide, templates, branchDiagnostics);
     RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}, {}};
@@ -263,7 +271,9 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 
     // Stage 2: generate, root to leaf. A failing instance is rolled back whole.
     std::vector<std::pair<InstanceRecord, const TemplateBuilder*>> built;
-    for (auto& [record, builder] : plan) {
+    for (std::size_t step = 0; step < plan.size(); ++step) {
+        auto& [record, builder] = plan[step];
+        report(0.1 + 0.6 * double(step) / double(plan.size()), "generate " + record.instance->name);
         BuildContext ctx(a, *record.manifest, *record.instance, record.options);
         ctx.setHookNode(record.instance->parentJoint != model::kNoId ? a.physicalHookFor(record.instance->parentJoint) : 0);
         const std::size_t nodesBefore = a.rig.nodes.size();
@@ -286,6 +296,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     }
 
     // Stage 3: configure, root to leaf, now that every node exists.
+    report(0.7, "configure");
     for (auto& [record, builder] : built) {
         BuildContext ctx(a, *record.manifest, *record.instance, record.options);
         const std::size_t constraintsBefore = a.rig.constraints.size();
@@ -295,6 +306,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     }
 
     // Stage 4: finalize. Orphans, shapes, virtual hierarchy, matrices, plugins.
+    report(0.85, "finalize");
     for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
         if (a.rig.nodes[i].parent == kNoNode)
             a.rig.nodes[i].parent = 0;
@@ -303,6 +315,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     computeLocalMatrices(a.rig);
     for (const auto& plugin : builtinPlugins())
         plugin->finalize(a);
+    report(1.0, "done");
     return std::move(a.rig);
 }
 

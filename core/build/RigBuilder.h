@@ -9,6 +9,7 @@
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -17,6 +18,12 @@ namespace rs::build {
 
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders = BuilderRegistry::builtin());
+
+// Told how far a build is: the fraction done (0 to 1, never going back) and
+// the stage ("gather", "generate arm.L", "configure", "finalize", "done").
+using BuildProgress = std::function<void(double fraction, const std::string& stage)>;
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders, const BuildProgress& progress);
 
 // Defaults of `guides` and `opts` with the instance's overrides, coerced to the
 // manifest types (an int given for a float is accepted). Mismatches are reported

@@ -14,6 +14,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QDockWidget>
+#include <QProgressBar>
 #include <QMenu>
 #include <QStatusBar>
 
@@ -81,8 +82,18 @@ TEST(Scenario, FromSampleToSavedRigAndBackToTheStart)
     EXPECT_GT(translationOf(session.document().jointWorldMatrix(tip)).y - tipBefore.y, 0.005);
     EXPECT_EQ(session.history().size(), 3u) << "add, option, drag: one step each";
 
-    // 5. Build: Rig mode with the new finger's controls.
+    // 5. Build: Rig mode with the new finger's controls; a progress bar in the status bar while it runs.
+    auto* progress = w.findChild<QProgressBar*>("buildProgress");
+    ASSERT_NE(progress, nullptr);
+    std::vector<int> shown;
+    const auto watch = QObject::connect(&session, &app::EditorSession::buildProgressed, progress, [&](double fraction) {
+        if (fraction < 1.0 && progress->isVisible()) shown.push_back(progress->value());
+    }, Qt::DirectConnection);
     w.action("build")->trigger();
+    QObject::disconnect(watch);
+    EXPECT_GT(shown.size(), 5u) << "the bar was shown and moved on";
+    EXPECT_TRUE(std::is_sorted(shown.begin(), shown.end()));
+    EXPECT_FALSE(progress->isVisible()) << "hidden when the build is done";
     const model::Rig* rig = session.rig();
     ASSERT_NE(rig, nullptr);
     EXPECT_FALSE(hasErrors(rig->diagnostics)) << formatAll(rig->diagnostics);

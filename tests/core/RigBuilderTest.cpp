@@ -68,6 +68,26 @@ TEST(RigBuilder, TheSkinHierarchyHasOneRoot)
     EXPECT_EQ(skeleton->joints.front().name, "sk_world_root");
 }
 
+TEST(RigBuilder, ReportsProgressThroughEveryStageAndEachInstance)
+{
+    const model::GuideDocument guide = test::loadSample("biped");
+    std::vector<std::pair<double, std::string>> steps;
+    const model::Rig rig = build::buildRig(guide, test::builtinTemplates(), build::BuilderRegistry::builtin(),
+                                           [&](double fraction, const std::string& stage) { steps.emplace_back(fraction, stage); });
+    ASSERT_FALSE(steps.empty());
+    EXPECT_EQ(steps.front(), (std::pair<double, std::string>{0.0, "gather"}));
+    EXPECT_EQ(steps.back(), (std::pair<double, std::string>{1.0, "done"}));
+    for (std::size_t i = 1; i < steps.size(); ++i)
+        EXPECT_GE(steps[i].first, steps[i - 1].first) << steps[i].second << " never goes back";
+    std::size_t generated = 0;
+    for (const auto& [fraction, stage] : steps)
+        generated += stage.rfind("generate ", 0) == 0;
+    EXPECT_GT(generated, guide.instances().size()) << "each built instance, mirrored branches included";
+    EXPECT_NE(std::find_if(steps.begin(), steps.end(), [](const auto& s) { return s.second == "generate arm.R"; }), steps.end());
+    EXPECT_EQ(io::writeRigDump(rig), io::writeRigDump(build::buildRig(guide, test::builtinTemplates())))
+        << "watching changes nothing";
+}
+
 TEST(RigBuilder, SkipsAnUnknownTemplateAndAttachesItsChildrenAbove)
 {
     model::GuideDocument guide = test::loadChains();
