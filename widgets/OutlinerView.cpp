@@ -103,9 +103,10 @@ void OutlinerView::refresh(const model::GuideDocument& document, const templates
                 return other.joint == point.joint && other.label != "default";
             });
             const bool indexed = point.label.find('[') != std::string::npos; // one of a chain's joints
-            if (manifest->hooks.empty() || hooks.count(point.joint) || (point.label == "default" && named) ||
-                (indexed && !used.count(point.joint)))
-                continue; // named hooks once each, chain joints when used (the menu offers every hook)
+            const bool unused = !used.count(point.joint);
+            if (manifest->hooks.empty() || hooks.count(point.joint) || (point.label == "default" && (named || unused)) ||
+                (indexed && unused))
+                continue; // named hooks once each, default and chain hooks when used (the menu offers every hook)
             auto* hookItem = new QStandardItem(hookIcon, QString::fromStdString(point.label));
             hookItem->setData(instance.id, kInstanceRole);
             hookItem->setData(point.joint, kHookRole);
