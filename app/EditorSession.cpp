@@ -44,6 +44,7 @@ EditorSession::EditorSession(QObject* parent) : QObject(parent)
             m_selection = {};
         if (m_rigStale && differsOnlyInShapes(m_document, m_builtFrom))
             build(); // a shape edit (or its undo) shows at once, on both sides of mirrored branches
+        syncReference();
         emit documentChanged();
         poseFromDocument();
     });

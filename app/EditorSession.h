@@ -140,7 +140,10 @@ public:
     // Duplicates the instances (with what hangs below them) and selects the copies.
     QString duplicateInstances(const std::vector<model::InstanceId>& ids);
     QString reparentInstance(model::InstanceId id, model::JointId hookJoint);
-    // A reference model (FBX, OBJ, glTF...) shown see-through for placing guides; empty path clears it.
+    // A reference model (FBX, OBJ, glTF...) shown see-through for placing
+    // guides; empty path clears it. The guide keeps its path (one undo step),
+    // so reopening the guide shows it again. A file that fails to load is
+    // reported and changes nothing.
     bool loadReference(const QString& path, Diagnostics& diagnostics);
     const std::vector<glm::vec3>& referenceTriangles() const { return m_reference; }
 
@@ -209,6 +212,9 @@ private:
     std::vector<edit::JointTransform> m_guideDragLast;
     edit::GuideDragOptions m_guideDragOptions;
     std::vector<glm::vec3> m_reference;
+    std::string m_referencePath; // what m_reference shows
+    // Shows the document's reference model when it changed (open, undo, redo).
+    void syncReference();
     struct ShapeDrag {
         model::RigNodeIndex node;
         model::InstanceId instance;

@@ -7,6 +7,7 @@
 #include "io/ReferenceModel.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <utility>
 
 namespace rs::app {
@@ -96,20 +97,48 @@ QString EditorSession::reparentInstance(model::InstanceId id, model::JointId hoo
     return messageOf(edit::reparentInstance(m_history, id, hookJoint));
 }
 
+namespace {
+
+std::optional<std::vector<glm::vec3>> readReference(const std::string& path, Diagnostics& diagnostics)
+{
+    auto model = io::loadReferenceModel(path);
+    diagnostics = model.diagnostics();
+    return model ? std::optional(model.take().triangles) : std::nullopt;
+}
+
+} // namespace
+
 bool EditorSession::loadReference(const QString& path, Diagnostics& diagnostics)
 {
-    if (path.isEmpty()) {
-        m_reference.clear();
-        emit referenceChanged();
-        return true;
-    }
-    auto model = io::loadReferenceModel(path.toStdString());
-    diagnostics = model.diagnostics();
-    if (!model)
-        return false;
-    m_reference = model.take().triangles;
+    if (path.isEmpty())
+        return !edit::setReferenceModel(m_history, {}); // the listener clears the view
+    const std::string absolute = std::filesystem::absolute(path.toStdString()).lexically_normal().string();
+    auto triangles = readReference(absolute, diagnostics);
+    if (!triangles)
+        return false; // the shown model and the document stay
+    m_reference = std::move(*triangles);
+    m_referencePath = absolute;
     emit referenceChanged();
-    return true;
+    return !edit::setReferenceModel(m_history, absolute);
+}
+
+void EditorSession::syncReference()
+{
+    if (m_document.referenceModel == m_referencePath)
+        return;
+    m_referencePath = m_document.referenceModel;
+    m_reference.clear();
+    if (!m_referencePath.empty()) {
+        Diagnostics diagnostics;
+        if (auto triangles = readReference(m_referencePath, diagnostics))
+            m_reference = std::move(*triangles);
+        else
+            diagnostics.insert(diagnostics.begin(), makeError({m_referencePath, 0, 0},
+                                                              "the guide's reference model could not be loaded (the guide keeps its path)"));
+        if (!diagnostics.empty())
+            emit diagnosticsReported(diagnostics);
+    }
+    emit referenceChanged();
 }
 
 } // namespace rs::app

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cctype>
+#include <filesystem>
 #include <map>
 
 namespace rs::edit {
@@ -68,16 +69,19 @@ private:
     std::string m_from, m_to;
 };
 
-class SetPose final : public Command {
+// One document-wide field (the test pose, the reference model) set to a new value.
+template <class T>
+class SetDocumentField final : public Command {
 public:
-    SetPose(model::PoseValues from, model::PoseValues to, std::string what)
-        : m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what)) {}
+    SetDocumentField(T GuideDocument::*field, T from, T to, std::string what)
+        : m_field(field), m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what)) {}
     std::string text() const override { return m_what; }
-    void redo(GuideDocument& d) override { d.pose = m_to; }
-    void undo(GuideDocument& d) override { d.pose = m_from; }
+    void redo(GuideDocument& d) override { d.*m_field = m_to; }
+    void undo(GuideDocument& d) override { d.*m_field = m_from; }
 
 private:
-    model::PoseValues m_from, m_to;
+    T GuideDocument::*m_field;
+    T m_from, m_to;
     std::string m_what;
 };
 
@@ -325,7 +329,19 @@ Error setPose(History& history, model::PoseValues pose, const std::string& what)
 {
     if (pose == history.document().pose)
         return "the pose did not change";
-    history.push(std::make_unique<SetPose>(history.document().pose, std::move(pose), what));
+    history.push(std::make_unique<SetDocumentField<model::PoseValues>>(&GuideDocument::pose, history.document().pose,
+                                                                       std::move(pose), what));
+    return std::nullopt;
+}
+
+Error setReferenceModel(History& history, const std::string& path)
+{
+    const std::string& current = history.document().referenceModel;
+    if (path == current)
+        return std::nullopt;
+    const std::string what = path.empty() ? "Clear reference model"
+                                          : "Reference model " + std::filesystem::path(path).filename().string();
+    history.push(std::make_unique<SetDocumentField<std::string>>(&GuideDocument::referenceModel, current, path, what));
     return std::nullopt;
 }
 

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
@@ -16,6 +17,7 @@ namespace rs::io {
 using model::GuideDocument;
 using model::GuideJoint;
 using model::TemplateInstance;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -44,21 +46,21 @@ bool readCvOffset(YamlReader& r, const YAML::Node& node, const std::string& what
 {
     if (!r.expectMap(node, what + " CV"))
         return false;
-    std::optional<std::int64_t> curve, cv;
+    std::int64_t curve = -1, cv = -1; // -1: missing or not an integer
     std::optional<Vec3> offset;
     for (const auto& kv : node) {
         const std::string key = kv.first.Scalar();
-        if (key == "curve") curve = r.integer(kv.second, what + " CV 'curve'");
-        else if (key == "cv") cv = r.integer(kv.second, what + " CV 'cv'");
+        if (key == "curve") curve = r.integer(kv.second, what + " CV 'curve'").value_or(-1);
+        else if (key == "cv") cv = r.integer(kv.second, what + " CV 'cv'").value_or(-1);
         else if (key == "offset") offset = r.vec3(kv.second, what + " CV 'offset'");
         else r.warning(kv.first, "unknown key '" + key + "' in a CV of the " + what);
     }
-    if (!curve || !cv || !offset || *curve < 0 || *cv < 0) {
+    if (!offset || curve < 0 || cv < 0) {
         r.error(node, what + ": a CV needs curve and cv (indices from 0) and an offset [x, y, z]");
         return false;
     }
-    if (!edit.cvs.emplace(std::pair{int(*curve), int(*cv)}, *offset).second) {
-        r.error(node, what + ": CV " + std::to_string(*cv) + " of curve " + std::to_string(*curve) + " is given twice");
+    if (!edit.cvs.emplace(std::pair{int(curve), int(cv)}, *offset).second) {
+        r.error(node, what + ": CV " + std::to_string(cv) + " of curve " + std::to_string(curve) + " is given twice");
         return false;
     }
     return true;
@@ -271,6 +273,7 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
         if (key == "name") { if (auto s = r.string(kv.second, "name")) doc.name = *s; }
         else if (key == "naming") readNaming(r, kv.second, doc.naming);
         else if (key == "pose") readPose(r, kv.second, doc.pose);
+        else if (key == "reference_model") { if (auto s = r.string(kv.second, "reference_model")) doc.referenceModel = *s; }
         else if (key == "instances") {
             if (kv.second.IsNull()) continue;
             if (!r.expectSequence(kv.second, "instances")) continue;
@@ -290,10 +293,18 @@ Result<GuideDocument> readGuideFile(const std::string& path)
     auto text = readTextFile(path);
     if (!text)
         return Result<GuideDocument>::failure(makeError({path, 0, 0}, "cannot open file"));
-    return readGuideText(*text, path);
+    auto doc = readGuideText(*text, path);
+    if (doc && !doc->referenceModel.empty()) { // relative to the guide file
+        const fs::path reference(doc->referenceModel);
+        if (reference.is_relative())
+            doc->referenceModel = (fs::absolute(path).parent_path() / reference).lexically_normal().string();
+    }
+    return doc;
 }
 
-std::string writeGuideText(const GuideDocument& doc)
+std::string writeGuideText(const GuideDocument& doc) { return writeGuideText(doc, {}); }
+
+std::string writeGuideText(const GuideDocument& doc, const std::string& directory)
 {
     std::ostringstream out;
     out << "# Rigsmith guide: template instances and their guide joints (metres, degrees).\n";
@@ -311,6 +322,12 @@ std::string writeGuideText(const GuideDocument& doc)
                 << ", side: " << quoteIfNeeded(n.side) << ", suffixes: " << (n.suffixes ? "on" : "off")
                 << ", lowercase: " << (n.lowercase ? "on" : "off") << "}\n";
         }
+    }
+    if (!doc.referenceModel.empty()) {
+        std::string reference = doc.referenceModel;
+        if (!directory.empty() && fs::path(reference).is_absolute()) // kept relative so the guide and model move together
+            reference = fs::path(reference).lexically_relative(fs::absolute(directory)).string();
+        out << "reference_model: " << quoteIfNeeded(reference.empty() ? doc.referenceModel : reference) << "\n";
     }
     out << "instances:" << (doc.instances().empty() ? " []\n" : "\n");
     for (const TemplateInstance& i : doc.instances()) {
@@ -404,7 +421,7 @@ Diagnostics writeFileAtomically(const std::string& path, const std::string& byte
 
 Diagnostics saveGuideFile(const GuideDocument& document, const std::string& path)
 {
-    return writeFileAtomically(path, writeGuideText(document));
+    return writeFileAtomically(path, writeGuideText(document, fs::absolute(path).parent_path().string()));
 }
 
 } // namespace rs::io

@@ -9,9 +9,12 @@
 
 namespace rs::io {
 
+// A relative `reference_model` is resolved against the file's folder.
 Result<model::GuideDocument> readGuideFile(const std::string& path);
 Result<model::GuideDocument> readGuideText(const std::string& text, const std::string& displayName);
 std::string writeGuideText(const model::GuideDocument& document);
+// With `directory` (where the file goes) the reference model's path is written relative to it.
+std::string writeGuideText(const model::GuideDocument& document, const std::string& directory);
 
 // Atomic: writes a temporary file next to `path`, flushes it, then renames it over
 // `path`, so a crash or a full disk never damages the previous file.

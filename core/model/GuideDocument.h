@@ -101,6 +101,9 @@ public:
     std::string name;                // asset name
     NamingRules naming;              // how rig nodes are named (preset "mikan" unless the file says)
     PoseValues pose;                 // edited through rs::edit::SetPose
+    // A model shown see-through while placing guides (display only, not built).
+    // An absolute path in memory; the guide file keeps it relative to itself.
+    std::string referenceModel;
     bool operator==(const GuideDocument&) const = default;
 
 private:

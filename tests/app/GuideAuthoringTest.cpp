@@ -10,6 +10,7 @@
 #include <QApplication>
 
 #include <fstream>
+#include <iterator>
 #include <glm/gtc/matrix_transform.hpp>
 
 using namespace rs;
@@ -138,8 +139,27 @@ TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
     EXPECT_GT(w.log()->count(), messages);
     EXPECT_TRUE(w.log()->item(w.log()->count() - 1)->text().contains("broken.obj"));
     EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u) << "the shown model stays";
+    EXPECT_EQ(w.session().document().referenceModel, request.path) << "and the guide keeps the good one";
+
+    // The guide remembers its reference model (relative to the guide file): reopened, it shows again.
+    EXPECT_EQ(w.session().history().undoText(), "Reference model reference.glb");
+    const QString saved = QString::fromStdString(outputPath("with-reference.yml"));
+    Diagnostics diagnostics;
+    ASSERT_TRUE(w.session().save(saved, diagnostics)) << formatAll(diagnostics);
+    std::ifstream in(saved.toStdString());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\nreference_model: reference.glb\n"), std::string::npos) << text;
+    {
+        Editor second;
+        ASSERT_TRUE(second.window.openFile(saved));
+        EXPECT_EQ(second.window.viewportWidget()->scene().reference.size(), w.viewportWidget()->scene().reference.size());
+    }
+
     w.action("clearReference")->trigger();
     EXPECT_TRUE(w.viewportWidget()->scene().reference.empty());
+    EXPECT_TRUE(w.session().document().referenceModel.empty());
+    w.action("undo")->trigger();
+    EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u) << "undoing the clear shows it again";
 }
 
 TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)

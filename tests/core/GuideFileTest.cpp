@@ -1,10 +1,12 @@
 #include "core/TestSupport.h"
+#include "edit/GuideEdits.h"
 #include "io/GuideFile.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 using namespace rs;
 
@@ -98,4 +100,33 @@ TEST(GuideFile, KeepsNamingRulesAndRejectsAnUnknownPreset)
     auto bad = io::readGuideText("rigsmith_guide: 1\nnaming: maya\ninstances: []\n", "g.yml");
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.diagnostics()[0].format(), "g.yml:2:9: error: unknown naming preset 'maya' (known: mikan, suffix)");
+}
+
+TEST(GuideFile, KeepsTheReferenceModelRelativeToTheGuideAndUndoesItsChange)
+{
+    const auto dir = std::filesystem::temp_directory_path() / "rigsmith-guidefile-reference";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "guides");
+    model::GuideDocument doc = test::loadSample("biped");
+    const model::GuideDocument original = doc;
+    edit::History history(doc);
+    const std::string model = (dir / "scans" / "actor.fbx").string();
+    ASSERT_FALSE(edit::setReferenceModel(history, model));
+    EXPECT_EQ(history.undoText(), "Reference model actor.fbx");
+    EXPECT_FALSE(edit::setReferenceModel(history, model));
+    EXPECT_EQ(history.size(), 1u) << "no step when nothing changes";
+
+    const std::string path = (dir / "guides" / "hero.yml").string();
+    ASSERT_TRUE(io::saveGuideFile(doc, path).empty());
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\nreference_model: \"../scans/actor.fbx\"\n"), std::string::npos) << text;
+    auto read = io::readGuideFile(path);
+    ASSERT_TRUE(read) << formatAll(read.diagnostics());
+    EXPECT_EQ(read->referenceModel, model) << "absolute again in memory";
+    EXPECT_TRUE(*read == doc);
+
+    history.undo();
+    EXPECT_TRUE(doc == original);
+    EXPECT_EQ(io::writeGuideText(doc).find("reference_model"), std::string::npos);
 }
