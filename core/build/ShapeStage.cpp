@@ -333,8 +333,9 @@ void applyShapeEdits(RigAssembly& a, const std::map<std::string, const InstanceR
             continue;
         const auto& edits = record->second->instance->shapes;
         const auto edit = edits.find(tagOf(node));
-        if (edit == edits.end())
-            continue;
+        if (edit == edits.end() || a.copyOf(record->second->instance->id).mirror != Mat4(1.0))
+            continue; // a mirrored branch copy takes its twin's edited curves afterwards
+        std::vector<bool> moved(node.curves.size(), false);
         for (const auto& [at, offset] : edit->second.cvs) {
             const auto [curve, cv] = at;
             if (curve < 0 || std::size_t(curve) >= node.curves.size() || cv < 0 ||
@@ -345,11 +346,12 @@ void applyShapeEdits(RigAssembly& a, const std::map<std::string, const InstanceR
                 continue;
             }
             node.curves[curve].cvs[cv] += offset;
+            moved[curve] = true;
         }
-        for (auto& curve : node.curves) {
-            if (!edit->second.cvs.empty())
-                curve.resample();
-            curve.transform(edit->second.transform.matrix());
+        for (std::size_t k = 0; k < node.curves.size(); ++k) {
+            if (moved[k])
+                node.curves[k].resample();
+            node.curves[k].transform(edit->second.transform.matrix());
         }
     }
 }
