@@ -232,6 +232,8 @@ private:
         std::map<model::RigNodeIndex, std::vector<model::ControllerCurve>> original; // the previewed nodes' curves
     };
     std::optional<CvDragState> m_cvDrag;
+    // A drag of the selected CVs (CV mode, a current rig); nullopt otherwise.
+    std::optional<edit::CvDrag> selectedCvDrag() const;
 
     void previewJoints(const std::vector<edit::JointTransform>& transforms);
 };

@@ -140,20 +140,26 @@ void EditorSession::selectCvs(const std::vector<model::CurveCv>& cvs, bool add)
     select(s);
 }
 
-std::optional<Mat4> EditorSession::cvFrame() const
+std::optional<edit::CvDrag> EditorSession::selectedCvDrag() const
 {
     if (!m_cvMode || m_selection.cvs.empty() || !m_rig || m_rigStale)
         return std::nullopt;
     auto drag = edit::CvDrag::begin(m_document, *m_rig, m_selection.cvs);
-    return drag ? std::optional<Mat4>(drag->frame()) : std::nullopt;
+    return drag ? std::optional(drag.take()) : std::nullopt;
+}
+
+std::optional<Mat4> EditorSession::cvFrame() const
+{
+    const auto drag = selectedCvDrag();
+    return drag ? std::optional(drag->frame()) : std::nullopt;
 }
 
 void EditorSession::beginCvDrag()
 {
-    if (!cvFrame())
+    auto drag = selectedCvDrag();
+    if (!drag)
         return;
-    auto drag = edit::CvDrag::begin(m_document, *m_rig, m_selection.cvs);
-    m_cvDrag.emplace(CvDragState{drag.take(), Mat4(1.0), {}});
+    m_cvDrag.emplace(CvDragState{std::move(*drag), Mat4(1.0), {}});
     for (const auto& [node, curves] : m_cvDrag->drag.previewFor(Mat4(1.0)))
         m_cvDrag->original[node] = m_rig->nodes[node].curves;
 }
