@@ -1,6 +1,6 @@
 #include "EditorSession.h"
 
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "edit/GuideEdits.h"
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
@@ -116,7 +116,7 @@ double EditorSession::build()
         for (const auto& cv : m_selection.cvs)
             selectedCvs.emplace_back(m_rig->nodes[cv.node].id, cv);
     }
-    m_rig = build::buildRig(m_document, *m_templates, build::BuilderRegistry::builtin(),
+    m_rig = rigging::buildRig(m_document, *m_templates, rigging::BuilderRegistry::builtin(),
                             [this](double fraction, const std::string& stage) {
                                 emit buildProgressed(fraction, QString::fromStdString(stage));
                             });
@@ -161,7 +161,7 @@ Diagnostics EditorSession::exportRig(const io::ExportRequest& request, std::func
 
 QString EditorSession::addTemplate(const QString& templateId, model::JointId hookJoint)
 {
-    auto instance = build::makeInstance(m_document, *m_templates, templateId.toStdString(), hookJoint);
+    auto instance = rigging::makeInstance(m_document, *m_templates, templateId.toStdString(), hookJoint);
     if (!instance)
         return QString::fromStdString(instance.diagnostics().front().message);
     const model::InstanceId id = instance->id;
@@ -207,7 +207,7 @@ QString EditorSession::setOption(model::InstanceId id, const std::string& name, 
         options[name] = value;
     if (options == instance->options)
         return {};
-    auto regenerated = build::regenerateGuide(m_document, *m_templates, id, options);
+    auto regenerated = rigging::regenerateGuide(m_document, *m_templates, id, options);
     if (!regenerated)
         return QString::fromStdString(formatAll(regenerated.diagnostics()));
     return messageOf(edit::replaceInstance(m_history, regenerated.take(), "Set guide option " + name));

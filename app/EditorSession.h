@@ -176,7 +176,7 @@ signals:
     void modeChanged();
     void poseChanged();
     void guidePreviewed(); // a guide drag moved joints (no history yet)
-    // During build(): the fraction done and the stage (build::BuildProgress).
+    // During build(): the fraction done and the stage (rigging::BuildProgress).
     void buildProgressed(double fraction, const QString& stage);
     void referenceChanged();
 

@@ -1,6 +1,6 @@
 #include "Scene.h"
 
-#include "build/BranchStage.h"
+#include "rigging/BranchStage.h"
 
 #include <algorithm>
 
@@ -42,7 +42,7 @@ const glm::dvec3 kHullColor{0.55, 0.3, 0.6}; // Maya draws hulls and CVs in viol
 std::vector<SceneJoint> mirroredGuides(const model::GuideDocument& guide, const templates::TemplateRegistry& templates)
 {
     Diagnostics ignored; // the build reports branch problems
-    const build::ExpandedGuide expanded = build::expandBranches(guide, templates, ignored);
+    const rigging::ExpandedGuide expanded = rigging::expandBranches(guide, templates, ignored);
     std::vector<SceneJoint> out;
     for (const auto& instance : expanded.document.instances()) {
         const auto copy = expanded.copies.find(instance.id);

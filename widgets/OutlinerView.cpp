@@ -3,7 +3,7 @@
 #include "eval/Pickwalk.h"
 
 #include "base/Paths.h"
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 
 #include <QHeaderView>
 #include <QIcon>
@@ -97,9 +97,9 @@ void OutlinerView::refresh(const model::GuideDocument& document, const templates
         items[instance.id] = item;
         if (!manifest)
             continue;
-        const std::vector<build::HookPoint> points = build::hookPoints(*manifest, instance);
-        for (const build::HookPoint& point : points) {
-            const bool named = std::any_of(points.begin(), points.end(), [&](const build::HookPoint& other) {
+        const std::vector<rigging::HookPoint> points = rigging::hookPoints(*manifest, instance);
+        for (const rigging::HookPoint& point : points) {
+            const bool named = std::any_of(points.begin(), points.end(), [&](const rigging::HookPoint& other) {
                 return other.joint == point.joint && other.label != "default";
             });
             const bool indexed = point.label.find('[') != std::string::npos; // one of a chain's joints
@@ -189,7 +189,7 @@ model::JointId OutlinerView::dropTarget(const QPoint& pos) const
     if (!instance)
         return model::kNoId;
     const templates::TemplateManifest* manifest = m_templates->find(instance->templateId);
-    return manifest ? build::hookPoints(*manifest, *instance).front().joint : instance->joints.front().id;
+    return manifest ? rigging::hookPoints(*manifest, *instance).front().joint : instance->joints.front().id;
 }
 
 void OutlinerView::dropEvent(QDropEvent* event)
@@ -232,12 +232,12 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
         return menu;
     }
     const templates::TemplateManifest* manifest = m_templates->find(instance->templateId);
-    std::vector<build::HookPoint> hooks;
+    std::vector<rigging::HookPoint> hooks;
     if (manifest)
-        hooks = build::hookPoints(*manifest, *instance);
+        hooks = rigging::hookPoints(*manifest, *instance);
     else
         hooks.push_back({"default", instance->joints.front().id});
-    for (const build::HookPoint& hook : hooks) {
+    for (const rigging::HookPoint& hook : hooks) {
         QMenu* at = add->addMenu(QIcon(), QString::fromStdString(hook.label));
         at->setObjectName(QString::fromStdString("hook:" + hook.label));
         addTemplateEntries(at, hook.joint);

@@ -1,7 +1,7 @@
 #include "cli/Commands.h"
 
 #include "base/Paths.h"
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "eval/PoseTools.h"
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
@@ -135,7 +135,7 @@ int runBuild(const std::vector<std::string>& args)
     if (!guide)
         return 1;
     const auto start = std::chrono::steady_clock::now();
-    model::Rig rig = build::buildRig(*guide, *templates);
+    model::Rig rig = rigging::buildRig(*guide, *templates);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     print(rig.diagnostics);
     if (b.posed && !hasErrors(rig.diagnostics)) {

@@ -1,7 +1,7 @@
 // rigsmith-cli new / add: author guides without a display, one template at a time.
 #include "cli/Commands.h"
 
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "edit/GuideEdits.h"
 #include "io/GuideFile.h"
 
@@ -101,7 +101,7 @@ int runAdd(const std::vector<std::string>& args)
         const auto* manifest = templates->find(parent->templateId);
         std::string labels;
         if (manifest)
-            for (const auto& hook : build::hookPoints(*manifest, *parent)) {
+            for (const auto& hook : rigging::hookPoints(*manifest, *parent)) {
                 labels += (labels.empty() ? "" : ", ") + hook.label;
                 if (hook.label == label) hookJoint = hook.joint;
             }
@@ -110,7 +110,7 @@ int runAdd(const std::vector<std::string>& args)
             return 1;
         }
     }
-    auto instance = build::makeInstance(*guide, *templates, templateId, hookJoint, options);
+    auto instance = rigging::makeInstance(*guide, *templates, templateId, hookJoint, options);
     print(instance.diagnostics());
     if (!instance)
         return 1;

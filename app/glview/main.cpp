@@ -3,7 +3,7 @@
 //   rigsmith-glview GUIDE.yml      left drag orbits, middle drag pans, wheel zooms, F frames
 #include "GlfwHost.h"
 
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "io/GuideFile.h"
 
 #include <iostream>
@@ -20,7 +20,7 @@ int main(int argc, char** argv)
         return 1;
     rs::Diagnostics diagnostics;
     auto templates = rs::templates::TemplateRegistry::loadDefault(diagnostics);
-    const rs::model::Rig rig = rs::build::buildRig(*guide, *templates);
+    const rs::model::Rig rig = rs::rigging::buildRig(*guide, *templates);
     std::cerr << rs::formatAll(diagnostics) << rs::formatAll(rig.diagnostics);
     std::string error;
     auto host = rs::viewport::GlfwHost::create(1280, 800, std::string("Rigsmith - ") + argv[1], true, error);

@@ -11,7 +11,7 @@ namespace rs::edit {
 
 using Error = std::optional<std::string>; // nullopt on success
 
-// Adds a fully formed instance (ids and joints prepared by rs::build::makeInstance).
+// Adds a fully formed instance (ids and joints prepared by rs::rigging::makeInstance).
 Error addInstance(History& history, model::TemplateInstance instance);
 // Removes the instance and everything hanging below it.
 Error removeInstance(History& history, model::InstanceId id);

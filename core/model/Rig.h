@@ -1,6 +1,6 @@
 #pragma once
 // The built rig: a flat, index-based node table (ozz style), produced by
-// rs::build::RigBuilder from a guide and consumed by the viewport, the evaluator
+// rs::rigging::RigBuilder from a guide and consumed by the viewport, the evaluator
 // and the exporters. Nodes are stored parents-first. Matrices are the rest pose,
 // metres, Y-up. Node ids follow Mikan's rig ids: "<instance>::<tag>", e.g.
 // "spine::ctrls.0", "world::skin.root".

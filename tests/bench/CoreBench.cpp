@@ -1,5 +1,5 @@
 // Core timings on the bundled samples: guide load/save, rig build, glTF export.
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "eval/RigProgram.h"
 #include "io/RigExport.h"
 #include "io/GuideFile.h"
@@ -116,8 +116,8 @@ void BM_BuildBipedRig(benchmark::State& state)
     const auto doc = biped();
     const auto& templates = registry();
     for (auto _ : state)
-        benchmark::DoNotOptimize(build::buildRig(doc, templates));
-    countRig(state, build::buildRig(doc, templates));
+        benchmark::DoNotOptimize(rigging::buildRig(doc, templates));
+    countRig(state, rigging::buildRig(doc, templates));
 }
 BENCHMARK(BM_BuildBipedRig)->Unit(benchmark::kMicrosecond);
 
@@ -125,8 +125,8 @@ void BM_BuildSampleRig(benchmark::State& state, const std::string& sample)
 {
     const auto doc = io::readGuideFile(kSource + "/resources/samples/" + sample + ".yml").take();
     for (auto _ : state)
-        benchmark::DoNotOptimize(build::buildRig(doc, registry()));
-    countRig(state, build::buildRig(doc, registry()));
+        benchmark::DoNotOptimize(rigging::buildRig(doc, registry()));
+    countRig(state, rigging::buildRig(doc, registry()));
 }
 BENCHMARK_CAPTURE(BM_BuildSampleRig, quadruped, std::string("quadruped"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_BuildSampleRig, prop, std::string("prop"))->Unit(benchmark::kMicrosecond);
@@ -163,8 +163,8 @@ void BM_BuildBipedCrowd(benchmark::State& state)
 {
     const auto doc = crowd(static_cast<int>(state.range(0)));
     for (auto _ : state)
-        benchmark::DoNotOptimize(build::buildRig(doc, registry()));
-    countRig(state, build::buildRig(doc, registry()));
+        benchmark::DoNotOptimize(rigging::buildRig(doc, registry()));
+    countRig(state, rigging::buildRig(doc, registry()));
 }
 BENCHMARK(BM_BuildBipedCrowd)->Arg(3)->Arg(10)->Unit(benchmark::kMicrosecond);
 
@@ -173,7 +173,7 @@ BENCHMARK(BM_BuildBipedCrowd)->Arg(3)->Arg(10)->Unit(benchmark::kMicrosecond);
 // IK limbs on, feet rolled, spline spine. One core, no allocation.
 void BM_EvaluateBiped(benchmark::State& state)
 {
-    const model::Rig rig = build::buildRig(biped(), registry());
+    const model::Rig rig = rigging::buildRig(biped(), registry());
     const auto program = eval::RigProgram::compile(rig).take();
     eval::EvalState evaluation = program.makeState();
     const auto& layout = program.channels();
@@ -203,7 +203,7 @@ BENCHMARK(BM_EvaluateBiped)->Unit(benchmark::kMicrosecond);
 // once to check for cycles; the editor once more to pose the rig).
 void BM_CompileBipedProgram(benchmark::State& state)
 {
-    const model::Rig rig = build::buildRig(biped(), registry());
+    const model::Rig rig = rigging::buildRig(biped(), registry());
     for (auto _ : state)
         benchmark::DoNotOptimize(eval::RigProgram::compile(rig));
 }
@@ -212,7 +212,7 @@ BENCHMARK(BM_CompileBipedProgram)->Unit(benchmark::kMicrosecond);
 // The same evaluation without the pose update: the evaluator alone.
 void BM_EvaluateBipedFixedPose(benchmark::State& state)
 {
-    const model::Rig rig = build::buildRig(biped(), registry());
+    const model::Rig rig = rigging::buildRig(biped(), registry());
     const auto program = eval::RigProgram::compile(rig).take();
     eval::EvalState evaluation = program.makeState();
     eval::Pose pose = program.channels().defaults();
@@ -230,7 +230,7 @@ BENCHMARK(BM_EvaluateBipedFixedPose)->Unit(benchmark::kMicrosecond);
 
 void BM_DumpBipedRig(benchmark::State& state)
 {
-    const auto rig = build::buildRig(biped(), registry());
+    const auto rig = rigging::buildRig(biped(), registry());
     for (auto _ : state)
         benchmark::DoNotOptimize(io::writeRigDump(rig));
 }
@@ -238,7 +238,7 @@ BENCHMARK(BM_DumpBipedRig)->Unit(benchmark::kMicrosecond);
 
 void BM_ExportBipedGlb(benchmark::State& state)
 {
-    const auto rig = build::buildRig(biped(), registry());
+    const auto rig = rigging::buildRig(biped(), registry());
     const std::string path = (std::filesystem::temp_directory_path() / "rigsmith-bench-biped.glb").string();
     for (auto _ : state)
         benchmark::DoNotOptimize(io::exportRig(rig, path));
@@ -249,7 +249,7 @@ BENCHMARK(BM_ExportBipedGlb)->Unit(benchmark::kMicrosecond);
 // validated and written to a file, per format (arg 0 .glb, 1 .fbx).
 void BM_ExportBipedSkinned100k(benchmark::State& state)
 {
-    const auto rig = build::buildRig(biped(), registry());
+    const auto rig = rigging::buildRig(biped(), registry());
     const std::vector<io::SkinnedMesh> meshes{io::proxyMesh(*model::extractSkeleton(rig), 100000)};
     io::ExportOptions options;
     options.meshes = &meshes;

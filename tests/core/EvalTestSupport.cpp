@@ -4,7 +4,7 @@
 
 namespace rs::test {
 
-PosedRig::PosedRig(const std::string& sample) : rig(build::buildRig(loadSample(sample), builtinTemplates()))
+PosedRig::PosedRig(const std::string& sample) : rig(rigging::buildRig(loadSample(sample), builtinTemplates()))
 {
     EXPECT_FALSE(hasErrors(rig.diagnostics));
     auto compiled = eval::RigProgram::compile(rig);

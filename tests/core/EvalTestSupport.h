@@ -1,7 +1,7 @@
 #pragma once
 // A sample built and compiled for evaluation tests, with shorthands by node id.
 #include "TestSupport.h"
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "eval/Pickwalk.h"
 #include "eval/PoseTools.h"
 

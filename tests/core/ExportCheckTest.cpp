@@ -1,6 +1,6 @@
 // The pre-export validator: clean samples pass, broken skeletons are reported
 // per node, the export refuses them unless forced, and safe renames fix names.
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/ExportCheck.h"
 #include "io/RigExport.h"
@@ -19,7 +19,7 @@ using namespace rs;
 
 namespace {
 
-model::Rig sampleRig(const std::string& name) { return build::buildRig(test::loadSample(name), test::builtinTemplates()); }
+model::Rig sampleRig(const std::string& name) { return rigging::buildRig(test::loadSample(name), test::builtinTemplates()); }
 
 // The biped with two naming problems and one non-uniformly scaled joint.
 model::Rig brokenBiped()

@@ -1,5 +1,5 @@
 // Issue 6's export options, presets, mesh validation and the FBX repair.
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/FbxExport.h"
 #include "io/FbxRepair.h"
@@ -21,7 +21,7 @@ namespace {
 
 const model::Rig& biped()
 {
-    static const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    static const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     return rig;
 }
 

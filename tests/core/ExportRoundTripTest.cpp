@@ -2,7 +2,7 @@
 // consumer of issue 6, next to the Khronos validator and Blender in
 // tests/tools/check-export.sh): joint names, parents and bind positions, the
 // bind matrices against the node tree, and every vertex's weights.
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/RigExport.h"
 #include "model/Skeleton.h"
@@ -113,7 +113,7 @@ void expectWeightsMatch(const aiScene& scene, const io::ExportScene& expected, d
 TEST_P(ExportRoundTrip, AssimpReadsTheSameSkeletonAndWeights)
 {
     const auto& [sample, extension, preset] = GetParam();
-    const model::Rig rig = build::buildRig(test::loadSample(sample), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample(sample), test::builtinTemplates());
     const std::vector<io::SkinnedMesh> meshes{io::proxyMesh(*model::extractSkeleton(rig), 3000)};
     io::ExportOptions options;
     options.preset = preset;

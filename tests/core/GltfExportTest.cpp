@@ -1,4 +1,4 @@
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/RigExport.h"
 #include "model/Skeleton.h"
@@ -28,7 +28,7 @@ Mat4 nodeMatrix(const tinygltf::Node& n)
 
 TEST(GltfExport, WritesOneSkeletonWithConsistentBindMatrices)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     const std::string path = test::temporaryPath("biped.glb");
     ASSERT_TRUE(io::exportRig(rig, path).empty());
 
@@ -70,7 +70,7 @@ TEST(GltfExport, RefusesASkeletonWithSeveralRootsAndWritesNothing)
     guide.takeInstance(loose.id);
     loose.parent = loose.parentJoint = 0;
     guide.insertInstance(loose, guide.instances().size());
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     const std::string path = test::temporaryPath("roots.glb");
     std::filesystem::remove(path);
     const auto d = io::exportRig(rig, path);

@@ -1,4 +1,4 @@
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "edit/GuideEdits.h"
 
@@ -15,7 +15,7 @@ TEST(GuideEdits, EveryEditUndoesBackToTheOriginalDocument)
     history.addListener([&] { ++notifications; });
 
     const auto* arm = doc.instanceNamed("arm");
-    auto digit = build::makeInstance(doc, test::builtinTemplates(), "core.joints", arm->joints.back().id);
+    auto digit = rigging::makeInstance(doc, test::builtinTemplates(), "core.joints", arm->joints.back().id);
     ASSERT_TRUE(digit.ok());
     const model::InstanceId digitId = digit->id;
     EXPECT_FALSE(edit::addInstance(history, digit.take()));
@@ -93,7 +93,7 @@ TEST(GuideEdits, NewInstancesGetFreshIdsAUniqueNameAndDefaultJoints)
 {
     model::GuideDocument doc = test::loadSample("biped");
     const auto* neck = doc.instanceNamed("neck");
-    auto a = build::makeInstance(doc, test::builtinTemplates(), "core.joints", neck->joints.back().id);
+    auto a = rigging::makeInstance(doc, test::builtinTemplates(), "core.joints", neck->joints.back().id);
     ASSERT_TRUE(a.ok());
     EXPECT_EQ(a->name, "joints");
     EXPECT_EQ(a->joints.size(), 3u) << "the manifest's guides.number default";
@@ -101,10 +101,10 @@ TEST(GuideEdits, NewInstancesGetFreshIdsAUniqueNameAndDefaultJoints)
     EXPECT_EQ(a->joints.front().id, doc.nextJointId());
     edit::History history(doc);
     ASSERT_FALSE(edit::addInstance(history, a.take()));
-    auto b = build::makeInstance(doc, test::builtinTemplates(), "core.joints", model::kNoId);
+    auto b = rigging::makeInstance(doc, test::builtinTemplates(), "core.joints", model::kNoId);
     ASSERT_TRUE(b.ok());
     EXPECT_EQ(b->name, "joints1");
-    EXPECT_FALSE(build::makeInstance(doc, test::builtinTemplates(), "no.such", model::kNoId).ok());
+    EXPECT_FALSE(rigging::makeInstance(doc, test::builtinTemplates(), "no.such", model::kNoId).ok());
 }
 
 TEST(GuideEdits, AGuideParameterRegeneratesTheJointsKeepingTheOnesThatStillExist)
@@ -116,7 +116,7 @@ TEST(GuideEdits, AGuideParameterRegeneratesTheJointsKeepingTheOnesThatStillExist
     const auto before = document.instanceNamed("spine")->joints;
     const Vec3 chest = translationOf(document.jointWorldMatrix(before.back().id));
 
-    auto longer = build::regenerateGuide(document, test::builtinTemplates(), spine, {{"number", Value(7LL)}});
+    auto longer = rigging::regenerateGuide(document, test::builtinTemplates(), spine, {{"number", Value(7LL)}});
     ASSERT_TRUE(longer) << formatAll(longer.diagnostics());
     ASSERT_FALSE(edit::replaceInstance(history, longer.take(), "Set guide option number"));
     const auto& joints = document.instance(spine)->joints;
@@ -130,14 +130,14 @@ TEST(GuideEdits, AGuideParameterRegeneratesTheJointsKeepingTheOnesThatStillExist
     EXPECT_LT(glm::length(translationOf(document.jointWorldMatrix(joints.back().id)) - chest), 1e-12);
     EXPECT_EQ(document.instanceNamed("neck")->parentJoint, before.back().id) << "the neck still hangs on the chest";
     EXPECT_EQ(document.instance(spine)->options.at("number"), Value(7LL));
-    const model::Rig rig = build::buildRig(document, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(document, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
 
     history.undo();
     EXPECT_TRUE(document == original);
 
     // Fewer joints: a child hanging under a joint that would go away refuses the edit.
-    auto shorter = build::regenerateGuide(document, test::builtinTemplates(), spine, {{"number", Value(3LL)}});
+    auto shorter = rigging::regenerateGuide(document, test::builtinTemplates(), spine, {{"number", Value(3LL)}});
     ASSERT_TRUE(shorter);
     EXPECT_EQ(shorter->joints.size(), 3u);
     edit::History other(document);

@@ -1,4 +1,4 @@
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "edit/GuideMove.h"
 #include "io/GuideFile.h"
@@ -126,7 +126,7 @@ TEST(GuideMove, DuplicateCopiesTheSubtreeWithNewIdsAndNames)
             EXPECT_LT(glm::length(worldOf(doc, a->joints[j].id) - worldOf(doc, b->joints[j].id)), 1e-12);
         }
     }
-    const model::Rig rig = build::buildRig(doc, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(doc, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     history.undo();
     EXPECT_TRUE(doc == original);
@@ -154,7 +154,7 @@ TEST(GuideMove, ReHangingKeepsTheGuideInPlaceAndRefusesCycles)
             EXPECT_LT(*doc.indexOf(doc.instances()[i].parent), i);
         }
     }
-    const model::Rig rig = build::buildRig(doc, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(doc, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
 
     const model::JointId finger = doc.instance(doc.subtree(arm).back())->joints.front().id;
@@ -169,13 +169,13 @@ TEST(GuideMove, AShapeEditMovesTheControllersCurvesOnBothSidesAndIsSaved)
     const model::GuideDocument original = doc;
     edit::History history(doc);
     const model::InstanceId arm = doc.instanceNamed("arm")->id;
-    const model::Rig before = build::buildRig(doc, test::builtinTemplates());
+    const model::Rig before = rigging::buildRig(doc, test::builtinTemplates());
     Transform edit;
     edit.translate = Vec3(0.0, 0.1, 0.0);
     edit.scale = Vec3(2.0);
     ASSERT_FALSE(edit::setShapeEdit(history, arm, "ctrls.ik", {edit, {}}));
     EXPECT_EQ(history.undoText(), "Edit shape ctrls.ik of arm");
-    const model::Rig after = build::buildRig(doc, test::builtinTemplates());
+    const model::Rig after = rigging::buildRig(doc, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(after.diagnostics)) << formatAll(after.diagnostics);
 
     const auto& left0 = test::node(before, "arm.L::ctrls.ik");

@@ -2,8 +2,8 @@
 // conditions (with an enum option given by index), and ids that only the
 // builder creates (skin.last.up), which the manifest can still place.
 #include "base/Paths.h"
-#include "build/RigBuilder.h"
-#include "build/TemplateBuilder.h"
+#include "rigging/RigBuilder.h"
+#include "rigging/TemplateBuilder.h"
 #include "core/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -16,11 +16,11 @@ using model::RigNodeKind;
 
 namespace {
 
-class TwoSegmentBuilder final : public build::TemplateBuilder {
+class TwoSegmentBuilder final : public rigging::TemplateBuilder {
 public:
-    std::vector<build::GuideJointSpec> createGuide(const templates::TemplateManifest&,
+    std::vector<rigging::GuideJointSpec> createGuide(const templates::TemplateManifest&,
                                                    const std::map<std::string, Value>&) const override { return {{}}; }
-    void generate(build::BuildContext& ctx) const override
+    void generate(rigging::BuildContext& ctx) const override
     {
         const auto root = ctx.hookNode();
         const Mat4 at(1.0);
@@ -73,7 +73,7 @@ hierarchy:
         i.options = options;
         i.joints.push_back({1, 0, {}, {}, {}});
         guide.insertInstance(i, 0);
-        return build::buildRig(guide, registry, builders);
+        return rigging::buildRig(guide, registry, builders);
     }
 
     std::string virtualParentOf(const model::Rig& rig, const std::string& id)
@@ -83,7 +83,7 @@ hierarchy:
     }
 
     templates::TemplateRegistry registry;
-    build::BuilderRegistry builders;
+    rigging::BuilderRegistry builders;
 };
 
 } // namespace

@@ -1,4 +1,4 @@
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
@@ -18,7 +18,7 @@ using test::node;
 
 TEST(RigBuilder, BuildsTheChainFixtureAsTheGoldenDump)
 {
-    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadChains(), test::builtinTemplates());
     EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     test::expectMatchesGolden(io::writeRigDump(rig), "RigBuilder/chains/rig.yml");
 }
@@ -26,13 +26,13 @@ TEST(RigBuilder, BuildsTheChainFixtureAsTheGoldenDump)
 TEST(RigBuilder, SameGuideGivesAByteIdenticalDump)
 {
     const auto guide = test::loadChains();
-    EXPECT_EQ(io::writeRigDump(build::buildRig(guide, test::builtinTemplates())),
-              io::writeRigDump(build::buildRig(guide, test::builtinTemplates())));
+    EXPECT_EQ(io::writeRigDump(rigging::buildRig(guide, test::builtinTemplates())),
+              io::writeRigDump(rigging::buildRig(guide, test::builtinTemplates())));
 }
 
 TEST(RigBuilder, OneControllerAndSkinJointPerGuideJoint)
 {
-    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadChains(), test::builtinTemplates());
     // world: world, move, scale and fly controllers and a root joint; 6 chains of 4+3+5+5+5+5 joints.
     EXPECT_EQ(rig.count(RigNodeKind::Controller), 4u + 27u);
     EXPECT_EQ(rig.count(RigNodeKind::Joint), 1u + 27u);
@@ -46,7 +46,7 @@ TEST(RigBuilder, OneControllerAndSkinJointPerGuideJoint)
 
 TEST(RigBuilder, ParentsAChildTemplateUnderTheNodeThatHooksItsJoint)
 {
-    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadChains(), test::builtinTemplates());
     // arm_L hangs under spine's last joint, legs under its first.
     EXPECT_EQ(rig.nodes[node(rig, "arm.L::roots.0").parent].id, "spine::ctrls.3");
     EXPECT_EQ(rig.nodes[node(rig, "leg.R::roots.0").parent].id, "spine::ctrls.0");
@@ -59,7 +59,7 @@ TEST(RigBuilder, ParentsAChildTemplateUnderTheNodeThatHooksItsJoint)
 
 TEST(RigBuilder, TheSkinHierarchyHasOneRoot)
 {
-    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadChains(), test::builtinTemplates());
     EXPECT_EQ(rig.virtualRoots("skin").size(), 1u);
     EXPECT_EQ(rig.virtualRoots("ctrls").size(), 1u);
     auto skeleton = model::extractSkeleton(rig);
@@ -72,7 +72,7 @@ TEST(RigBuilder, ReportsProgressThroughEveryStageAndEachInstance)
 {
     const model::GuideDocument guide = test::loadSample("biped");
     std::vector<std::pair<double, std::string>> steps;
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates(), build::BuilderRegistry::builtin(),
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates(), rigging::BuilderRegistry::builtin(),
                                            [&](double fraction, const std::string& stage) { steps.emplace_back(fraction, stage); });
     ASSERT_FALSE(steps.empty());
     EXPECT_EQ(steps.front(), (std::pair<double, std::string>{0.0, "gather"}));
@@ -84,7 +84,7 @@ TEST(RigBuilder, ReportsProgressThroughEveryStageAndEachInstance)
         generated += stage.rfind("generate ", 0) == 0;
     EXPECT_GT(generated, guide.instances().size()) << "each built instance, mirrored branches included";
     EXPECT_NE(std::find_if(steps.begin(), steps.end(), [](const auto& s) { return s.second == "generate arm.R"; }), steps.end());
-    EXPECT_EQ(io::writeRigDump(rig), io::writeRigDump(build::buildRig(guide, test::builtinTemplates())))
+    EXPECT_EQ(io::writeRigDump(rig), io::writeRigDump(rigging::buildRig(guide, test::builtinTemplates())))
         << "watching changes nothing";
 }
 
@@ -92,7 +92,7 @@ TEST(RigBuilder, SkipsAnUnknownTemplateAndAttachesItsChildrenAbove)
 {
     model::GuideDocument guide = test::loadChains();
     guide.instance(guide.instanceNamed("spine")->id)->templateId = "spine.missing";
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     ASSERT_FALSE(rig.diagnostics.empty());
     EXPECT_EQ(rig.diagnostics[0].message,
               "instance 'spine' (spine.missing): unknown template 'spine.missing'; the instance is skipped and its children attach above it");
@@ -106,18 +106,18 @@ TEST(RigBuilder, FallsBackToTheJointChainBuilderForDataOnlyManifests)
     auto manifest = templates::readManifestText("name: tail\nstructure:\n  chain: /*\n", "tail.yml", "rig", "tail");
     ASSERT_TRUE(manifest.ok());
     Diagnostics d;
-    EXPECT_NE(&build::BuilderRegistry::builtin().resolve(*manifest, d), nullptr);
+    EXPECT_NE(&rigging::BuilderRegistry::builtin().resolve(*manifest, d), nullptr);
     ASSERT_EQ(d.size(), 1u);
     EXPECT_EQ(d[0].format(), "tail.yml: warning: no builder for rig.tail; using the generic joint-chain builder");
 }
 
 namespace {
 // A builder that names every node the same, to provoke a clash between instances.
-class ClashingBuilder final : public build::TemplateBuilder {
+class ClashingBuilder final : public rigging::TemplateBuilder {
 public:
-    std::vector<build::GuideJointSpec> createGuide(const templates::TemplateManifest&,
+    std::vector<rigging::GuideJointSpec> createGuide(const templates::TemplateManifest&,
                                                    const std::map<std::string, Value>&) const override { return {{}}; }
-    void generate(build::BuildContext& ctx) const override
+    void generate(rigging::BuildContext& ctx) const override
     {
         ctx.createNode(RigNodeKind::Controller, "ctrls.0", "c_same", model::kNoNode, Mat4(1.0));
     }
@@ -126,10 +126,10 @@ public:
 
 TEST(RigBuilder, ReportsANameClash)
 {
-    build::BuilderRegistry builders;
+    rigging::BuilderRegistry builders;
     builders.add("core.joints", std::make_unique<ClashingBuilder>());
     builders.add("world.character", std::make_unique<ClashingBuilder>());
-    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates(), builders);
+    const model::Rig rig = rigging::buildRig(test::loadChains(), test::builtinTemplates(), builders);
     ASSERT_TRUE(hasErrors(rig.diagnostics));
     EXPECT_EQ(rig.diagnostics.back().message,
               "name clash: 'c_same' is used by world::ctrls.0, spine::ctrls.0, neck::ctrls.0, arm.L::ctrls.0, "
@@ -143,7 +143,7 @@ TEST(RigBuilder, RollsBackAnInstanceWhoseStructureFails)
     auto* world = guide.instance(guide.instanceNamed("world")->id);
     guide.instance(guide.instanceNamed("spine")->id)->parentJoint = world->joints[0].id;
     world->joints.pop_back();
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     ASSERT_TRUE(hasErrors(rig.diagnostics));
     EXPECT_EQ(rig.diagnostics[0].message, "instance 'world' (world.character): structure 'root': address '/1': index [1] is out of range (1 joints)");
     EXPECT_FALSE(rig.find("world::ctrls.world")) << "never half-built";
@@ -152,7 +152,7 @@ TEST(RigBuilder, RollsBackAnInstanceWhoseStructureFails)
 
 TEST(RigBuilder, MirrorsBranchesSoEveryRightNodeIsTheMirrorOfItsLeftTwin)
 {
-    const model::Rig rig = build::buildRig(test::loadChains(), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadChains(), test::builtinTemplates());
     ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     Mat4 mirror(1.0);
     mirror[0][0] = -1.0; // the x plane of an L/R pair
@@ -179,12 +179,12 @@ TEST(RigBuilder, NestedBranchesMultiplyIdsAndSuffixes)
 {
     model::GuideDocument guide = test::loadChains();
     // A digit chain under the arm's hand with its own branches [A, B]: 2 x 2 copies.
-    auto digit = build::makeInstance(guide, test::builtinTemplates(), "core.joints", guide.instanceNamed("arm")->joints.back().id);
+    auto digit = rigging::makeInstance(guide, test::builtinTemplates(), "core.joints", guide.instanceNamed("arm")->joints.back().id);
     ASSERT_TRUE(digit.ok());
     digit->name = "finger";
     digit->options["branches"] = std::string("[A, B]");
     guide.insertInstance(digit.take(), guide.instances().size());
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     for (const char* id : {"finger.L.A::ctrls.0", "finger.L.B::ctrls.0", "finger.R.A::ctrls.0", "finger.R.B::ctrls.0"})
         EXPECT_TRUE(rig.find(id)) << id;
@@ -197,7 +197,7 @@ TEST(RigBuilder, NamesNodesByTheDocumentsNamingRules)
 {
     model::GuideDocument guide = test::loadChains();
     guide.naming = *model::namingPreset("suffix"); // seed 004: arm_L_ctrl, arm_L_jnt, _gp groups
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     EXPECT_EQ(node(rig, "arm.L::ctrls.0").name, "arm1_L_ctrl");
     EXPECT_EQ(node(rig, "arm.R::skin.2").name, "arm3_R_jnt");

@@ -1,5 +1,5 @@
 #include "base/Nurbs.h"
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "edit/ShapeCvEdit.h"
 #include "io/GuideFile.h"
@@ -12,7 +12,7 @@ namespace {
 
 model::Rig buildBiped(const model::GuideDocument& doc)
 {
-    model::Rig rig = build::buildRig(doc, test::builtinTemplates());
+    model::Rig rig = rigging::buildRig(doc, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     return rig;
 }
@@ -167,7 +167,7 @@ TEST(ShapeCvEdit, RefusesCvsOfSeveralControllersOrOutOfRangeAndWarnsOfEditsTheSh
     model::ShapeEdit stale;
     stale.cvs[{0, 999}] = Vec3(0.0, 1.0, 0.0);
     ASSERT_FALSE(edit::setShapeEdit(history, doc.instanceNamed("arm")->id, "ctrls.ik", stale));
-    const model::Rig warned = build::buildRig(doc, test::builtinTemplates());
+    const model::Rig warned = rigging::buildRig(doc, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(warned.diagnostics));
     const std::string all = formatAll(warned.diagnostics);
     const std::string warning = "shapes.ctrls.ik: the shape has no CV 999 on curve 0";

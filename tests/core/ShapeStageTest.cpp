@@ -1,7 +1,7 @@
 // Shape placement at build: parent, point, aim/aim_axis/up_axis/do_aim, axis,
 // clone, reference and wildcard expansion, checked on built controller curves.
 #include "base/Paths.h"
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -81,7 +81,7 @@ shapes:
         for (model::JointId j = 1; j <= 5; ++j)
             i.joints.push_back({j, j - 1, {Vec3(0, j == 1 ? 0 : 1, 0)}, {}, {}});
         guide.insertInstance(i, 0);
-        return build::buildRig(guide, registry);
+        return rigging::buildRig(guide, registry);
     }
 
     const model::RigNode& node(const model::Rig& rig, const std::string& id) { return rig.nodes[*rig.find(id)]; }

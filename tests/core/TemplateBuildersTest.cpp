@@ -1,6 +1,6 @@
 // The production templates: golden dumps per builder and per sample, symmetry,
 // one skin root, unique names, and what a bad guide gives.
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
@@ -62,7 +62,7 @@ class BuilderGolden : public testing::TestWithParam<std::string> {};
 
 TEST_P(BuilderGolden, BuildsTheDefaultGuideAsTheGoldenDump)
 {
-    const model::Rig rig = build::buildRig(test::loadGuide("Builders/" + GetParam() + "/guide.yml"), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadGuide("Builders/" + GetParam() + "/guide.yml"), test::builtinTemplates());
     EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     EXPECT_LE(rig.virtualRoots("skin").size(), 1u);
     test::expectMatchesGolden(io::writeRigDump(rig), "Builders/" + GetParam() + "/rig.yml");
@@ -74,7 +74,7 @@ class SampleGolden : public testing::TestWithParam<std::string> {};
 
 TEST_P(SampleGolden, BuildsWithoutDiagnosticsOneSkinRootAndUniqueNames)
 {
-    const model::Rig rig = build::buildRig(test::loadSample(GetParam()), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample(GetParam()), test::builtinTemplates());
     EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     auto skeleton = model::extractSkeleton(rig);
     ASSERT_TRUE(skeleton.ok()) << formatAll(skeleton.diagnostics());
@@ -91,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Samples, SampleGolden, testing::Values("biped", "quadru
 
 TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     Mat4 mirror(1.0);
     mirror[0][0] = -1.0;
     std::size_t pairs = 0;
@@ -113,7 +113,7 @@ TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
 
 TEST(Templates, ANewBipedLooksLikeA180CentimetreHuman)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     EXPECT_NEAR(at(rig, "neck::ctrls.head").y, 1.62, 0.02);
     EXPECT_NEAR(at(rig, "spine::ctrls.hips").y, 1.0, 1e-9);
     EXPECT_NEAR(at(rig, "leg.L::blend.2").y, 0.08, 0.01) << "ankle";
@@ -126,7 +126,7 @@ TEST(Templates, ANewBipedLooksLikeA180CentimetreHuman)
 
 TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     const auto& settings = node(rig, "arm.L::ctrls.switch");
     ASSERT_NE(settings.attribute("ik_blend"), nullptr);
     EXPECT_EQ(settings.attribute("ik_blend")->value, 1.0);
@@ -173,7 +173,7 @@ TEST(Templates, TheOptionsChangeWhatTheLimbBuilds)
     arm->options["clavicle"] = false;
     arm->options["stretch"] = false;
     arm->options["blend_joints"] = false;
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     EXPECT_EQ(countTagged(rig, "arm.R::skin.up."), 4u);
     EXPECT_EQ(countTagged(rig, "arm.R::skin.dn."), 0u);
@@ -185,7 +185,7 @@ TEST(Templates, TheOptionsChangeWhatTheLimbBuilds)
 
 TEST(Templates, TheLegHasAReverseFootFromTaggedPivots)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     // ik > heel > toe > bank_ext > bank_int > ball > ankle (the IK effector)
     std::string chain;
     for (auto i = *rig.find("leg.L::rfoot.ankle"); i != *rig.find("leg.L::ctrls.ik"); i = rig.nodes[i].parent)
@@ -211,7 +211,7 @@ TEST(Templates, TheHeadFollowsTheSpaceItsOptionPicks)
 {
     model::GuideDocument guide = test::loadSample("biped");
     guide.instance(guide.instanceNamed("neck")->id)->options["head_space"] = std::string("world");
-    const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     const auto* space = constraint(rig, "neck::cns.head_space");
     ASSERT_NE(space, nullptr);
     std::vector<std::string> targets;
@@ -223,7 +223,7 @@ TEST(Templates, TheHeadFollowsTheSpaceItsOptionPicks)
 
 TEST(Templates, FingersFollowTheHandOfTheirBranch)
 {
-    const model::Rig rig = build::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     EXPECT_EQ(rig.nodes[node(rig, "index.R::roots.fk.0").parent].id, "arm.R::blend.2");
     EXPECT_EQ(node(rig, "index.L::ctrls.fk.0").name, "c_index_base_L");
     EXPECT_EQ(node(rig, "index.L::ctrls.fk.1").name, "c_index1_L");
@@ -239,7 +239,7 @@ TEST(Templates, BadGuidesGiveDiagnosticsAndSaneFallbacks)
         auto* arm = guide.instance(guide.instanceNamed("arm")->id);
         arm->joints[2].local.translate.z = 0.0;
         arm->joints[3].local.translate.z = 0.0;
-        const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+        const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
         EXPECT_FALSE(hasErrors(rig.diagnostics));
         ASSERT_FALSE(rig.diagnostics.empty());
         EXPECT_EQ(rig.diagnostics[0].message.rfind("instance 'arm.L' (arm.limb): limb1, limb2 and limb3 guides are in a straight line", 0), 0u)
@@ -252,7 +252,7 @@ TEST(Templates, BadGuidesGiveDiagnosticsAndSaneFallbacks)
         leg->joints.erase(std::remove_if(leg->joints.begin(), leg->joints.end(), [](const model::GuideJoint& j) {
             return std::find(j.tags.begin(), j.tags.end(), "heel") != j.tags.end();
         }), leg->joints.end());
-        const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+        const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
         EXPECT_FALSE(hasErrors(rig.diagnostics));
         ASSERT_FALSE(rig.diagnostics.empty());
         EXPECT_EQ(rig.diagnostics[0].message, "instance 'leg.L' (leg.limb): no guide is tagged 'heel'; the heel pivot is placed "
@@ -262,7 +262,7 @@ TEST(Templates, BadGuidesGiveDiagnosticsAndSaneFallbacks)
     {   // Overlapping guides: warned, and the frames stay finite.
         model::GuideDocument guide = test::loadSample("biped");
         guide.instance(guide.instanceNamed("arm")->id)->joints[3].local.translate = Vec3(0.0);
-        const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+        const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
         EXPECT_FALSE(hasErrors(rig.diagnostics));
         bool warned = false;
         for (const auto& d : rig.diagnostics)
@@ -282,7 +282,7 @@ TEST(Templates, BadGuidesGiveDiagnosticsAndSaneFallbacks)
                 guide.instance(i.id)->parentJoint = chest;
         spine->joints.erase(spine->joints.begin() + 1, spine->joints.end() - 1);
         spine->joints.back().parent = spine->joints.front().id;
-        const model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+        const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
         ASSERT_TRUE(hasErrors(rig.diagnostics));
         EXPECT_EQ(rig.diagnostics[0].message, "instance 'spine' (spine.torso): the spine needs at least 3 guide joints (hips, one "
                                               "spine joint, chest); it has 2 (option 'number')");

@@ -3,7 +3,7 @@
 //   tests/data/Structure/<case>/{template.yml,guide.yml} -> joints of every tag and hook
 //   tests/data/Malformed/<case>/{template.yml|shape.yml} -> the exact diagnostics
 // Add a folder to add a case; RIGSMITH_UPDATE_GOLDEN=1 writes expected.txt.
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/GuideFile.h"
 #include "templates/ManifestDump.h"
@@ -93,7 +93,7 @@ TEST_P(StructureGolden, ResolvesEveryTagAndHook)
                 out << (i ? ", " : "") << (*joints)[i];
             out << "]\n";
         }
-        for (const build::HookPoint& hook : build::hookPoints(*manifest, instance))
+        for (const rigging::HookPoint& hook : rigging::hookPoints(*manifest, instance))
             out << "  hook " << hook.label << ": " << hook.joint << '\n';
     }
     test::expectMatchesGolden(out.str(), "Structure/" + GetParam() + "/expected.txt");

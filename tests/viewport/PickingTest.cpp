@@ -1,6 +1,6 @@
 #include "Picking.h"
 
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@ namespace {
 
 struct Fixture {
     model::GuideDocument guide = test::loadSample("biped");
-    model::Rig rig = build::buildRig(guide, test::builtinTemplates());
+    model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     Scene scene = makeScene(guide, &rig, {});
     Camera camera;
     Fixture()

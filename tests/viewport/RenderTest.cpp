@@ -2,7 +2,7 @@
 // Xvfb) and checks the image: background, guide joints, controller colours.
 #include "GlfwHost.h"
 
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -30,7 +30,7 @@ TEST(Render, DrawsTheBuiltBipedInAGlfwWindow)
     auto host = GlfwHost::create(640, 480, "render test", false, error);
     ASSERT_TRUE(host) << error << " (GL tests need a display: run them under xvfb-run)";
     const auto guide = test::loadSample("biped");
-    const auto rig = build::buildRig(guide, test::builtinTemplates());
+    const auto rig = rigging::buildRig(guide, test::builtinTemplates());
     const Scene scene = makeScene(guide, &rig, {});
     Camera camera;
     glm::dvec3 lo, hi;

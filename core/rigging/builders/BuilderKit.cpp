@@ -1,8 +1,8 @@
-#include "build/builders/BuilderKit.h"
+#include "rigging/builders/BuilderKit.h"
 
 #include <glm/geometric.hpp>
 
-namespace rs::build::kit {
+namespace rs::rigging::kit {
 
 Vec3 positionOf(const Mat4& m) { return Vec3(m[3]); }
 
@@ -208,4 +208,4 @@ void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNode
                       orientOnly ? std::map<std::string, double>{{"orient_only", 1.0}} : std::map<std::string, double>{});
 }
 
-} // namespace rs::build::kit
+} // namespace rs::rigging::kit

@@ -1,10 +1,10 @@
-#include "build/BranchStage.h"
+#include "rigging/BranchStage.h"
 
 #include "io/YamlSupport.h"
 
 #include <algorithm>
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 
@@ -118,4 +118,4 @@ ExpandedGuide expandBranches(const model::GuideDocument& guide, const templates:
     return out;
 }
 
-} // namespace rs::build
+} // namespace rs::rigging

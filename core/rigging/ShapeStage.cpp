@@ -7,14 +7,14 @@
 // controller's curves afterwards; `reference` sends a shape to another id.
 // Wildcards (`ctrls.*`) match per index and every `*` in the entry's addresses
 // becomes that index.
-#include "build/RigAssembly.h"
+#include "rigging/RigAssembly.h"
 #include "templates/Structure.h"
 
 #include <fnmatch.h>
 
 #include <algorithm>
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 
@@ -423,4 +423,4 @@ void applyShapes(RigAssembly& a)
     mirrorBranchShapes(a);
 }
 
-} // namespace rs::build
+} // namespace rs::rigging

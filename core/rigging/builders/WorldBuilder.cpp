@@ -5,11 +5,11 @@
 //   ├─ joint_gp > root skin joint (follows the post transform)
 //   ├─ setup_gp (hidden: IK handles, spline curves, helpers)
 //   └─ model_gp (meshes)
-#include "build/builders/Builders.h"
+#include "rigging/builders/Builders.h"
 
-#include "build/builders/BuilderKit.h"
+#include "rigging/builders/BuilderKit.h"
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 
@@ -87,4 +87,4 @@ public:
 
 std::unique_ptr<TemplateBuilder> makeWorldBuilder() { return std::make_unique<WorldBuilder>(); }
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -1,8 +1,8 @@
 #pragma once
 // Built-in template builders, registered by BuilderRegistry::builtin().
-#include "build/TemplateBuilder.h"
+#include "rigging/TemplateBuilder.h"
 
-namespace rs::build {
+namespace rs::rigging {
 
 // world.character / world.prop: seed 004's base structure (root, controller,
 // joint, setup and model groups; world, move, scale, fly; post transform).
@@ -28,4 +28,4 @@ std::unique_ptr<TemplateBuilder> makeSplineBuilder();
 // The rest-pose frame of a guide joint: its world matrix without scale or shear.
 Mat4 rigidFrame(const Mat4& world);
 
-} // namespace rs::build
+} // namespace rs::rigging

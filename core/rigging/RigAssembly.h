@@ -1,7 +1,7 @@
 #pragma once
-// Internal to rs::build: the rig under construction plus the lookup tables the
+// Internal to rs::rigging: the rig under construction plus the lookup tables the
 // stages share (physical hooks per guide joint, virtual hooks per domain).
-#include "build/BranchStage.h"
+#include "rigging/BranchStage.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
@@ -13,7 +13,7 @@
 #include <string_view>
 #include <unordered_map>
 
-namespace rs::build {
+namespace rs::rigging {
 
 struct InstanceRecord {
     const templates::TemplateManifest* manifest = nullptr;
@@ -93,4 +93,4 @@ public:
 // Controller set, skin-root and naming checks, in the order they run.
 const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins();
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -1,13 +1,13 @@
 #pragma once
 // Shared pieces of the built-in builders: joint frames from guide positions and
 // the offset-group + controller + skin-joint pattern every template repeats.
-#include "build/TemplateBuilder.h"
+#include "rigging/TemplateBuilder.h"
 
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace rs::build::kit {
+namespace rs::rigging::kit {
 
 // Frame at `origin` whose X axis points along `aim` and whose Z axis is as
 // close to `normal` as X allows (Gram-Schmidt); Y completes a right-handed frame.
@@ -73,4 +73,4 @@ int appendJoint(std::vector<GuideJointSpec>& specs, int parent, const Vec3& tran
 // A guide parameter as a number (defaults when absent or of another type).
 double guideNumber(const std::map<std::string, Value>& guides, const std::string& name, double fallback);
 
-} // namespace rs::build::kit
+} // namespace rs::rigging::kit

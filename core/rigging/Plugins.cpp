@@ -1,11 +1,11 @@
 // Built-in generator plugins: cross-cutting work that needs the whole rig.
-#include "build/RigAssembly.h"
+#include "rigging/RigAssembly.h"
 #include "eval/RigProgram.h"
 
 #include <cctype>
 #include <map>
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 
@@ -128,4 +128,4 @@ const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
     return plugins;
 }
 
-} // namespace rs::build
+} // namespace rs::rigging

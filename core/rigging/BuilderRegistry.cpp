@@ -1,8 +1,8 @@
-#include "build/TemplateBuilder.h"
+#include "rigging/TemplateBuilder.h"
 
-#include "build/builders/Builders.h"
+#include "rigging/builders/Builders.h"
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 constexpr const char* kFallbackBuilder = "core.joints";
@@ -53,4 +53,4 @@ const BuilderRegistry& BuilderRegistry::builtin()
     return registry;
 }
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -1,13 +1,13 @@
-#include "build/BuildContext.h"
+#include "rigging/BuildContext.h"
 
-#include "build/RigAssembly.h"
+#include "rigging/RigAssembly.h"
 #include "io/YamlSupport.h"
 #include "templates/Structure.h"
 
 #include <algorithm>
 #include <cctype>
 
-namespace rs::build {
+namespace rs::rigging {
 
 BuildContext::BuildContext(RigAssembly& assembly, const templates::TemplateManifest& manifest,
                            const model::TemplateInstance& instance, std::map<std::string, Value> options)
@@ -244,4 +244,4 @@ void BuildContext::report(Severity severity, const std::string& message, const s
 void BuildContext::error(const std::string& message, const std::string& option) const { report(Severity::Error, message, option); }
 void BuildContext::warning(const std::string& message, const std::string& option) const { report(Severity::Warning, message, option); }
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -5,14 +5,14 @@
 // creating anything; generate() then creates the instance's rig nodes through
 // its BuildContext. Builders never touch nodes of other instances, except to
 // parent under the hook node they are given.
-#include "build/BuildContext.h"
+#include "rigging/BuildContext.h"
 
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace rs::build {
+namespace rs::rigging {
 
 // One proposed guide joint; `parent` indexes the returned list (-1: the root).
 // The root's transform is local to the joint the instance hangs under.
@@ -55,4 +55,4 @@ private:
     std::map<std::string, std::unique_ptr<TemplateBuilder>> m_builders;
 };
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -5,7 +5,7 @@
 // controller shapes; build the virtual hierarchy per domain; check names.
 // Deterministic: the same guide gives the same rig, node for node.
 #include "base/Result.h"
-#include "build/TemplateBuilder.h"
+#include "rigging/TemplateBuilder.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace rs::build {
+namespace rs::rigging {
 
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders = BuilderRegistry::builtin());
@@ -65,4 +65,4 @@ struct HookPoint {
 };
 std::vector<HookPoint> hookPoints(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance);
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace rs::build {
+namespace rs::rigging {
 
 class RigAssembly;
 
@@ -96,4 +96,4 @@ private:
     mutable bool m_failed = false;
 };
 
-} // namespace rs::build
+} // namespace rs::rigging

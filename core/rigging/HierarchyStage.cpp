@@ -1,7 +1,7 @@
 // Finalize stage: the virtual hierarchy per domain (ctrls, skin...) from the
 // manifests' `hierarchy` sections. It drives pickwalk (ctrls) and the export
 // skeleton (skin), independent of the physical parenting.
-#include "build/RigAssembly.h"
+#include "rigging/RigAssembly.h"
 #include "templates/Condition.h"
 #include "templates/Structure.h"
 
@@ -9,7 +9,7 @@
 #include <string_view>
 #include <unordered_map>
 
-namespace rs::build {
+namespace rs::rigging {
 
 using model::kNoNode;
 using model::RigNodeIndex;
@@ -122,4 +122,4 @@ void buildVirtualHierarchy(RigAssembly& a)
         linkParents(a, *p.record, *p.entry, p.rule, p.nodes);
 }
 
-} // namespace rs::build
+} // namespace rs::rigging

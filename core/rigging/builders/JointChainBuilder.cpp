@@ -1,10 +1,10 @@
-#include "build/builders/Builders.h"
+#include "rigging/builders/Builders.h"
 
 #include "templates/Structure.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace rs::build {
+namespace rs::rigging {
 
 Mat4 rigidFrame(const Mat4& world)
 {
@@ -89,4 +89,4 @@ public:
 
 std::unique_ptr<TemplateBuilder> makeJointChainBuilder() { return std::make_unique<JointChainBuilder>(); }
 
-} // namespace rs::build
+} // namespace rs::rigging

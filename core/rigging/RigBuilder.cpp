@@ -1,6 +1,6 @@
-#include "build/RigBuilder.h"
+#include "rigging/RigBuilder.h"
 
-#include "build/RigAssembly.h"
+#include "rigging/RigAssembly.h"
 #include "templates/Structure.h"
 
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-namespace rs::build {
+namespace rs::rigging {
 
 using model::JointId;
 using model::kNoNode;
@@ -477,4 +477,4 @@ std::vector<HookPoint> hookPoints(const templates::TemplateManifest& manifest, c
     return out;
 }
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -1,11 +1,11 @@
 // spine.torso, neck.head and core.xform.
-#include "build/builders/Builders.h"
+#include "rigging/builders/Builders.h"
 
-#include "build/builders/BuilderKit.h"
+#include "rigging/builders/BuilderKit.h"
 
 #include <glm/geometric.hpp>
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 
@@ -171,4 +171,4 @@ std::unique_ptr<TemplateBuilder> makeSpineBuilder() { return std::make_unique<Sp
 std::unique_ptr<TemplateBuilder> makeNeckBuilder() { return std::make_unique<NeckBuilder>(); }
 std::unique_ptr<TemplateBuilder> makeXformBuilder() { return std::make_unique<XformBuilder>(); }
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -1,12 +1,12 @@
 // digit.finger and rig.spline.
-#include "build/builders/Builders.h"
+#include "rigging/builders/Builders.h"
 
-#include "build/builders/BuilderKit.h"
+#include "rigging/builders/BuilderKit.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 
@@ -122,4 +122,4 @@ public:
 std::unique_ptr<TemplateBuilder> makeDigitBuilder() { return std::make_unique<DigitBuilder>(); }
 std::unique_ptr<TemplateBuilder> makeSplineBuilder() { return std::make_unique<SplineBuilder>(); }
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -5,14 +5,14 @@
 // tagged guides under the last limb joint. Every chain is built three times:
 // FK controls, an IK chain solved to the IK controller and pole, and the blend
 // chain (FK/IK mixed by `ik_blend`) that skin joints and children follow.
-#include "build/builders/Builders.h"
+#include "rigging/builders/Builders.h"
 
-#include "build/builders/BuilderKit.h"
+#include "rigging/builders/BuilderKit.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
 
-namespace rs::build {
+namespace rs::rigging {
 
 namespace {
 
@@ -363,4 +363,4 @@ void LimbBuilder::buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNod
 
 std::unique_ptr<TemplateBuilder> makeLimbBuilder(LimbKind kind) { return std::make_unique<LimbBuilder>(kind); }
 
-} // namespace rs::build
+} // namespace rs::rigging

@@ -12,7 +12,7 @@
 #include <string>
 #include <unordered_map>
 
-namespace rs::build {
+namespace rs::rigging {
 
 struct BranchCopy {
     model::InstanceId original = model::kNoId; // the authored instance
@@ -33,4 +33,4 @@ struct ExpandedGuide {
 ExpandedGuide expandBranches(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                              Diagnostics& diagnostics);
 
-} // namespace rs::build
+} // namespace rs::rigging
