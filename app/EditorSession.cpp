@@ -108,13 +108,13 @@ double EditorSession::build()
 {
     const auto start = std::chrono::steady_clock::now();
     // Rebuilding keeps the selected controllers and CVs (by id: indices may move).
-    std::vector<std::string> selectedIds;
-    std::vector<std::pair<std::string, model::CurveCv>> selectedCvs;
+    std::vector<NodeKey> selectedIds;
+    std::vector<std::pair<NodeKey, model::CurveCv>> selectedCvs;
     if (m_rig) {
         for (auto n : m_selection.nodes)
-            selectedIds.push_back(m_rig->nodes[n].id);
+            selectedIds.push_back(m_rig->nodes[n].key);
         for (const auto& cv : m_selection.cvs)
-            selectedCvs.emplace_back(m_rig->nodes[cv.node].id, cv);
+            selectedCvs.emplace_back(m_rig->nodes[cv.node].key, cv);
     }
     m_rig = rigging::buildRig(m_document, *m_templates, rigging::BuilderRegistry::builtin(),
                             [this](double fraction, const std::string& stage) {
@@ -238,6 +238,24 @@ void EditorSession::select(const Selection& selection)
 {
     m_selection = selection;
     emit selectionChanged();
+}
+
+void EditorSession::selectSubject(const Subject& subject)
+{
+    const model::TemplateInstance* instance = m_document.instance(subject.instance());
+    if (!instance)
+        return;
+    Selection s = Selection::ofInstance(instance->id);
+    if (subject.kind == Subject::Kind::GuideJoint && instance->joint(subject.joint)) {
+        s.joint = subject.joint;
+        s.joints = {subject.joint};
+    }
+    if ((subject.kind == Subject::Kind::Node || subject.kind == Subject::Kind::Shape) && m_rig)
+        if (const auto node = m_rig->find(subject.node)) {
+            s.node = *node;
+            s.nodes = {*node};
+        }
+    select(s);
 }
 
 model::InstanceId EditorSession::instanceNamed(const QString& name) const

@@ -103,6 +103,10 @@ public:
     // A name override of one of the template's name tokens (empty: the default).
     QString setNameOverride(model::InstanceId id, const std::string& token, const QString& name);
     void select(const Selection& selection);
+    // Selects what a diagnostic is about: its instance (the authored one for a
+    // mirrored copy), the guide joint, or the rig node (highlighted, on the copy
+    // it names) when the rig is built. Subjects of nothing here change nothing.
+    void selectSubject(const Subject& subject);
     model::InstanceId instanceNamed(const QString& name) const;
 
     // Guide authoring in the viewport (GuideSession.cpp). Joints: click (add

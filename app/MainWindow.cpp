@@ -152,10 +152,8 @@ void MainWindow::connectDocument()
     connect(m_outliner, &widgets::OutlinerView::resetOptionsRequested, this, [this](quint32 id) {
         logError(m_session.resetOptions(id));
     });
-    connect(m_log, &widgets::LogPanel::subjectActivated, this, [this](const QString& subject) {
-        if (const auto id = m_session.instanceNamed(subject))
-            m_session.select(Selection::ofInstance(id));
-    });
+    connect(m_log, &widgets::LogPanel::subjectActivated, this,
+            [this](const rs::Subject& subject) { m_session.selectSubject(subject); });
     connect(m_outliner, &widgets::OutlinerView::walkRequested, this,
             [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction), true); });
     connectViewport();

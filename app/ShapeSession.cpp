@@ -35,16 +35,16 @@ std::optional<ShapeSource> shapeSourceOf(const model::Rig& rig, model::RigNodeIn
     return source;
 }
 
-std::string tagOf(const model::RigNode& node) { return node.id.substr(node.id.find("::") + 2); }
+const std::string& tagOf(const model::RigNode& node) { return node.key.tag; }
 
 } // namespace
 
 std::optional<Mat4> EditorSession::shapeFrame(model::RigNodeIndex node) const
 {
     const auto source = m_rig ? shapeSourceOf(*m_rig, node) : std::nullopt;
-    if (!source || !m_document.instance(source->authored->owner) || source->authored->id.find("::") == std::string::npos)
+    if (!source || !m_document.instance(source->authored->key.instance))
         return std::nullopt;
-    const model::TemplateInstance* owner = m_document.instance(source->authored->owner);
+    const model::TemplateInstance* owner = m_document.instance(source->authored->key.instance);
     const auto edit = owner->shapes.find(tagOf(*source->authored));
     const Mat4 m = edit == owner->shapes.end() ? Mat4(1.0) : edit->second.transform.matrix();
     // A mirrored copy shows the edit reflected: m' = R m R in its own space.
@@ -56,7 +56,7 @@ void EditorSession::beginShapeDrag(model::RigNodeIndex node)
     if (!shapeFrame(node))
         return;
     const ShapeSource source = *shapeSourceOf(*m_rig, node);
-    const model::TemplateInstance* owner = m_document.instance(source.authored->owner);
+    const model::TemplateInstance* owner = m_document.instance(source.authored->key.instance);
     const std::string tag = tagOf(*source.authored);
     const auto edit = owner->shapes.find(tag);
     const model::ShapeEdit start = edit == owner->shapes.end() ? model::ShapeEdit{} : edit->second;

@@ -11,9 +11,10 @@ LogPanel::LogPanel(QWidget* parent) : QListWidget(parent)
     setObjectName("buildLog");
     setWordWrap(true);
     connect(this, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-        const QString subject = item->data(kSubjectRole).toString();
-        if (!subject.isEmpty())
-            emit subjectActivated(subject);
+        bool ok = false;
+        const int index = item->data(kSubjectRole).toInt(&ok);
+        if (ok && index >= 0 && std::size_t(index) < m_subjects.size())
+            emit subjectActivated(m_subjects[std::size_t(index)]);
     });
     connect(this, &QListWidget::itemClicked, this, &QListWidget::itemActivated);
 }
@@ -32,8 +33,17 @@ void LogPanel::addDiagnostics(const Diagnostics& diagnostics)
 {
     for (const Diagnostic& d : diagnostics) {
         addMessage(QString::fromStdString(d.format()), d.severity);
-        item(count() - 1)->setData(kSubjectRole, QString::fromStdString(d.subject));
+        if (d.subject.isNone())
+            continue;
+        item(count() - 1)->setData(kSubjectRole, int(m_subjects.size()));
+        m_subjects.push_back(d.subject);
     }
+}
+
+void LogPanel::clearMessages()
+{
+    clear();
+    m_subjects.clear();
 }
 
 } // namespace rs::widgets

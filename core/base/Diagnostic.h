@@ -1,6 +1,8 @@
 #pragma once
 // A compiler-style message about an input: "file:line:col: error: message".
 // Lines and columns are 1-based; 0 means "unknown" and is left out of the text.
+#include "base/Identity.h"
+
 #include <string>
 #include <vector>
 
@@ -18,9 +20,9 @@ struct Diagnostic {
     Severity severity = Severity::Error;
     SourceLocation where;
     std::string message;
-    // What the message is about inside a document (an instance id, a node id...),
-    // so a log view can select the cause. Empty when the cause is a file position.
-    std::string subject;
+    // What the message is about (an instance, a rig node, a guide joint...), so
+    // a log view can select the cause. None when the cause is a file position.
+    Subject subject;
 
     std::string format() const;
 };

@@ -55,12 +55,11 @@ Result<CvDrag> CvDrag::begin(const model::GuideDocument& document, const model::
         d.m_twinCurves = rig.nodes[node.twin].curves;
     }
     const model::RigNode& authored = d.m_onCopy ? rig.nodes[node.twin] : node;
-    const model::TemplateInstance* instance = document.instance(authored.owner);
-    const auto separator = authored.id.find("::");
-    if (!instance || separator == std::string::npos)
+    const model::TemplateInstance* instance = document.instance(authored.key.instance);
+    if (!instance)
         return failure("'" + node.name + "' belongs to no template instance of the guide");
     d.m_instance = instance->id;
-    d.m_tag = authored.id.substr(separator + 2);
+    d.m_tag = authored.key.tag;
     if (const auto edit = instance->shapes.find(d.m_tag); edit != instance->shapes.end())
         d.m_start = edit->second;
     d.m_cvs = std::move(cvs);

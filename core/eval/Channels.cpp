@@ -93,7 +93,7 @@ std::optional<int> ChannelLayout::findPath(const model::Rig& rig, const std::str
     const auto dot = path.rfind('.');
     if (dot == std::string::npos)
         return std::nullopt;
-    const auto node = rig.find(path.substr(0, dot));
+    const auto node = rig.findPath(std::string_view(path).substr(0, dot));
     if (!node)
         return std::nullopt;
     return find(*node, path.substr(dot + 1));
@@ -179,7 +179,7 @@ model::PoseValues valuesFromPose(const model::Rig& rig, const ChannelLayout& lay
 {
     for (std::size_t i = 0; i < layout.size(); ++i) {
         const Channel& c = layout[i];
-        const std::string& id = rig.nodes[c.node].id;
+        const NodeKey& id = rig.nodes[c.node].key;
         if (std::abs(pose[i] - c.defaultValue) > 1e-12) {
             values[id][c.name] = pose[i];
         } else if (auto it = values.find(id); it != values.end()) {

@@ -8,22 +8,20 @@ namespace rs::eval {
 
 namespace {
 
-std::string instanceOf(const std::string& id) { return id.substr(0, id.find("::")); }
-
-const model::RigConstraint* limbIk(const model::Rig& rig, const std::string& instance)
+const model::RigConstraint* limbIk(const model::Rig& rig, const CopyKey& instance)
 {
     for (const auto& c : rig.constraints)
-        if (c.kind == model::ConstraintKind::Ik && instanceOf(c.id) == instance)
+        if (c.kind == model::ConstraintKind::Ik && c.key.copy() == instance)
             return &c;
     return nullptr;
 }
 
 // The FK/IK blends of a limb, parents first (as the builder lists them).
-std::vector<const model::RigConstraint*> limbBlends(const model::Rig& rig, const std::string& instance)
+std::vector<const model::RigConstraint*> limbBlends(const model::Rig& rig, const CopyKey& instance)
 {
     std::vector<const model::RigConstraint*> out;
     for (const auto& c : rig.constraints)
-        if (c.kind == model::ConstraintKind::Blend && instanceOf(c.id) == instance && c.targets.size() == 2)
+        if (c.kind == model::ConstraintKind::Blend && c.key.copy() == instance && c.targets.size() == 2)
             out.push_back(&c);
     return out;
 }
@@ -136,10 +134,10 @@ Pose Posing::placeAt(const Pose& pose, model::RigNodeIndex node, const Mat4& wor
 
 std::optional<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node, std::string& error)
 {
-    const std::string instance = instanceOf(m_rig.nodes[node].id);
+    const CopyKey instance = m_rig.nodes[node].key.copy();
     const auto blends = limbBlends(m_rig, instance);
     if (!limbIk(m_rig, instance) || blends.empty()) {
-        error = "'" + instance + "' has no FK/IK limb to match";
+        error = "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match";
         return std::nullopt;
     }
     // Where the IK chain is now (it does not depend on the FK controls).
@@ -160,11 +158,11 @@ std::optional<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node, s
 
 std::optional<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node, std::string& error)
 {
-    const std::string instance = instanceOf(m_rig.nodes[node].id);
+    const CopyKey instance = m_rig.nodes[node].key.copy();
     const auto* ik = limbIk(m_rig, instance);
     const auto blends = limbBlends(m_rig, instance);
     if (!ik || blends.empty() || ik->targets.size() != 2) {
-        error = "'" + instance + "' has no FK/IK limb to match";
+        error = "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match";
         return std::nullopt;
     }
     const auto fkRoot = fkFor(blends, ik->driven.front()), fkMid = fkFor(blends, ik->driven[1]),
@@ -174,7 +172,7 @@ std::optional<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node, s
         control = m_rig.nodes[control].parent;
     const auto pole = ik->targets[1];
     if (fkRoot == model::kNoNode || fkMid == model::kNoNode || fkEnd == model::kNoNode || control == model::kNoNode) {
-        error = "'" + instance + "': the IK chain has no FK twin or no IK control";
+        error = "'" + m_rig.nodes[node].path + "': the IK chain has no FK twin or no IK control";
         return std::nullopt;
     }
     evaluate(pose);

@@ -19,7 +19,7 @@ Affine channelAffine(const Pose& pose, int first)
 
 std::string attributeError(const model::RigConstraint& c, const std::string& role, const std::string& path)
 {
-    return "constraint '" + c.id + "': " + role + " attribute '" + path + "' is not a channel of the rig";
+    return "constraint '" + c.path + "': " + role + " attribute '" + path + "' is not a channel of the rig";
 }
 
 } // namespace
@@ -61,7 +61,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         c.targets = rc.targets;
         bool ok = !c.driven.empty();
         if (!ok)
-            diagnostics.push_back(makeError({}, "constraint '" + rc.id + "' drives no node"));
+            diagnostics.push_back(makeError({}, "constraint '" + rc.path + "' drives no node"));
         for (const auto& [role, path] : rc.attributes) {
             const auto channel = p.m_channels.findPath(rig, path);
             if (!channel) {
@@ -108,7 +108,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
             // A degenerate setup (overlapping guides, already warned about by the
             // builder) leaves the driven nodes where their parents put them.
             if (std::string error = prepareConstraint(c, rig, rest); !error.empty()) {
-                diagnostics.push_back(makeWarning({}, "constraint '" + rc.id + "': " + error + "; it is not evaluated"));
+                diagnostics.push_back(makeWarning({}, "constraint '" + rc.path + "': " + error + "; it is not evaluated"));
                 ok = false;
             }
         }
@@ -192,7 +192,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
         int shown = 0;
         for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k)
             if (pending[n + k] > 0 && shown++ < 6)
-                list += (list.empty() ? "" : ", ") + rig.constraints[k].id;
+                list += (list.empty() ? "" : ", ") + rig.constraints[k].path;
         diagnostics.push_back(makeError({}, "the rig's constraints form a cycle (a node depends on itself through " + list +
                                                 "); the rig cannot be evaluated"));
         return Result<RigProgram>::failure(diagnostics);

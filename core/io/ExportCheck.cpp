@@ -33,7 +33,7 @@ Diagnostic problem(Severity severity, const model::Rig& rig, const model::Skelet
     Diagnostic d = severity == Severity::Error ? makeError({}, "joint '" + joint.name + "': " + message)
                                                : makeWarning({}, "joint '" + joint.name + "': " + message);
     if (joint.node != model::kNoNode && joint.node < rig.nodes.size())
-        d.subject = rig.nodes[joint.node].id;
+        d.subject = Subject::ofNode(rig.nodes[joint.node].key);
     return d;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The validator exporters run before writing anything (issue 6): what engines
 // reject or mangle, found on the export skeleton, each problem naming its node
-// (Diagnostic::subject = the rig node id, so the editor can select it).
+// (Diagnostic::subject = the rig node, so the editor can select it).
 //  - errors: more or fewer than one root; a joint with non-uniform scale, shear
 //    or a mirrored (negative) bind matrix; a bind matrix that cannot be
 //    inverted; duplicate names, also when they differ only by case (FBX and

@@ -92,7 +92,7 @@ void addControllers(const model::Rig& rig, ExportScene& scene, std::vector<model
             continue;
         ExportController c;
         c.name = node.name;
-        c.id = node.id;
+        c.id = node.path;
         c.shape = node.shape;
         // The nearest controller above it in the controllers' virtual hierarchy.
         for (auto p = node.virtualParent; p != model::kNoNode && c.parent < 0; p = rig.nodes[p].virtualParent)
@@ -186,7 +186,7 @@ ExportScene sceneFrom(const model::Rig& rig, const model::Skeleton& skeleton, st
     for (const auto& joint : skeleton.joints) {
         ExportJoint out;
         out.name = joint.name;
-        out.id = joint.node == model::kNoNode ? std::string() : rig.nodes[joint.node].id;
+        out.id = joint.node == model::kNoNode ? std::string() : rig.nodes[joint.node].path;
         out.parent = joint.parent;
         out.bindWorld = joint.bindWorld;
         out.bindLocal = out.poseLocal = joint.bindLocal;

@@ -85,7 +85,7 @@ model::Skeleton applyNameMap(const model::Rig& rig, model::Skeleton skeleton, co
     for (auto& joint : skeleton.joints) {
         if (joint.node == model::kNoNode || joint.node >= rig.nodes.size())
             continue;
-        if (auto byId = map.names.find(rig.nodes[joint.node].id); byId != map.names.end())
+        if (auto byId = map.names.find(rig.nodes[joint.node].path); byId != map.names.end())
             joint.name = byId->second;
         else if (auto byName = map.names.find(joint.name); byName != map.names.end())
             joint.name = byName->second;

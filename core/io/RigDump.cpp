@@ -62,14 +62,14 @@ std::string writeRigDump(const model::Rig& rig)
     out << "rigsmith_rig: 1\n";
     out << "nodes:\n";
     for (const auto& n : rig.nodes) {
-        out << "  - id: " << quoteIfNeeded(n.id) << "\n";
+        out << "  - id: " << quoteIfNeeded(n.path) << "\n";
         out << "    name: " << quoteIfNeeded(n.name) << "\n";
         out << "    kind: " << model::kindName(n.kind) << "\n";
         if (n.parent != model::kNoNode)
-            out << "    parent: " << quoteIfNeeded(rig.nodes[n.parent].id) << "\n";
+            out << "    parent: " << quoteIfNeeded(rig.nodes[n.parent].path) << "\n";
         if (n.isInVirtualHierarchy())
             out << "    virtual_parent: "
-                << (n.virtualParent == model::kNoNode ? std::string("~") : quoteIfNeeded(rig.nodes[n.virtualParent].id)) << "\n";
+                << (n.virtualParent == model::kNoNode ? std::string("~") : quoteIfNeeded(rig.nodes[n.virtualParent].path)) << "\n";
         Vec3 t, s;
         Quat r;
         decompose(n.worldMatrix, t, r, s);
@@ -96,7 +96,7 @@ std::string writeRigDump(const model::Rig& rig)
         if (n.scaleCompensate)
             out << "    scale_compensate: true\n";
         if (n.twin != model::kNoNode)
-            out << "    twin: " << quoteIfNeeded(rig.nodes[n.twin].id) << "\n";
+            out << "    twin: " << quoteIfNeeded(rig.nodes[n.twin].path) << "\n";
         if (!n.shape.empty()) {
             out << "    shape: " << quoteIfNeeded(n.shape) << "\n";
             out << "    curves:\n";
@@ -111,12 +111,12 @@ std::string writeRigDump(const model::Rig& rig)
     auto ids = [&](const std::vector<model::RigNodeIndex>& nodes) {
         std::string text = "[";
         for (std::size_t i = 0; i < nodes.size(); ++i)
-            text += (i ? ", " : "") + quoteIfNeeded(rig.nodes[nodes[i]].id);
+            text += (i ? ", " : "") + quoteIfNeeded(rig.nodes[nodes[i]].path);
         return text + "]";
     };
     out << "constraints:" << (rig.constraints.empty() ? " []\n" : "\n");
     for (const auto& c : rig.constraints) {
-        out << "  - id: " << quoteIfNeeded(c.id) << "\n";
+        out << "  - id: " << quoteIfNeeded(c.path) << "\n";
         out << "    kind: " << model::constraintKindName(c.kind) << "\n";
         out << "    driven: " << ids(c.driven) << "\n";
         out << "    targets: " << ids(c.targets) << "\n";

@@ -119,7 +119,7 @@ Diagnostics checkInfluences(const SkinnedMesh& mesh, const model::Skeleton& skel
 {
     auto error = [&](std::string message) {
         Diagnostic d = makeError({}, "mesh " + mesh.name + ": " + std::move(message));
-        d.subject = mesh.name;
+        d.subject = Subject::ofMesh(mesh.name);
         return d;
     };
     const std::size_t n = mesh.vertexCount();

@@ -6,6 +6,7 @@
 // instance root: local to the joint it hangs under, or to the world).
 //
 // The document is plain data; edits go through rs::edit so undo stays in step.
+#include "base/Identity.h"
 #include "base/Math.h"
 #include "model/Naming.h"
 #include "model/Value.h"
@@ -19,14 +20,19 @@
 
 namespace rs::model {
 
-using InstanceId = std::uint32_t;
-using JointId = std::uint32_t;
-constexpr std::uint32_t kNoId = 0;
+using rs::InstanceId;
+using rs::JointId;
+using rs::kNoId;
+using rs::NodeKey;
 
-// The rigger's test pose of the built rig: node id -> channel name -> value,
-// only values that differ from the defaults. Ids are stable across rebuilds, so
-// the pose survives them; values of nodes a rebuild no longer makes stay unused.
-using PoseValues = std::map<std::string, std::map<std::string, double>>;
+// The rigger's test pose of the built rig: node key -> channel name -> value,
+// only values that differ from the defaults. Keys are stable across rebuilds
+// and renames, so the pose survives them; values of nodes a rebuild no longer
+// makes are reported by the build and kept until the rigger removes them.
+using PoseValues = std::map<NodeKey, std::map<std::string, double>>;
+// Pose records of an older guide whose instance name matched no instance when
+// they were migrated to keys: kept verbatim ("arm.L::ctrls.fk.0") and written back.
+using LegacyPoseValues = std::map<std::string, std::map<std::string, double>>;
 
 struct GuideJoint {
     JointId id = kNoId;
@@ -72,7 +78,7 @@ struct TemplateInstance {
 
 class GuideDocument {
 public:
-    static constexpr int kSchemaVersion = 1;
+    static constexpr int kSchemaVersion = 2; // 2: the pose is keyed by instance id, branch and tag
 
     const std::vector<TemplateInstance>& instances() const { return m_instances; }
     const TemplateInstance* instance(InstanceId id) const;
@@ -101,6 +107,7 @@ public:
     std::string name;                // asset name
     NamingRules naming;              // how rig nodes are named (preset "mikan" unless the file says)
     PoseValues pose;                 // edited through rs::edit::SetPose
+    LegacyPoseValues legacyPose;     // unmatched records of an older guide, kept
     // A model shown see-through while placing guides (display only, not built).
     // An absolute path in memory; the guide file keeps it relative to itself.
     std::string referenceModel;

@@ -97,19 +97,38 @@ const RigAttribute* RigNode::attribute(const std::string& attributeName) const
     return nullptr;
 }
 
-std::string RigNode::domain() const
+std::optional<RigNodeIndex> Rig::find(const NodeKey& key) const
 {
-    const auto sep = id.find("::");
-    const std::string tag = sep == std::string::npos ? id : id.substr(sep + 2);
-    return tag.substr(0, tag.find('.'));
-}
-
-std::optional<RigNodeIndex> Rig::find(const std::string& id) const
-{
-    auto it = byId.find(id);
-    if (it == byId.end())
+    auto it = byKey.find(key);
+    if (it == byKey.end())
         return std::nullopt;
     return it->second;
+}
+
+std::optional<RigNodeIndex> Rig::findPath(std::string_view path) const
+{
+    auto it = byPath.find(path);
+    if (it == byPath.end())
+        return std::nullopt;
+    return it->second;
+}
+
+RigNodeIndex Rig::add(RigNode node)
+{
+    const auto index = static_cast<RigNodeIndex>(nodes.size());
+    byKey[node.key] = index;
+    byPath[node.path] = index;
+    nodes.push_back(std::move(node));
+    return index;
+}
+
+void Rig::truncate(std::size_t count)
+{
+    for (std::size_t i = count; i < nodes.size(); ++i) {
+        byKey.erase(nodes[i].key);
+        byPath.erase(nodes[i].path);
+    }
+    nodes.resize(std::min(count, nodes.size()));
 }
 
 std::vector<RigNodeIndex> Rig::virtualRoots(const std::string& domain) const

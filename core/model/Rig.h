@@ -2,8 +2,9 @@
 // The built rig: a flat, index-based node table (ozz style), produced by
 // rs::rigging::RigBuilder from a guide and consumed by the viewport, the evaluator
 // and the exporters. Nodes are stored parents-first. Matrices are the rest pose,
-// metres, Y-up. Node ids follow Mikan's rig ids: "<instance>::<tag>", e.g.
-// "spine::ctrls.0", "world::skin.root".
+// metres, Y-up. A node is identified by its NodeKey (authored instance id,
+// branch, tag path); its `path` ("arm.L::ctrls.fk.0", Mikan's rig id made of
+// the instance's current name) is for people, dumps and name maps only.
 #include "base/Diagnostic.h"
 #include "base/Math.h"
 #include "model/GuideDocument.h"
@@ -15,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rs::model {
@@ -91,7 +93,8 @@ struct ChannelSettings {
 const char* channelName(int channel); // "tx" ... "sz"
 
 struct RigNode {
-    std::string id;                    // unique: "<instance>::<tag>"
+    NodeKey key;                       // identity: instance copy + tag, stable across renames
+    std::string path;                  // display only: "<instance name>.<branch>::<tag>"; never parsed
     std::string name;                  // unique display/export name from the naming engine
     RigNodeKind kind = RigNodeKind::Group;
     RigNodeIndex parent = kNoNode;     // physical parent; kNoNode only for the rig root
@@ -120,7 +123,7 @@ struct RigNode {
     const RigAttribute* attribute(const std::string& attributeName) const;
 
     // The first segment of the tag: "ctrls", "skin", "hooks"...
-    std::string domain() const;
+    std::string domain() const { return key.tag.substr(0, key.tag.find('.')); }
     bool isInVirtualHierarchy() const { return m_inHierarchy; }
     void setInVirtualHierarchy(bool in) { m_inHierarchy = in; }
 
@@ -155,7 +158,8 @@ enum class ConstraintKind {
 const char* constraintKindName(ConstraintKind kind);
 
 struct RigConstraint {
-    std::string id;                          // "<instance>::<tag>", unique
+    NodeKey key;                             // identity, as a node's
+    std::string path;                        // display only, as a node's
     ConstraintKind kind = ConstraintKind::Parent;
     InstanceId owner = kNoId;
     std::vector<RigNodeIndex> driven;
@@ -168,10 +172,18 @@ struct Rig {
     std::vector<RigNode> nodes;
     std::vector<RigConstraint> constraints;
     std::map<std::string, std::vector<RigNodeIndex>> sets; // "controllers": every animatable controller
-    std::map<std::string, RigNodeIndex> byId;
+    std::map<NodeKey, RigNodeIndex> byKey;
+    std::map<std::string, RigNodeIndex, std::less<>> byPath;
     Diagnostics diagnostics;
 
-    std::optional<RigNodeIndex> find(const std::string& id) const;
+    std::optional<RigNodeIndex> find(const NodeKey& key) const;
+    // By display path ("arm.L::ctrls.ik"): for text boundaries (command line,
+    // name maps, tests), never for identity inside Rigsmith.
+    std::optional<RigNodeIndex> findPath(std::string_view path) const;
+    // Adds a node at the end, indexed by key and path.
+    RigNodeIndex add(RigNode node);
+    // Drops the nodes from index `count` on (a failed instance's), with their index entries.
+    void truncate(std::size_t count);
     // Nodes of one domain hierarchy whose virtual parent is none, in node order.
     std::vector<RigNodeIndex> virtualRoots(const std::string& domain) const;
     std::vector<RigNodeIndex> virtualChildren(RigNodeIndex node) const;

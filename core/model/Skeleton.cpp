@@ -13,7 +13,7 @@ Result<Skeleton> extractSkeleton(const Rig& rig)
     if (roots.size() > 1) {
         std::string list;
         for (RigNodeIndex r : roots)
-            list += (list.empty() ? "" : ", ") + rig.nodes[r].name + " (" + rig.nodes[r].id + ")";
+            list += (list.empty() ? "" : ", ") + rig.nodes[r].name + " (" + rig.nodes[r].path + ")";
         return Result<Skeleton>::failure(makeError({}, "the skin hierarchy has " + std::to_string(roots.size()) +
                                                            " roots, an export skeleton needs one: " + list));
     }

@@ -19,6 +19,9 @@ struct BranchCopy {
     model::InstanceId twin = model::kNoId;     // the unmirrored copy of the same instance
     std::string baseName;                      // authored name, "arm"
     std::string id;                            // ".L" ("" when not branched)
+
+    std::string branch() const { return id.empty() ? id : id.substr(1); } // "L", "A.L", ""
+    CopyKey key() const { return {original, branch()}; }
     std::string suffix;                        // "_L"
     bool flip = false;                         // odd number of mirrored branches
     Mat4 mirror{1.0};                          // reflection applied to the authored guide (diagonal +-1)

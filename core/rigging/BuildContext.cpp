@@ -104,7 +104,7 @@ Mat4 BuildContext::nodeWorld(model::RigNodeIndex index) const
 
 std::optional<model::RigNodeIndex> BuildContext::findNode(const std::string& tag) const
 {
-    return m_assembly.rig.find(m_instance.name + "::" + tag);
+    return m_assembly.rig.find(m_assembly.keyOf(m_instance, tag));
 }
 
 void BuildContext::setHidden(model::RigNodeIndex index) { m_assembly.rig.nodes.at(index).hidden = true; }
@@ -113,7 +113,7 @@ std::string BuildContext::addAttribute(model::RigNodeIndex index, const std::str
 {
     auto& node = m_assembly.rig.nodes.at(index);
     node.attributes.push_back({name, std::clamp(value, min, max), min, max, {}});
-    return node.id + "." + name;
+    return node.path + "." + name;
 }
 
 std::string BuildContext::addEnumAttribute(model::RigNodeIndex index, const std::string& name, int value,
@@ -135,7 +135,8 @@ void BuildContext::addConstraint(model::ConstraintKind kind, const std::string& 
                                  std::map<std::string, double> values)
 {
     model::RigConstraint c;
-    c.id = m_instance.name + "::" + tag;
+    c.key = m_assembly.keyOf(m_instance, tag);
+    c.path = m_assembly.pathOf(m_instance, tag);
     c.kind = kind;
     c.owner = m_assembly.copyOf(m_instance.id).original;
     c.driven = std::move(driven);
@@ -155,12 +156,12 @@ void BuildContext::addConstraint(model::ConstraintKind kind, const std::string& 
         c.values.erase("channel");
     for (auto index : c.driven)
         if (index == model::kNoNode) {
-            error("constraint '" + c.id + "' has no driven node");
+            error("constraint '" + c.path + "' has no driven node");
             return;
         }
     for (auto index : c.targets)
         if (index == model::kNoNode) {
-            error("constraint '" + c.id + "' has a missing target");
+            error("constraint '" + c.path + "' has a missing target");
             return;
         }
     m_assembly.rig.constraints.push_back(std::move(c));
@@ -206,7 +207,8 @@ model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std:
 {
     const Mat4& mirror = m_assembly.copyOf(m_instance.id).mirror;
     model::RigNode node;
-    node.id = m_instance.name + "::" + tag;
+    node.key = m_assembly.keyOf(m_instance, tag);
+    node.path = m_assembly.pathOf(m_instance, tag);
     node.name = name;
     node.kind = kind;
     node.parent = parent == model::kNoNode ? m_hookNode : parent;
@@ -215,9 +217,9 @@ model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std:
     node.guide = source == model::kNoId ? model::kNoId : m_assembly.authoredJoint(source);
     if (kind == model::RigNodeKind::Controller)
         node.channels = model::ChannelSettings::controllerDefaults();
-    if (m_assembly.rig.find(node.id)) {
-        error("rig node id '" + node.id + "' is created twice");
-        return *m_assembly.rig.find(node.id);
+    if (const auto existing = m_assembly.rig.find(node.key)) {
+        error("rig node '" + node.path + "' is created twice");
+        return *existing;
     }
     return m_assembly.addNode(std::move(node));
 }

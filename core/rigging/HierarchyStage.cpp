@@ -21,12 +21,11 @@ std::vector<RigNodeIndex> nodesOf(const RigAssembly& a, const NodesByInstance& i
                                   const std::string& id)
 {
     std::vector<RigNodeIndex> out;
-    auto own = index.find(r.instance->name);
+    auto own = index.find(a.copyOf(r.instance->id).key());
     if (own == index.end())
         return out;
     for (RigNodeIndex i : own->second) {
-        const std::string_view nodeId = a.rig.nodes[i].id;
-        const std::string_view tag = nodeId.substr(r.instance->name.size() + 2);
+        const std::string_view tag = a.rig.nodes[i].key.tag;
         if (tag.size() >= id.size() && tag.compare(0, id.size(), id) == 0 && (tag.size() == id.size() || tag[id.size()] == '.'))
             out.push_back(i);
     }
@@ -82,7 +81,7 @@ void linkParents(RigAssembly& a, const InstanceRecord& r, const templates::Hiera
     std::vector<RigNodeIndex> parents;
     if (rule.parent)
         for (const std::string& id : *rule.parent) {
-            auto found = a.rig.find(r.instance->name + "::" + id);
+            auto found = a.rig.find(a.keyOf(*r.instance, id));
             if (found) parents.push_back(*found);
             else a.report(Severity::Warning, r.instance, "hierarchy." + e.id + ".parent: no rig node '" + id + "'");
         }

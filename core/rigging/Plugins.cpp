@@ -40,7 +40,7 @@ public:
             return;
         std::string list;
         for (auto i : roots)
-            list += (list.empty() ? "" : ", ") + a.rig.nodes[i].id;
+            list += (list.empty() ? "" : ", ") + a.rig.nodes[i].path;
         a.report(Severity::Warning, nullptr, "the skin hierarchy has " + std::to_string(roots.size()) + " roots (" + list +
                                                  "); engines expect one: add a world template or enable its skin joint");
     }
@@ -55,9 +55,9 @@ public:
     {
         std::map<std::string, std::vector<std::string>> ids;
         for (const auto& n : a.rig.nodes) {
-            ids[n.name].push_back(n.id);
+            ids[n.name].push_back(n.path);
             if (&n != &a.rig.nodes.front() && !portable(n.name))
-                a.report(Severity::Warning, nullptr, "node name '" + n.name + "' (" + n.id +
+                a.report(Severity::Warning, nullptr, "node name '" + n.name + "' (" + n.path +
                                                          ") is not portable: use letters, digits and '_', not starting with a digit");
         }
         for (const auto& [nodeName, owners] : ids)
@@ -90,11 +90,11 @@ public:
     void finalize(RigAssembly& a) const override
     {
         for (auto& node : a.rig.nodes) {
-            if (node.parent == model::kNoNode || node.id.find("::roots.fk.") == std::string::npos)
+            if (node.parent == model::kNoNode || node.key.tag.rfind("roots.fk.", 0) != 0)
                 continue;
             const auto& parent = a.rig.nodes[node.parent];
             node.scaleCompensate = parent.kind == model::RigNodeKind::Controller &&
-                                   parent.id.find("::ctrls.fk.") != std::string::npos;
+                                   parent.key.tag.rfind("ctrls.fk.", 0) == 0;
         }
     }
 };

@@ -66,16 +66,22 @@ struct RigAssembly {
     model::JointId upstreamJoint(model::JointId joint) const;
     Mat4 guideWorldMatrix(model::JointId joint) const;
 
-    model::RigNodeIndex addNode(model::RigNode node);
+    model::RigNodeIndex addNode(model::RigNode node) { return rig.add(std::move(node)); }
+    // The key and display path of a node (or constraint) `tag` of an expanded instance.
+    NodeKey keyOf(const model::TemplateInstance& instance, const std::string& tag) const;
+    std::string pathOf(const model::TemplateInstance& instance, const std::string& tag) const { return instance.name + "::" + tag; }
     // The hook node a child hanging under `joint` attaches to, walking up the guide.
     model::RigNodeIndex physicalHookFor(model::JointId joint) const;
     model::RigNodeIndex virtualHookFor(const std::string& domain, model::JointId joint) const;
+    // A build message about an (expanded) instance: its subject is the authored
+    // instance and the branch copy, so the log selects the cause.
     void report(Severity severity, const model::TemplateInstance* instance, const std::string& message);
+    Subject subjectOf(const model::TemplateInstance& instance) const;
 };
 
-// Node indices per instance name (the id before "::"), in node order, so a
-// stage scans only one instance's nodes. Views point into the rig's ids.
-using NodesByInstance = std::unordered_map<std::string_view, std::vector<model::RigNodeIndex>>;
+// Node indices per instance copy, in node order, so a stage scans only one
+// instance's nodes.
+using NodesByInstance = std::map<CopyKey, std::vector<model::RigNodeIndex>>;
 NodesByInstance indexNodesByInstance(const model::Rig& rig);
 
 // Stages run by buildRig after generation.

@@ -14,12 +14,16 @@ using model::JointId;
 using model::kNoNode;
 using model::RigNodeIndex;
 
-model::RigNodeIndex RigAssembly::addNode(model::RigNode node)
+NodeKey RigAssembly::keyOf(const model::TemplateInstance& instance, const std::string& tag) const
 {
-    const auto index = static_cast<RigNodeIndex>(rig.nodes.size());
-    rig.byId[node.id] = index;
-    rig.nodes.push_back(std::move(node));
-    return index;
+    const BranchCopy& copy = copyOf(instance.id);
+    return {copy.original, copy.branch(), tag};
+}
+
+Subject RigAssembly::subjectOf(const model::TemplateInstance& instance) const
+{
+    const BranchCopy& copy = copyOf(instance.id);
+    return Subject::ofInstance(copy.original, copy.branch());
 }
 
 void RigAssembly::indexGuide()
@@ -64,12 +68,9 @@ const RigAssembly::Resolved& RigAssembly::resolveStructure(const templates::Temp
 NodesByInstance indexNodesByInstance(const model::Rig& rig)
 {
     NodesByInstance out;
-    for (RigNodeIndex i = 0; i < rig.nodes.size(); ++i) {
-        const std::string_view id = rig.nodes[i].id;
-        const auto sep = id.find("::");
-        if (sep != std::string_view::npos)
-            out[id.substr(0, sep)].push_back(i);
-    }
+    for (RigNodeIndex i = 0; i < rig.nodes.size(); ++i)
+        if (!rig.nodes[i].key.isRoot())
+            out[rig.nodes[i].key.copy()].push_back(i);
     return out;
 }
 
@@ -122,7 +123,7 @@ void RigAssembly::report(Severity severity, const model::TemplateInstance* insta
     d.severity = severity;
     if (instance) {
         d.message = "instance '" + instance->name + "' (" + instance->templateId + "): " + message;
-        d.subject = instance->name;
+        d.subject = subjectOf(*instance);
     } else {
         d.message = message;
     }
@@ -206,6 +207,38 @@ void computeLocalMatrices(model::Rig& rig)
                                                   : glm::inverse(rig.nodes[node.parent].worldMatrix) * node.worldMatrix;
 }
 
+// Per-node records of the guide (test pose, shape edits) whose node this build
+// does not make: reported by name and kept (a rebuild that brings the node back
+// applies them again). The rigger removes them.
+void reportOrphanRecords(const model::GuideDocument& guide, model::Rig& rig)
+{
+    auto label = [&](const NodeKey& key) {
+        const model::TemplateInstance* instance = guide.instance(key.instance);
+        const std::string name = instance ? instance->name : "#" + std::to_string(key.instance);
+        return name + (key.branch.empty() ? "" : "." + key.branch) + "::" + key.tag;
+    };
+    for (const auto& [key, channels] : guide.pose)
+        if (!rig.find(key)) {
+            Diagnostic d = makeWarning({}, "the test pose of '" + label(key) + "' matches no rig node; it is kept in the guide "
+                                           "(and applied again if the node comes back)");
+            d.subject = guide.instance(key.instance) ? Subject::ofInstance(key.instance, key.branch) : Subject{};
+            rig.diagnostics.push_back(std::move(d));
+        }
+    for (const auto& [text, channels] : guide.legacyPose)
+        rig.diagnostics.push_back(makeWarning({}, "the test pose of '" + text + "' (an older guide's record) names no "
+                                                  "instance of this guide; it is kept in the guide"));
+    for (const model::TemplateInstance& instance : guide.instances())
+        for (const auto& [tag, edit] : instance.shapes)
+            if (!rig.find(NodeKey{instance.id, {}, tag}) && !std::any_of(rig.nodes.begin(), rig.nodes.end(), [&](const model::RigNode& n) {
+                    return n.key.instance == instance.id && n.key.tag == tag;
+                })) {
+                Diagnostic d = makeWarning({}, "the shape edit of '" + instance.name + "::" + tag +
+                                                   "' matches no controller; it is kept in the guide");
+                d.subject = Subject::ofInstance(instance.id);
+                rig.diagnostics.push_back(std::move(d));
+            }
+}
+
 } // namespace
 
 std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& manifest,
@@ -238,7 +271,8 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     a.rig.diagnostics = branchDiagnostics;
     a.indexGuide();
     model::RigNode root;
-    root.id = "::rig";
+    root.key = {model::kNoId, {}, "rig"};
+    root.path = "::rig";
     root.name = guide.name.empty() ? "rig" : guide.name;
     a.addNode(root);
 
@@ -256,7 +290,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
         Diagnostics optionDiagnostics;
         record.options = resolveOptions(*record.manifest, *instance, optionDiagnostics);
         for (auto& d : optionDiagnostics) {
-            d.subject = instance->name;
+            d.subject = a.subjectOf(*instance);
             a.rig.diagnostics.push_back(d);
         }
         Diagnostics builderDiagnostics;
@@ -281,9 +315,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
         const auto spacesBefore = a.spaces;
         builder->generate(ctx);
         if (ctx.failed()) {
-            for (std::size_t i = nodesBefore; i < a.rig.nodes.size(); ++i)
-                a.rig.byId.erase(a.rig.nodes[i].id);
-            a.rig.nodes.resize(nodesBefore);
+            a.rig.truncate(nodesBefore);
             a.rig.constraints.resize(constraintsBefore);
             for (const auto& joint : record.instance->joints) // setHook only takes the instance's own joints
                 a.hooks.erase(joint.id);
@@ -315,6 +347,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     computeLocalMatrices(a.rig);
     for (const auto& plugin : builtinPlugins())
         plugin->finalize(a);
+    reportOrphanRecords(guide, a.rig);
     report(1.0, "done");
     return std::move(a.rig);
 }

@@ -20,7 +20,7 @@ namespace {
 
 using templates::ShapeSpec;
 
-std::string tagOf(const model::RigNode& node) { return node.id.substr(node.id.find("::") + 2); }
+const std::string& tagOf(const model::RigNode& node) { return node.key.tag; }
 
 // `pattern` matched against `tag`; the text the first '*' stood for goes to `capture`.
 bool matchKey(const std::string& pattern, const std::string& tag, std::string& capture)
@@ -251,8 +251,7 @@ struct PendingClone {
 void cloneCurves(RigAssembly& a, const PendingClone& c)
 {
     model::RigNode& node = a.rig.nodes[c.node];
-    const std::string source = c.record->instance->name + "::" + substitute(c.spec->clone, c.index);
-    auto found = a.rig.find(source);
+    auto found = a.rig.find(a.keyOf(*c.record->instance, substitute(c.spec->clone, c.index)));
     if (!found || a.rig.nodes[*found].curves.empty()) {
         a.report(Severity::Warning, c.record->instance, "shapes." + c.spec->key + ".clone: no controller '" +
                                                             substitute(c.spec->clone, c.index) + "' with curves");
@@ -283,10 +282,9 @@ void mirrorBranchShapes(RigAssembly& a)
         const BranchCopy& copy = a.copyOf(r.instance->id);
         if (copy.mirror == Mat4(1.0))
             continue;
-        const std::string own = r.instance->name + "::";
-        const std::string twin = a.guide.instance(copy.twin)->name + "::";
+        const std::string twinBranch = a.copyOf(copy.twin).branch();
         const Mat3 m(copy.mirror);
-        auto ownNodes = byInstance.find(r.instance->name);
+        auto ownNodes = byInstance.find(copy.key());
         if (ownNodes == byInstance.end())
             continue;
         int plane = -1, reflections = 0;
@@ -294,7 +292,7 @@ void mirrorBranchShapes(RigAssembly& a)
             if (copy.mirror[axis][axis] < 0.0) { plane = axis; ++reflections; }
         for (model::RigNodeIndex index : ownNodes->second) {
             auto& node = a.rig.nodes[index];
-            auto source = a.rig.find(twin + node.id.substr(own.size()));
+            auto source = a.rig.find(NodeKey{node.key.instance, twinBranch, node.key.tag});
             if (!source)
                 continue;
             if (reflections == 1) { // pose mirroring pairs the two sides
@@ -323,12 +321,12 @@ void mirrorBranchShapes(RigAssembly& a)
 // The rigger's shape edits (an instance's `shapes`), in the controller's space,
 // before the mirrored branches copy their twins' curves: moved CVs (the curve
 // sampled again), then the whole shape's transform.
-void applyShapeEdits(RigAssembly& a, const std::map<std::string, const InstanceRecord*>& records)
+void applyShapeEdits(RigAssembly& a, const std::map<CopyKey, const InstanceRecord*>& records)
 {
     for (auto& node : a.rig.nodes) {
         if (node.kind != model::RigNodeKind::Controller)
             continue;
-        const auto record = records.find(node.id.substr(0, node.id.find("::")));
+        const auto record = records.find(node.key.copy());
         if (record == records.end())
             continue;
         const auto& edits = record->second->instance->shapes;
@@ -360,16 +358,16 @@ void applyShapeEdits(RigAssembly& a, const std::map<std::string, const InstanceR
 
 void applyShapes(RigAssembly& a)
 {
-    std::map<std::string, const InstanceRecord*> records; // by (expanded) instance name
+    std::map<CopyKey, const InstanceRecord*> records; // by instance copy
     std::map<const templates::Shape*, SampledShape> sampled;
     std::vector<PendingClone> clones;
     for (const auto& r : a.records)
-        records[r.instance->name] = &r;
+        records[a.copyOf(r.instance->id).key()] = &r;
     for (model::RigNodeIndex n = 0; n < a.rig.nodes.size(); ++n) {
         auto& node = a.rig.nodes[n];
         if (node.kind != model::RigNodeKind::Controller)
             continue;
-        auto record = records.find(node.id.substr(0, node.id.find("::")));
+        auto record = records.find(node.key.copy());
         if (record == records.end())
             continue;
         const InstanceRecord& r = *record->second;

@@ -14,7 +14,7 @@ namespace {
 Vec3 cvWorld(const app::EditorSession& session, const std::string& id, int curve, int cv)
 {
     const model::Rig& rig = *session.rig();
-    return edit::cvWorldPosition(rig, {*rig.find(id), curve, cv});
+    return edit::cvWorldPosition(rig, {*rig.findPath(id), curve, cv});
 }
 
 QPoint pixelOf(viewport::ViewportWidget* view, const Vec3& world) { return view->toWidgetPixels(world); }
@@ -50,7 +50,7 @@ TEST(CvMode, ClicksAndBoxSelectCvsAndTheGizmoMovesThemAsOneUndoStep)
     w.buildRig();
     w.session().setMode(app::EditorMode::Guide);
     const std::string ik = "arm.L::ctrls.ik", twin = "arm.R::ctrls.ik";
-    const model::RigNodeIndex node = *w.session().rig()->find(ik);
+    const model::RigNodeIndex node = *w.session().rig()->findPath(ik);
 
     // Select the IK control, then F8: its CVs and hulls are drawn.
     w.session().selectControllers({node}, false);

@@ -4,6 +4,7 @@
 #include "LogPanel.h"
 #include "OutlinerView.h"
 #include "ViewportWidget.h"
+#include "edit/GuideEdits.h"
 #include "io/GuideFile.h"
 
 #include <QAction>
@@ -77,9 +78,9 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     const model::Rig* rig = w.session().rig();
     ASSERT_NE(rig, nullptr);
     EXPECT_FALSE(hasErrors(rig->diagnostics)) << formatAll(rig->diagnostics);
-    const auto root = rig->find(added.name + ".L::roots.0"); // built once per branch of the arm
+    const auto root = rig->findPath(added.name + ".L::roots.0"); // built once per branch of the arm
     ASSERT_TRUE(root);
-    EXPECT_EQ(rig->nodes[rig->nodes[*root].parent].id, "arm.L::blend.2") << "hung under the hand's hook";
+    EXPECT_EQ(rig->nodes[rig->nodes[*root].parent].path, "arm.L::blend.2") << "hung under the hand's hook";
     EXPECT_FALSE(w.viewportWidget()->scene().curves.empty()) << "controller curves shown after build";
     QTest::qWait(100);
     w.grab().save(QString::fromStdString(outputPath("editor-after-build.png")));
@@ -194,7 +195,7 @@ TEST(Editor, FileNewListsTheSamplesAndStartsAnUntitledCopy)
     w.action("build")->trigger();
     ASSERT_NE(w.session().rig(), nullptr);
     EXPECT_TRUE(w.session().rig()->diagnostics.empty()) << formatAll(w.session().rig()->diagnostics);
-    EXPECT_TRUE(w.session().rig()->find("hind_leg.R::rfoot.heel"));
+    EXPECT_TRUE(w.session().rig()->findPath("hind_leg.R::rfoot.heel"));
 
     w.action("new:empty")->trigger();
     EXPECT_TRUE(w.session().document().instances().empty());
@@ -217,4 +218,45 @@ TEST(Editor, OutlinerArrowKeysPickwalkTheTemplateInstances)
     QTest::keyClick(w.outliner(), Qt::Key_Left);
     EXPECT_EQ(selected(), "pinky"); // siblings wrap
     EXPECT_EQ(w.outliner()->selectedInstance(), w.session().selection().instance); // the tree follows
+}
+
+// The build log's messages about a mirrored copy (the R side of `branches: [L, R]`)
+// select the authored instance; one about a node of the copy also selects that node.
+TEST(Editor, ClickingADiagnosticAboutAMirroredCopySelectsItsSourceAndTheNode)
+{
+    Editor e;
+    app::MainWindow& w = e.window;
+    const model::InstanceId arm = w.session().document().instanceNamed("arm")->id;
+    model::PoseValues pose;
+    pose[{arm, "R", "ctrls.fk.9"}]["rx"] = 10.0; // no such control: the build reports it, on the R copy
+    ASSERT_FALSE(edit::setPose(w.session().history(), pose, "Pose"));
+    w.findChild<QAction*>("build")->trigger();
+    const model::Rig* rig = w.session().rig();
+    ASSERT_NE(rig, nullptr);
+    widgets::LogPanel* log = w.log();
+    auto rowContaining = [&](const QString& text) {
+        for (int row = log->count() - 1; row >= 0; --row)
+            if (log->item(row)->text().contains(text))
+                return log->item(row);
+        return static_cast<QListWidgetItem*>(nullptr);
+    };
+    w.session().select({});
+    QListWidgetItem* orphan = rowContaining("arm.R::ctrls.fk.9");
+    ASSERT_NE(orphan, nullptr);
+    log->scrollToItem(orphan);
+    QTest::mouseClick(log->viewport(), Qt::LeftButton, {}, log->visualItemRect(orphan).center());
+    EXPECT_EQ(w.session().selection().instance, arm);
+
+    // A message about a node of the mirrored copy (as the export checks make).
+    const auto ikRight = rig->findPath("arm.R::ctrls.ik");
+    ASSERT_TRUE(ikRight);
+    Diagnostic d = makeWarning({}, "a message about the right IK control");
+    d.subject = Subject::ofNode(rig->nodes[*ikRight].key);
+    log->addDiagnostics({d});
+    w.session().select({});
+    QListWidgetItem* item = log->item(log->count() - 1);
+    log->scrollToItem(item);
+    QTest::mouseClick(log->viewport(), Qt::LeftButton, {}, log->visualItemRect(item).center());
+    EXPECT_EQ(w.session().selection().instance, arm) << "the authored instance of the R copy";
+    EXPECT_EQ(w.session().selection().node, *ikRight) << "the mirrored node itself";
 }

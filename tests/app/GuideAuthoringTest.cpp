@@ -170,7 +170,7 @@ TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)
     w.buildRig();
     w.session().setMode(app::EditorMode::Guide);
     const model::Rig* rig = w.session().rig();
-    const auto ik = rig->find("arm.L::ctrls.ik");
+    const auto ik = rig->findPath("arm.L::ctrls.ik");
     ASSERT_TRUE(ik.has_value());
     w.session().selectControllers({*ik}, false);
     viewport::ViewportWidget* view = w.viewportWidget();
@@ -178,8 +178,8 @@ TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)
     view->setGizmoWorldSpace(true);
     ASSERT_TRUE(view->gizmo().has_value());
     EXPECT_LT(maxAbsDifference(view->gizmo()->target, rig->nodes[*ik].worldMatrix), 1e-9) << "on the shape, in the controller's frame";
-    const Vec3 rightBefore = translationOf(w.session().rig()->nodes[*w.session().rig()->find("arm.R::ctrls.ik")].worldMatrix *
-                                           glm::translate(glm::dmat4(1.0), w.session().rig()->nodes[*w.session().rig()->find("arm.R::ctrls.ik")].curves.front().points[0]));
+    const Vec3 rightBefore = translationOf(w.session().rig()->nodes[*w.session().rig()->findPath("arm.R::ctrls.ik")].worldMatrix *
+                                           glm::translate(glm::dmat4(1.0), w.session().rig()->nodes[*w.session().rig()->findPath("arm.R::ctrls.ik")].curves.front().points[0]));
     ASSERT_TRUE(dragGizmoHandle(view, 1));
 
     const auto* arm = w.session().document().instanceNamed("arm");
@@ -189,7 +189,7 @@ TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)
     EXPECT_EQ(w.session().history().undoText(), "Edit shape ctrls.ik of arm");
     EXPECT_FALSE(w.session().isRigStale()) << "rebuilt at once";
     EXPECT_EQ(w.session().mode(), app::EditorMode::Guide);
-    const auto& right = w.session().rig()->nodes[*w.session().rig()->find("arm.R::ctrls.ik")];
+    const auto& right = w.session().rig()->nodes[*w.session().rig()->findPath("arm.R::ctrls.ik")];
     const Vec3 rightAfter = translationOf(right.worldMatrix * glm::translate(glm::dmat4(1.0), right.curves.front().points[0]));
     EXPECT_GT(rightAfter.y - rightBefore.y, 0.01) << "the mirrored side follows";
     w.grab().save(QString::fromStdString(outputPath("shape-edit.png")));
@@ -204,11 +204,11 @@ TEST(GuideAuthoring, TheGizmoOnAMirroredCopysShapeEditsTheAuthoredSideReflected)
     w.buildRig();
     w.session().setMode(app::EditorMode::Guide);
     auto worldPoint = [&](const std::string& id) {
-        const model::RigNode& n = w.session().rig()->nodes[*w.session().rig()->find(id)];
+        const model::RigNode& n = w.session().rig()->nodes[*w.session().rig()->findPath(id)];
         return Vec3(n.worldMatrix * Vec4(n.curves.front().points[0], 1.0));
     };
     const Vec3 left0 = worldPoint("arm.L::ctrls.ik"), right0 = worldPoint("arm.R::ctrls.ik");
-    w.session().selectControllers({*w.session().rig()->find("arm.R::ctrls.ik")}, false);
+    w.session().selectControllers({*w.session().rig()->findPath("arm.R::ctrls.ik")}, false);
     viewport::ViewportWidget* view = w.viewportWidget();
     QTest::keyClick(view, Qt::Key_W);
     view->setGizmoWorldSpace(true);

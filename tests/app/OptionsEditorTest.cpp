@@ -113,7 +113,7 @@ TEST(OptionsEditor, NameOverridesRenameTheBuiltControls)
     EXPECT_EQ(w.session().history().undoText(), "Name ik of arm");
     w.action("build")->trigger();
     ASSERT_NE(w.session().rig(), nullptr);
-    const auto control = w.session().rig()->find("arm.L::ctrls.ik");
+    const auto control = w.session().rig()->findPath("arm.L::ctrls.ik");
     ASSERT_TRUE(control.has_value());
     EXPECT_EQ(w.session().rig()->nodes[*control].name, "c_arm_hand_L");
 

@@ -18,7 +18,7 @@ namespace {
 
 model::RigNodeIndex nodeId(app::MainWindow& w, const std::string& id)
 {
-    auto found = w.session().rig()->find(id);
+    auto found = w.session().rig()->findPath(id);
     EXPECT_TRUE(found.has_value()) << id;
     return found.value_or(0);
 }
@@ -88,10 +88,10 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
 
     // Pickwalk with the arrow keys, and M to the twin.
     QTest::keyClick(w.viewportWidget(), Qt::Key_M);
-    EXPECT_EQ(w.session().rig()->nodes[w.session().selection().node].id, "arm.R::ctrls.ik");
+    EXPECT_EQ(w.session().rig()->nodes[w.session().selection().node].path, "arm.R::ctrls.ik");
     ASSERT_TRUE(clickController(w, elbow));
     QTest::keyClick(w.viewportWidget(), Qt::Key_Up);
-    EXPECT_EQ(w.session().rig()->nodes[w.session().selection().node].id, "arm.L::ctrls.fk.0");
+    EXPECT_EQ(w.session().rig()->nodes[w.session().selection().node].path, "arm.L::ctrls.fk.0");
     QTest::keyClick(w.viewportWidget(), Qt::Key_Down);
     EXPECT_EQ(w.session().selection().node, elbow);
 

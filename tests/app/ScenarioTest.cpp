@@ -100,13 +100,13 @@ TEST(Scenario, FromSampleToSavedRigAndBackToTheStart)
     EXPECT_EQ(session.mode(), app::EditorMode::Rig);
     EXPECT_TRUE(w.statusBar()->currentMessage().contains(" ms, 0 errors")) << w.statusBar()->currentMessage().toStdString();
     const std::string digitName = session.document().instance(digit)->name;
-    const auto fk = rig->find(digitName + ".L::ctrls.fk.1");
+    const auto fk = rig->findPath(digitName + ".L::ctrls.fk.1");
     ASSERT_TRUE(fk.has_value()) << digitName;
 
     // 6. Pickwalk up the new finger's chain with the arrow keys.
     session.selectControllers({*fk}, false);
     QTest::keyClick(view, Qt::Key_Up);
-    EXPECT_EQ(rig->nodes[session.selection().node].id, digitName + ".L::ctrls.fk.0");
+    EXPECT_EQ(rig->nodes[session.selection().node].path, digitName + ".L::ctrls.fk.0");
     QApplication::processEvents();
     saveDock(w, "channelBoxDock", "scenario-channel-box-dock.png");
     saveDock(w, "logDock", "scenario-log-dock.png");

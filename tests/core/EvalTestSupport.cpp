@@ -18,7 +18,7 @@ PosedRig::PosedRig(const std::string& sample) : rig(rigging::buildRig(loadSample
 
 model::RigNodeIndex PosedRig::index(const std::string& id) const
 {
-    auto found = rig.find(id);
+    auto found = rig.findPath(id);
     EXPECT_TRUE(found.has_value()) << "no rig node " << id;
     return found.value_or(0);
 }

@@ -33,7 +33,7 @@ TEST_P(SampleEvaluation, DefaultPoseReproducesTheRestPose)
     ASSERT_TRUE(r.ok());
     const auto& state = r.evaluate(r.defaults());
     for (model::RigNodeIndex i = 0; i < r.rig.nodes.size(); ++i)
-        EXPECT_LT(maxAbsDifference(state.worldMatrix(i), r.rig.nodes[i].worldMatrix), 1e-9) << r.rig.nodes[i].id;
+        EXPECT_LT(maxAbsDifference(state.worldMatrix(i), r.rig.nodes[i].worldMatrix), 1e-9) << r.rig.nodes[i].path;
 }
 
 TEST_P(SampleEvaluation, GlobalScaleScalesEverySkinJointAboutTheWorldControl)
@@ -47,7 +47,7 @@ TEST_P(SampleEvaluation, GlobalScaleScalesEverySkinJointAboutTheWorldControl)
         if (r.rig.nodes[i].domain() != "skin")
             continue;
         EXPECT_LT(glm::length(translationOf(state.worldMatrix(i)) - 2.0 * translationOf(r.rig.nodes[i].worldMatrix)), 1e-9)
-            << r.rig.nodes[i].id;
+            << r.rig.nodes[i].path;
     }
 }
 
@@ -243,8 +243,8 @@ TEST(Evaluator, CompileRejectsConstraintCyclesWithTheirIds)
 {
     PosedRig r("prop");
     model::Rig rig = r.rig;
-    const auto chest = *rig.find("chest::ctrls.xform"), lid = *rig.find("lid::ctrls.xform");
-    rig.constraints.push_back({"test::cns.a", model::ConstraintKind::Parent, model::kNoId, {chest}, {lid}, {}, {}});
+    const auto chest = *rig.findPath("chest::ctrls.xform"), lid = *rig.findPath("lid::ctrls.xform");
+    rig.constraints.push_back({{}, "test::cns.a", model::ConstraintKind::Parent, model::kNoId, {chest}, {lid}, {}, {}});
     const auto program = eval::RigProgram::compile(rig);
     ASSERT_FALSE(program.ok());
     EXPECT_NE(program.diagnostics().front().message.find("cycle"), std::string::npos);
@@ -265,17 +265,17 @@ TEST(Evaluator, AimPointScaleConstraintsFollowTheirTargets)
 {
     PosedRig r("prop");
     model::Rig rig = r.rig;
-    const auto antenna = *rig.find("antenna::skin.3"), lid = *rig.find("lid::ctrls.xform"), chest = *rig.find("chest::ctrls.xform");
-    rig.constraints.push_back({"t::aim", model::ConstraintKind::Aim, model::kNoId, {antenna}, {lid}, {}, {{"aim", 1.0}, {"up", 0.0}}});
-    rig.constraints.push_back({"t::point", model::ConstraintKind::Point, model::kNoId, {*rig.find("antenna::skin.0")}, {chest, lid}, {}, {}});
-    rig.constraints.push_back({"t::scale", model::ConstraintKind::Scale, model::kNoId, {*rig.find("antenna::skin.1")}, {chest}, {}, {}});
+    const auto antenna = *rig.findPath("antenna::skin.3"), lid = *rig.findPath("lid::ctrls.xform"), chest = *rig.findPath("chest::ctrls.xform");
+    rig.constraints.push_back({{}, "t::aim", model::ConstraintKind::Aim, model::kNoId, {antenna}, {lid}, {}, {{"aim", 1.0}, {"up", 0.0}}});
+    rig.constraints.push_back({{}, "t::point", model::ConstraintKind::Point, model::kNoId, {*rig.findPath("antenna::skin.0")}, {chest, lid}, {}, {}});
+    rig.constraints.push_back({{}, "t::scale", model::ConstraintKind::Scale, model::kNoId, {*rig.findPath("antenna::skin.1")}, {chest}, {}, {}});
     auto program = eval::RigProgram::compile(rig);
     ASSERT_TRUE(program.ok());
     auto state = program->makeState();
     Pose pose = program->channels().defaults();
     program->evaluate(pose, state);
     for (model::RigNodeIndex i = 0; i < rig.nodes.size(); ++i)
-        ASSERT_LT(maxAbsDifference(state.worldMatrix(i), rig.nodes[i].worldMatrix), 1e-9) << rig.nodes[i].id;
+        ASSERT_LT(maxAbsDifference(state.worldMatrix(i), rig.nodes[i].worldMatrix), 1e-9) << rig.nodes[i].path;
     const int lidTx = program->channels().transformOf(lid), chestTx = program->channels().transformOf(chest);
     pose[lidTx + 0] = 0.4;     // the lid moves sideways
     pose[chestTx + 6] = 2.0;   // the chest scales in x
@@ -286,8 +286,8 @@ TEST(Evaluator, AimPointScaleConstraintsFollowTheirTargets)
     const Vec3 restAim = glm::normalize(translationOf(rig.nodes[lid].worldMatrix) - translationOf(rig.nodes[antenna].worldMatrix));
     // The antenna keeps its rest angle to the lid direction.
     EXPECT_NEAR(glm::dot(Mat3(state.worldMatrix(antenna)) * (glm::transpose(restAimFrame) * restAim), aim), 1.0, 1e-9);
-    EXPECT_NEAR(Vec3(state.worldMatrix(*rig.find("antenna::skin.1"))[0]).x, 2.0, 1e-9);
-    EXPECT_GT(translationOf(state.worldMatrix(*rig.find("antenna::skin.0"))).x, 0.1); // half of the lid's move, weighted
+    EXPECT_NEAR(Vec3(state.worldMatrix(*rig.findPath("antenna::skin.1"))[0]).x, 2.0, 1e-9);
+    EXPECT_GT(translationOf(state.worldMatrix(*rig.findPath("antenna::skin.0"))).x, 0.1); // half of the lid's move, weighted
 }
 
 TEST(Evaluator, EulerAnglesRoundTripInEveryRotateOrder)

@@ -25,9 +25,9 @@ model::Rig sampleRig(const std::string& name) { return rigging::buildRig(test::l
 model::Rig brokenBiped()
 {
     model::Rig rig = sampleRig("biped");
-    rig.nodes[*rig.find("arm.L::skin.limb.0")].name = "upper arm.L"; // not engine-safe
-    rig.nodes[*rig.find("arm.L::skin.limb.1")].name = "SK_ARM1_R";   // sk_arm1_R's name, ignoring case
-    auto& hand = rig.nodes[*rig.find("arm.L::skin.limb.2")];
+    rig.nodes[*rig.findPath("arm.L::skin.limb.0")].name = "upper arm.L"; // not engine-safe
+    rig.nodes[*rig.findPath("arm.L::skin.limb.1")].name = "SK_ARM1_R";   // sk_arm1_R's name, ignoring case
+    auto& hand = rig.nodes[*rig.findPath("arm.L::skin.limb.2")];
     hand.worldMatrix = hand.worldMatrix * glm::scale(Mat4(1.0), Vec3(1.0, 2.0, 1.0));
     return rig;
 }
@@ -54,7 +54,8 @@ TEST(ExportCheck, ReportsEachProblemWithItsNodeAndOffersSafeRenames)
     ASSERT_TRUE(check.hasErrors());
     std::map<std::string, std::string> bySubject;
     for (const auto& d : check.problems)
-        bySubject[d.subject] += d.message + "\n";
+        if (const auto node = rig.find(d.subject.node); node && d.subject.kind == Subject::Kind::Node)
+            bySubject[rig.nodes[*node].path] += d.message + "\n";
     EXPECT_NE(bySubject["arm.L::skin.limb.0"].find("not engine-safe"), std::string::npos);
     EXPECT_NE(bySubject["arm.L::skin.limb.0"].find("safe fix: rename to 'upper_arm_L'"), std::string::npos);
     const std::string clash = bySubject["arm.L::skin.limb.1"] + bySubject["arm.R::skin.limb.0"];
@@ -72,7 +73,7 @@ TEST(ExportCheck, ReportsEachProblemWithItsNodeAndOffersSafeRenames)
     }
     const auto recheck = io::checkSkeleton(rig, fixed);
     ASSERT_EQ(recheck.problems.size(), 1u); // only the scale is left: no safe fix changes the rig
-    EXPECT_EQ(recheck.problems.front().subject, "arm.L::skin.limb.2");
+    EXPECT_EQ(recheck.problems.front().subject, Subject::ofNode(test::node(rig, "arm.L::skin.limb.2").key));
 }
 
 TEST(ExportCheck, TheExportRefusesErrorsUnlessForced)
@@ -133,7 +134,7 @@ TEST(NameMap, ReadsIdsAndNamesFromYamlAndReportsBadEntriesWithTheirLine)
     EXPECT_EQ(skeleton.joints[1].name, "pelvis");
     bool renamed = false;
     for (const auto& joint : skeleton.joints)
-        renamed = renamed || (joint.name == "upperarm_l" && rig.nodes[joint.node].id == "arm.L::skin.limb.0");
+        renamed = renamed || (joint.name == "upperarm_l" && rig.nodes[joint.node].path == "arm.L::skin.limb.0");
     EXPECT_TRUE(renamed);
 
     const auto bad = io::readNameMapText("rigsmith_names: 1\nnames:\n  sk_arm1_L: [a, b]\n", "bad.yml");

@@ -83,7 +83,7 @@ TEST(SkinnedMesh, InfluenceProblemsAreReportedAndLimitingFixesThem)
     EXPECT_EQ(problems[0].message, "mesh body: 1 vertex bound to joints that are not in the export skeleton (first: vertex 2)");
     EXPECT_EQ(problems[1].message, "mesh body: 1 vertex with more than 4 influences (fix: keep the largest and renormalise) (first: vertex 0)");
     EXPECT_EQ(problems[2].message, "mesh body: 1 vertex whose weights do not sum to 1 (fix: normalise) (first: vertex 1)");
-    EXPECT_EQ(problems[0].subject, "body");
+    EXPECT_EQ(problems[0].subject, Subject::ofMesh("body"));
 
     mesh.influences.back().joint = 6;
     const io::SkinnedMesh fixed = io::limitInfluences(mesh);
@@ -145,7 +145,7 @@ TEST(RigExport, ControllersAreTaggedNodesOutsideTheSkin)
 
 TEST(RigExport, CurrentPoseMovesTheNodesAndKeepsTheBindPose)
 {
-    const model::PoseValues pose{{"arm.L::ctrls.clavicle", {{"rz", 40.0}}}};
+    const model::PoseValues pose{{test::node(biped(), "arm.L::ctrls.clavicle").key, {{"rz", 40.0}}}};
     io::ExportOptions options;
     options.pose = &pose;
     const std::string rest = test::temporaryPath("rest.glb"), posed = test::temporaryPath("posed.glb");

@@ -78,8 +78,8 @@ hierarchy:
 
     std::string virtualParentOf(const model::Rig& rig, const std::string& id)
     {
-        const auto& node = rig.nodes[*rig.find("arm::" + id)];
-        return node.virtualParent == model::kNoNode ? "(none)" : rig.nodes[node.virtualParent].id;
+        const auto& node = rig.nodes[*rig.findPath("arm::" + id)];
+        return node.virtualParent == model::kNoNode ? "(none)" : rig.nodes[node.virtualParent].path;
     }
 
     templates::TemplateRegistry registry;

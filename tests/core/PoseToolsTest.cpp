@@ -31,7 +31,7 @@ Pose randomLeftPose(const PosedRig& r, unsigned seed)
     const auto& layout = r.program->channels();
     for (std::size_t i = 0; i < layout.size(); ++i) {
         const auto& c = layout[i];
-        const std::string& id = r.rig.nodes[c.node].id;
+        const std::string& id = r.rig.nodes[c.node].path;
         if (c.locked || id.find(".L::") == std::string::npos || c.isEnum())
             continue;
         if (c.transform >= 0 && c.transform < 3) pose[i] = offset(random);
@@ -46,7 +46,7 @@ TEST(PoseTools, MirroredBipedPoseIsSymmetricWithinAMicrometre)
     PosedRig r("biped");
     std::vector<model::RigNodeIndex> left;
     for (model::RigNodeIndex i : r.rig.sets.at("controllers"))
-        if (r.rig.nodes[i].id.find(".L::") != std::string::npos)
+        if (r.rig.nodes[i].path.find(".L::") != std::string::npos)
             left.push_back(i);
     ASSERT_GT(left.size(), 30u);
     const Pose pose = r.posing->mirror(randomLeftPose(r, 11), left);
@@ -54,10 +54,10 @@ TEST(PoseTools, MirroredBipedPoseIsSymmetricWithinAMicrometre)
     int pairs = 0;
     for (model::RigNodeIndex i = 0; i < r.rig.nodes.size(); ++i) {
         const auto& node = r.rig.nodes[i];
-        if (node.twin == model::kNoNode || node.id.find(".L::") == std::string::npos)
+        if (node.twin == model::kNoNode || node.path.find(".L::") == std::string::npos)
             continue;
         ++pairs;
-        EXPECT_LT(maxAbsDifference(state.worldMatrix(node.twin), reflected(state.worldMatrix(i))), 1e-6) << node.id;
+        EXPECT_LT(maxAbsDifference(state.worldMatrix(node.twin), reflected(state.worldMatrix(i))), 1e-6) << node.path;
     }
     EXPECT_GT(pairs, 100);
 }
@@ -106,7 +106,7 @@ TEST(PoseTools, IkToFkAndFkToIkMatchWithinTenMicrometres)
     }
     std::string error;
     EXPECT_FALSE(r.posing->ikToFk(r.defaults(), r.index("neck::ctrls.head"), error));
-    EXPECT_EQ(error, "'neck' has no FK/IK limb to match");
+    EXPECT_EQ(error, "'neck::ctrls.head' is not on an FK/IK limb to match");
 }
 
 TEST(PoseTools, SpaceSwitchWithMatchingKeepsTheHeadWhereItIs)
@@ -191,7 +191,7 @@ TEST(PoseTools, PoseEditsAreUndoableAndSavedWithTheGuide)
     pose[r.channel("arm.L::ctrls.fk.0", "rz")] = 45.0;
     ASSERT_FALSE(edit::setPose(history, eval::valuesFromPose(r.rig, r.program->channels(), pose, guide.pose), "Rotate c_arm1_L"));
     EXPECT_EQ(history.undoText(), "Rotate c_arm1_L");
-    EXPECT_EQ(guide.pose.at("arm.L::ctrls.fk.0").at("rz"), 45.0);
+    EXPECT_EQ(guide.pose.at(r.rig.nodes[r.index("arm.L::ctrls.fk.0")].key).at("rz"), 45.0);
     EXPECT_TRUE(edit::setPose(history, guide.pose, "nothing")); // refused: no empty step
     const auto reread = io::readGuideText(io::writeGuideText(guide), "pose.yml");
     ASSERT_TRUE(reread.ok());
@@ -204,7 +204,8 @@ TEST(PoseTools, PoseEditsAreUndoableAndSavedWithTheGuide)
 TEST(PoseTools, PosedRigCarriesTheGuidePoseForDumpsAndExports)
 {
     PosedRig r("biped");
-    model::PoseValues values{{"arm.L::ctrls.switch", {{"ik_blend", 0.0}}}, {"arm.L::ctrls.fk.0", {{"rz", -50.0}}}};
+    model::PoseValues values{{r.rig.nodes[r.index("arm.L::ctrls.switch")].key, {{"ik_blend", 0.0}}},
+                             {r.rig.nodes[r.index("arm.L::ctrls.fk.0")].key, {{"rz", -50.0}}}};
     auto posed = eval::posedRig(r.rig, values);
     ASSERT_TRUE(posed.ok());
     const auto& state = r.evaluate(eval::poseFromValues(r.rig, r.program->channels(), values));
@@ -221,7 +222,7 @@ TEST(Pickwalk, WalksTheBipedControllersAcrossTemplates)
     auto walk = [&](const std::string& from, std::initializer_list<WalkDirection> keys) {
         model::RigNodeIndex at = r.index(from);
         for (auto key : keys) at = eval::pickwalk(r.rig, at, key);
-        return r.rig.nodes[at].id;
+        return r.rig.nodes[at].path;
     };
     using enum WalkDirection;
     EXPECT_EQ(walk("arm.L::ctrls.fk.2", {Up}), "arm.L::ctrls.fk.1");
@@ -238,7 +239,7 @@ TEST(Pickwalk, WalksTheBipedControllersAcrossTemplates)
     model::RigNodeIndex at = r.index("index.L::ctrls.fk.0");
     std::vector<std::string> seen;
     for (int i = 0; i < 16 && (i == 0 || at != r.index("index.L::ctrls.fk.0")); ++i) {
-        seen.push_back(r.rig.nodes[at].id);
+        seen.push_back(r.rig.nodes[at].path);
         at = eval::pickwalk(r.rig, at, Right);
     }
     EXPECT_EQ(at, r.index("index.L::ctrls.fk.0"));

@@ -19,7 +19,7 @@ model::Rig buildBiped(const model::GuideDocument& doc)
 
 model::CurveCv cvOf(const model::Rig& rig, const std::string& id, int curve, int cv)
 {
-    return {*rig.find(id), curve, cv};
+    return {*rig.findPath(id), curve, cv};
 }
 
 Vec3 reflectedX(const Vec3& v) { return Vec3(-v.x, v.y, v.z); }
@@ -28,7 +28,7 @@ Vec3 reflectedX(const Vec3& v) { return Vec3(-v.x, v.y, v.z); }
 std::vector<Vec3> worldCvs(const model::Rig& rig, const std::string& id)
 {
     std::vector<Vec3> out;
-    const model::RigNodeIndex n = *rig.find(id);
+    const model::RigNodeIndex n = *rig.findPath(id);
     for (int k = 0; k < int(rig.nodes[n].curves.size()); ++k)
         for (int i = 0; i < int(rig.nodes[n].curves[k].cvs.size()); ++i)
             out.push_back(edit::cvWorldPosition(rig, {n, k, i}));
@@ -50,11 +50,11 @@ TEST(ShapeCvEdit, BuiltCurvesCarryTheirCvsAndAreSampledFromThem)
     int curves = 0;
     for (const model::RigNode& node : rig.nodes)
         for (const model::ControllerCurve& curve : node.curves) {
-            ASSERT_FALSE(curve.cvs.empty()) << node.id;
+            ASSERT_FALSE(curve.cvs.empty()) << node.path;
             const auto sampled = evaluateNurbs(curve.cvs, curve.degree, curve.periodic);
-            ASSERT_EQ(sampled.size(), curve.points.size()) << node.id;
+            ASSERT_EQ(sampled.size(), curve.points.size()) << node.path;
             for (std::size_t i = 0; i < sampled.size(); ++i)
-                ASSERT_LT(glm::length(sampled[i] - curve.points[i]), 1e-9) << node.id << " point " << i;
+                ASSERT_LT(glm::length(sampled[i] - curve.points[i]), 1e-9) << node.path << " point " << i;
             ++curves;
         }
     EXPECT_GT(curves, 80);
@@ -145,7 +145,7 @@ TEST(ShapeCvEdit, CvsOfTheMirroredCopyAndOfATransformedShapeAreEditedExactly)
         mirrored.push_back(reflectedX(p));
     expectNear(worldCvs(after, left), mirrored, "left = right reflected");
     // The preview showed what the build makes.
-    const model::RigNodeIndex r = *before.find(right);
+    const model::RigNodeIndex r = *before.findPath(right);
     for (std::size_t i = 0; i < preview.at(r)[0].cvs.size(); ++i)
         EXPECT_LT(glm::length(preview.at(r)[0].cvs[i] - test::node(after, right).curves[0].cvs[i]), 1e-9);
 }

@@ -84,7 +84,7 @@ shapes:
         return rigging::buildRig(guide, registry);
     }
 
-    const model::RigNode& node(const model::Rig& rig, const std::string& id) { return rig.nodes[*rig.find(id)]; }
+    const model::RigNode& node(const model::Rig& rig, const std::string& id) { return rig.nodes[*rig.findPath(id)]; }
 
     std::string folder;
     templates::TemplateRegistry registry;

@@ -23,7 +23,7 @@ using test::node;
 const model::RigConstraint* constraint(const model::Rig& rig, const std::string& id)
 {
     for (const auto& c : rig.constraints)
-        if (c.id == id)
+        if (c.path == id)
             return &c;
     ADD_FAILURE() << "no constraint " << id;
     return nullptr;
@@ -48,7 +48,7 @@ std::string caseName(const testing::TestParamInfo<std::string>& info)
 std::size_t countTagged(const model::Rig& rig, const std::string& prefix)
 {
     return static_cast<std::size_t>(std::count_if(rig.nodes.begin(), rig.nodes.end(), [&](const model::RigNode& n) {
-        return n.id.rfind(prefix, 0) == 0;
+        return n.path.rfind(prefix, 0) == 0;
     }));
 }
 
@@ -96,19 +96,19 @@ TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
     mirror[0][0] = -1.0;
     std::size_t pairs = 0;
     for (const auto& n : rig.nodes) {
-        const auto r = n.id.find(".R::");
+        const auto r = n.path.find(".R::");
         if (r == std::string::npos)
             continue;
-        const auto& left = node(rig, std::string(n.id).replace(r, 4, ".L::"));
-        EXPECT_LT(maxAbsDifference(n.worldMatrix, mirror * left.worldMatrix * mirror), 1e-6) << n.id;
-        EXPECT_EQ(n.name.substr(0, n.name.rfind("_R")), left.name.substr(0, left.name.rfind("_L"))) << n.id;
+        const auto& left = node(rig, std::string(n.path).replace(r, 4, ".L::"));
+        EXPECT_LT(maxAbsDifference(n.worldMatrix, mirror * left.worldMatrix * mirror), 1e-6) << n.path;
+        EXPECT_EQ(n.name.substr(0, n.name.rfind("_R")), left.name.substr(0, left.name.rfind("_L"))) << n.path;
         ++pairs;
     }
     EXPECT_EQ(pairs, 130u) << "arms (with their IK space groups), legs and ten fingers";
     // Constraints come in pairs too.
     for (const auto& c : rig.constraints)
-        if (auto r = c.id.find(".R::"); r != std::string::npos)
-            constraint(rig, std::string(c.id).replace(r, 4, ".L::"));
+        if (auto r = c.path.find(".R::"); r != std::string::npos)
+            constraint(rig, std::string(c.path).replace(r, 4, ".L::"));
 }
 
 TEST(Templates, ANewBipedLooksLikeA180CentimetreHuman)
@@ -136,12 +136,12 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     ASSERT_NE(ik, nullptr);
     EXPECT_EQ(ik->kind, ConstraintKind::Ik);
     EXPECT_EQ(ik->driven.size(), 3u);
-    EXPECT_EQ(rig.nodes[ik->targets[1]].id, "arm.L::ctrls.pole");
+    EXPECT_EQ(rig.nodes[ik->targets[1]].path, "arm.L::ctrls.pole");
     EXPECT_EQ(ik->attributes.at("stretch"), "arm.L::ctrls.switch.stretch");
     const auto* blend = constraint(rig, "arm.L::cns.blend.1");
     ASSERT_NE(blend, nullptr);
-    EXPECT_EQ(rig.nodes[blend->targets[0]].id, "arm.L::ctrls.fk.1");
-    EXPECT_EQ(rig.nodes[blend->targets[1]].id, "arm.L::ik.1");
+    EXPECT_EQ(rig.nodes[blend->targets[0]].path, "arm.L::ctrls.fk.1");
+    EXPECT_EQ(rig.nodes[blend->targets[1]].path, "arm.L::ik.1");
     // Two twist joints per segment by default, at 1/3 and 2/3 of the upper arm.
     EXPECT_EQ(countTagged(rig, "arm.L::skin.up."), 2u);
     EXPECT_EQ(countTagged(rig, "arm.L::skin.dn."), 2u);
@@ -155,11 +155,11 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     EXPECT_GT(at(rig, "leg.L::ctrls.pole").z, at(rig, "leg.L::blend.1").z + 0.1);
     // IK controllers live in a space group under the post transform, switched by
     // their space attribute (world by default; cog, hips... on demand).
-    EXPECT_EQ(rig.nodes[node(rig, "leg.L::roots.ik").parent].id, "leg.L::spaces.ik");
-    EXPECT_EQ(rig.nodes[node(rig, "leg.L::spaces.ik").parent].id, "world::grps.post");
+    EXPECT_EQ(rig.nodes[node(rig, "leg.L::roots.ik").parent].path, "leg.L::spaces.ik");
+    EXPECT_EQ(rig.nodes[node(rig, "leg.L::spaces.ik").parent].path, "world::grps.post");
     const auto* space = constraint(rig, "leg.L::cns.ik_space");
     ASSERT_NE(space, nullptr);
-    EXPECT_EQ(rig.nodes[space->targets[2]].id, "spine::ctrls.cog");
+    EXPECT_EQ(rig.nodes[space->targets[2]].path, "spine::ctrls.cog");
     EXPECT_EQ(node(rig, "leg.L::ctrls.ik").attribute("space")->labels,
               (std::vector<std::string>{"world", "root", "cog", "hips"}));
 }
@@ -178,8 +178,8 @@ TEST(Templates, TheOptionsChangeWhatTheLimbBuilds)
     EXPECT_EQ(countTagged(rig, "arm.R::skin.up."), 4u);
     EXPECT_EQ(countTagged(rig, "arm.R::skin.dn."), 0u);
     EXPECT_EQ(countTagged(rig, "arm.R::skin.mid."), 0u);
-    EXPECT_FALSE(rig.find("arm.L::ctrls.clavicle"));
-    EXPECT_EQ(rig.nodes[node(rig, "arm.L::grps.limb").parent].id, "spine::blend.4") << "hangs on the chest hook";
+    EXPECT_FALSE(rig.findPath("arm.L::ctrls.clavicle"));
+    EXPECT_EQ(rig.nodes[node(rig, "arm.L::grps.limb").parent].path, "spine::blend.4") << "hangs on the chest hook";
     EXPECT_EQ(node(rig, "arm.L::ctrls.switch").attribute("stretch")->value, 0.0);
 }
 
@@ -188,8 +188,8 @@ TEST(Templates, TheLegHasAReverseFootFromTaggedPivots)
     const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
     // ik > heel > toe > bank_ext > bank_int > ball > ankle (the IK effector)
     std::string chain;
-    for (auto i = *rig.find("leg.L::rfoot.ankle"); i != *rig.find("leg.L::ctrls.ik"); i = rig.nodes[i].parent)
-        chain = rig.nodes[i].id.substr(rig.nodes[i].id.find("::") + 2) + (chain.empty() ? "" : " > ") + chain;
+    for (auto i = *rig.findPath("leg.L::rfoot.ankle"); i != *rig.findPath("leg.L::ctrls.ik"); i = rig.nodes[i].parent)
+        chain = rig.nodes[i].path.substr(rig.nodes[i].path.find("::") + 2) + (chain.empty() ? "" : " > ") + chain;
     EXPECT_EQ(chain, "rfoot.heel > rfoot.toe > rfoot.bank_ext > rfoot.bank_int > rfoot.ball > rfoot.ankle");
     const auto guide = test::loadSample("biped");
     const auto* leg = guide.instanceNamed("leg");
@@ -200,7 +200,7 @@ TEST(Templates, TheLegHasAReverseFootFromTaggedPivots)
         ASSERT_NE(joint, leg->joints.end()) << tag;
         EXPECT_LT(glm::length(at(rig, std::string("leg.L::rfoot.") + tag) - Vec3(guide.jointWorldMatrix(joint->id)[3])), 1e-9) << tag;
     }
-    EXPECT_EQ(rig.nodes[constraint(rig, "leg.L::cns.ik")->targets[0]].id, "leg.L::rfoot.ankle");
+    EXPECT_EQ(rig.nodes[constraint(rig, "leg.L::cns.ik")->targets[0]].path, "leg.L::rfoot.ankle");
     const auto& ik = node(rig, "leg.L::ctrls.ik");
     for (const char* attribute : {"roll", "roll_break", "bank", "heel_twist", "toe_twist", "toe_tap"})
         EXPECT_NE(ik.attribute(attribute), nullptr) << attribute;
@@ -216,7 +216,7 @@ TEST(Templates, TheHeadFollowsTheSpaceItsOptionPicks)
     ASSERT_NE(space, nullptr);
     std::vector<std::string> targets;
     for (auto t : space->targets)
-        targets.push_back(rig.nodes[t].id);
+        targets.push_back(rig.nodes[t].path);
     EXPECT_EQ(targets, (std::vector<std::string>{"neck::ctrls.fk.1", "spine::blend.4", "spine::ctrls.cog", "world::grps.post"}));
     EXPECT_EQ(node(rig, "neck::ctrls.head").attribute("space")->value, 3.0);
 }
@@ -224,11 +224,11 @@ TEST(Templates, TheHeadFollowsTheSpaceItsOptionPicks)
 TEST(Templates, FingersFollowTheHandOfTheirBranch)
 {
     const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
-    EXPECT_EQ(rig.nodes[node(rig, "index.R::roots.fk.0").parent].id, "arm.R::blend.2");
+    EXPECT_EQ(rig.nodes[node(rig, "index.R::roots.fk.0").parent].path, "arm.R::blend.2");
     EXPECT_EQ(node(rig, "index.L::ctrls.fk.0").name, "c_index_base_L");
     EXPECT_EQ(node(rig, "index.L::ctrls.fk.1").name, "c_index1_L");
-    EXPECT_EQ(rig.nodes[node(rig, "index.L::skin.0").virtualParent].id, "arm.L::skin.limb.2");
-    EXPECT_EQ(rig.nodes[node(rig, "index.L::ctrls.fk.0").virtualParent].id, "arm.L::ctrls.fk.2");
+    EXPECT_EQ(rig.nodes[node(rig, "index.L::skin.0").virtualParent].path, "arm.L::skin.limb.2");
+    EXPECT_EQ(rig.nodes[node(rig, "index.L::ctrls.fk.0").virtualParent].path, "arm.L::ctrls.fk.2");
     EXPECT_NE(node(rig, "index.L::ctrls.fk.0").attribute("curl"), nullptr);
 }
 
@@ -271,7 +271,7 @@ TEST(Templates, BadGuidesGiveDiagnosticsAndSaneFallbacks)
         for (const auto& n : rig.nodes)
             for (int c = 0; c < 4; ++c)
                 for (int r = 0; r < 4; ++r)
-                    ASSERT_TRUE(std::isfinite(n.worldMatrix[c][r])) << n.id;
+                    ASSERT_TRUE(std::isfinite(n.worldMatrix[c][r])) << n.path;
     }
     {   // A spine with too few joints: refused whole, naming the option; children attach above.
         model::GuideDocument guide = test::loadSample("biped");
@@ -287,7 +287,7 @@ TEST(Templates, BadGuidesGiveDiagnosticsAndSaneFallbacks)
         EXPECT_EQ(rig.diagnostics[0].message, "instance 'spine' (spine.torso): the spine needs at least 3 guide joints (hips, one "
                                               "spine joint, chest); it has 2 (option 'number')");
         EXPECT_EQ(countTagged(rig, "spine::"), 0u) << "never half-built";
-        EXPECT_EQ(rig.nodes[node(rig, "neck::roots.fk.0").parent].id, "world::ctrls.fly");
+        EXPECT_EQ(rig.nodes[node(rig, "neck::roots.fk.0").parent].path, "world::ctrls.fly");
     }
 }
 

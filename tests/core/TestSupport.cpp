@@ -43,7 +43,7 @@ model::GuideDocument loadSample(const std::string& name)
 
 const model::RigNode& node(const model::Rig& rig, const std::string& id)
 {
-    auto index = rig.find(id);
+    auto index = rig.findPath(id);
     EXPECT_TRUE(index.has_value()) << "no rig node " << id;
     static const model::RigNode none;
     return index ? rig.nodes[*index] : none;

@@ -47,12 +47,12 @@ TEST(Picking, PicksAControllerCurveAwayFromJoints)
 {
     Fixture f;
     f.scene.showGuides = false;
-    const auto node = *f.rig.find("world::ctrls.world");
+    const auto node = *f.rig.findPath("world::ctrls.world");
     const auto& curve = f.rig.nodes[node].curves[0];
     const glm::dvec3 onCurve = glm::dvec3(f.rig.nodes[node].worldMatrix * glm::dvec4(curve.points[5], 1.0));
     const PickResult hit = pick(f.scene, f.camera, 800, 600, f.pixelOf(onCurve));
     ASSERT_EQ(hit.kind, PickResult::Kind::Controller);
-    EXPECT_EQ(f.rig.nodes[hit.node].id, "world::ctrls.world");
+    EXPECT_EQ(f.rig.nodes[hit.node].path, "world::ctrls.world");
 }
 
 TEST(Picking, MissesEmptySpace)
@@ -64,7 +64,7 @@ TEST(Picking, MissesEmptySpace)
 TEST(Picking, CvModeShowsTheSelectedControllersCvsAndPicksThemFirst)
 {
     Fixture f;
-    const auto node = *f.rig.find("arm.L::ctrls.ik");
+    const auto node = *f.rig.findPath("arm.L::ctrls.ik");
     SceneSelection selection;
     selection.node = node;
     selection.nodes = {node};
