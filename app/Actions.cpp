@@ -80,19 +80,7 @@ void MainWindow::createActions()
     connect(redo, &QAction::triggered, this, [this] { m_session.history().redo(); });
     connect(build, &QAction::triggered, this, &MainWindow::buildRig);
     connect(reload, &QAction::triggered, this, &MainWindow::reloadTemplates);
-    auto updateUndo = [this, undo, redo] {
-        auto& h = m_session.history();
-        undo->setEnabled(h.canUndo());
-        redo->setEnabled(h.canRedo());
-        undo->setText(h.canUndo() ? tr("&Undo %1").arg(QString::fromStdString(h.undoText())) : tr("&Undo"));
-        redo->setText(h.canRedo() ? tr("&Redo %1").arg(QString::fromStdString(h.redoText())) : tr("&Redo"));
-        undo->setIconText(tr("Undo")); // the toolbar keeps a short label; the menu and tooltip name the step
-        redo->setIconText(tr("Redo"));
-        undo->setToolTip(undo->text().remove('&'));
-        redo->setToolTip(redo->text().remove('&'));
-    };
-    connect(&m_session, &EditorSession::documentChanged, this, updateUndo);
-    updateUndo();
+    updateUndoActions();
 
     QMenu* file = menuBar()->addMenu(tr("&File"));
     // File > New: an empty guide or a copy of a bundled sample (biped, quadruped, prop).
@@ -170,9 +158,6 @@ void MainWindow::createPoseActions()
             buildRig();
         m_session.setMode(EditorMode::Rig);
     });
-    connect(&m_session, &EditorSession::modeChanged, this, [this, guideMode, rigMode] {
-        (m_session.mode() == EditorMode::Rig ? rigMode : guideMode)->setChecked(true);
-    });
 
     const std::tuple<const char*, QString, QKeySequence, PoseTool> tools[] = {
         {"resetSelected", tr("Reset &Selected"), QKeySequence(tr("Ctrl+Shift+R")), PoseTool::ResetSelected},
@@ -188,8 +173,8 @@ void MainWindow::createPoseActions()
         QAction* a = makeAction(this, name, text, shortcut);
         const PoseTool t = tool;
         connect(a, &QAction::triggered, this, [this, t] {
-            if (const QString error = m_session.applyPoseTool(t); !error.isEmpty())
-                m_log->addMessage(error, Severity::Warning);
+            if (const auto error = m_session.applyPoseTool(t))
+                m_log->addMessage(QString::fromStdString(*error), Severity::Warning);
         });
         pose->addAction(a);
         if (t == PoseTool::ResetAll || t == PoseTool::Flip)
@@ -205,6 +190,31 @@ void MainWindow::createPoseActions()
     QToolBar* bar = findChild<QToolBar*>("mainToolBar");
     bar->addSeparator();
     bar->addActions({guideMode, rigMode});
+}
+
+void MainWindow::updateUndoActions()
+{
+    QAction* undo = action("undo");
+    QAction* redo = action("redo");
+    if (!undo || !redo)
+        return;
+    const auto& h = m_session.history();
+    undo->setEnabled(h.canUndo());
+    redo->setEnabled(h.canRedo());
+    undo->setText(h.canUndo() ? tr("&Undo %1").arg(QString::fromStdString(h.undoText())) : tr("&Undo"));
+    redo->setText(h.canRedo() ? tr("&Redo %1").arg(QString::fromStdString(h.redoText())) : tr("&Redo"));
+    undo->setIconText(tr("Undo")); // the toolbar keeps a short label; the menu and tooltip name the step
+    redo->setIconText(tr("Redo"));
+    undo->setToolTip(undo->text().remove('&'));
+    redo->setToolTip(redo->text().remove('&'));
+}
+
+void MainWindow::followMode()
+{
+    const bool rigMode = m_session.mode() == EditorMode::Rig;
+    if (QAction* a = action(rigMode ? "modeRig" : "modeGuide"))
+        a->setChecked(true);
+    m_viewport->setRigMode(rigMode);
 }
 
 } // namespace rs::app

@@ -21,9 +21,9 @@ QString EditorSession::autosavePathFor(const QString& path)
 
 bool EditorSession::autosave(Diagnostics& diagnostics) const
 {
-    if (m_history.isClean())
+    if (history().isClean())
         return false;
-    diagnostics = io::saveGuideFile(m_document, autosavePath().toStdString());
+    diagnostics = io::saveGuideFile(document(), autosavePath().toStdString());
     m_ownsAutosave = m_ownsAutosave || !hasErrors(diagnostics);
     return !hasErrors(diagnostics);
 }
@@ -49,9 +49,9 @@ bool EditorSession::recover(const QString& path, Diagnostics& diagnostics)
     diagnostics = loaded.takeDiagnostics();
     if (!loaded)
         return false;
-    replaceDocument(loaded.take(), path);
+    replaceWith(loaded.take(), path);
     m_ownsAutosave = true; // saving the recovered guide removes it
-    m_history.setModified();
+    history().setModified();
     return true;
 }
 

@@ -1,52 +1,42 @@
 #include "EditorSession.h"
 
-#include "rigging/RigBuilder.h"
-#include "edit/GuideEdits.h"
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
+#include "io/ReferenceModel.h"
 
-#include <chrono>
+#include <filesystem>
 
 namespace rs::app {
 
 namespace {
 
-// The guide without its test pose: what a build depends on.
-bool sameGuide(const model::GuideDocument& a, const model::GuideDocument& b)
+std::shared_ptr<const templates::TemplateRegistry> loadTemplates(Diagnostics& diagnostics)
 {
-    return a.name == b.name && a.naming == b.naming && a.instances() == b.instances();
+    return templates::TemplateRegistry::loadDefault(diagnostics);
 }
 
-// Only shape edits differ: a rebuild cannot fail or move anything else.
-bool differsOnlyInShapes(const model::GuideDocument& a, const model::GuideDocument& b)
+std::optional<std::vector<glm::vec3>> readReference(const std::string& path, Diagnostics& diagnostics)
 {
-    if (!(a.name == b.name && a.naming == b.naming && a.instances().size() == b.instances().size()))
-        return false;
-    for (std::size_t i = 0; i < a.instances().size(); ++i) {
-        model::TemplateInstance x = a.instances()[i], y = b.instances()[i];
-        x.shapes.clear();
-        y.shapes.clear();
-        if (!(x == y))
-            return false;
-    }
-    return true;
+    auto model = io::loadReferenceModel(path);
+    diagnostics = model.diagnostics();
+    return model ? std::optional(model.take().triangles) : std::nullopt;
 }
 
 } // namespace
 
-EditorSession::EditorSession(QObject* parent) : QObject(parent)
+EditorSession::EditorSession(QObject* parent) : QObject(parent), session::Session(nullptr)
 {
     qRegisterMetaType<rs::Diagnostics>();
-    m_templates = templates::TemplateRegistry::loadDefault(m_templateDiagnostics);
-    m_history.addListener([this] {
-        m_rigStale = m_rig.has_value() && !sameGuide(m_document, m_builtFrom); // posing does not age the rig
-        if (m_selection.instance != model::kNoId && !m_document.instance(m_selection.instance))
-            m_selection = {};
-        if (m_rigStale && differsOnlyInShapes(m_document, m_builtFrom))
-            build(); // a shape edit (or its undo) shows at once, on both sides of mirrored branches
-        syncReference();
-        emit documentChanged();
-        poseFromDocument();
+    qRegisterMetaType<rs::edit::Change>();
+    setTemplates(loadTemplates(m_templateDiagnostics));
+    setReporter([this](const Diagnostics& diagnostics) { emit diagnosticsReported(diagnostics); });
+    setBuildProgress([this](double fraction, const std::string& stage) {
+        emit buildProgressed(fraction, QString::fromStdString(stage));
+    });
+    subscribe([this](const session::Change& change) {
+        if (change.has(session::ChangeKind::Reference) || change.has(session::ChangeKind::Document))
+            syncReference();
+        emit changed(change);
     });
 }
 
@@ -58,23 +48,16 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
     diagnostics = loaded.takeDiagnostics();
     if (!loaded)
         return false;
-    replaceDocument(loaded.take(), path);
+    replaceWith(loaded.take(), path);
     return true;
 }
 
-void EditorSession::replaceDocument(model::GuideDocument document, const QString& path)
+void EditorSession::replaceWith(model::GuideDocument document, const QString& path)
 {
     m_ownsAutosave = false; // the previous guide's autosave stays to be offered when it is opened again
     m_filePath = path;
-    m_selection = {};
-    m_rig.reset();
-    m_rigStale = false;
-    compileRig();
-    setMode(EditorMode::Guide);
-    m_history.reset(std::move(document));
-    m_history.setClean();
-    emit rigChanged();
-    emit selectionChanged();
+    replaceDocument(std::move(document));
+    history().setClean();
 }
 
 bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagnostics)
@@ -88,180 +71,70 @@ bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagno
             return false;
         document = loaded.take();
     }
-    replaceDocument(std::move(document), QString());
+    replaceWith(std::move(document), QString());
     return true;
 }
 
 bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
 {
-    diagnostics = io::saveGuideFile(m_document, path.toStdString());
+    diagnostics = io::saveGuideFile(document(), path.toStdString());
     if (hasErrors(diagnostics))
         return false;
     discardAutosave(); // the previous path's (or the untitled one's)
     m_filePath = path;
-    m_history.setClean();
+    history().setClean();
     m_ownsAutosave = false;
     return true;
 }
 
-double EditorSession::build()
-{
-    const auto start = std::chrono::steady_clock::now();
-    // Rebuilding keeps the selected controllers and CVs (by id: indices may move).
-    std::vector<NodeKey> selectedIds;
-    std::vector<std::pair<NodeKey, model::CurveCv>> selectedCvs;
-    if (m_rig) {
-        for (auto n : m_selection.nodes)
-            selectedIds.push_back(m_rig->nodes[n].key);
-        for (const auto& cv : m_selection.cvs)
-            selectedCvs.emplace_back(m_rig->nodes[cv.node].key, cv);
-    }
-    m_rig = rigging::buildRig(m_document, *m_templates, rigging::BuilderRegistry::builtin(),
-                            [this](double fraction, const std::string& stage) {
-                                emit buildProgressed(fraction, QString::fromStdString(stage));
-                            });
-    compileRig();
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    m_rigStale = false;
-    m_builtFrom = m_document;
-    m_selection.nodes.clear();
-    m_selection.node = model::kNoNode;
-    for (const auto& id : selectedIds)
-        if (auto n = m_rig->find(id)) {
-            m_selection.nodes.push_back(*n);
-            m_selection.node = *n;
-        }
-    m_selection.cvs.clear();
-    for (auto [id, cv] : selectedCvs)
-        if (auto n = m_rig->find(id); n && std::size_t(cv.curve) < m_rig->nodes[*n].curves.size() &&
-                                      std::size_t(cv.cv) < m_rig->nodes[*n].curves[cv.curve].cvs.size()) {
-            cv.node = *n;
-            m_selection.cvs.push_back(cv);
-        }
-    emit rigChanged();
-    emit diagnosticsReported(m_rig->diagnostics);
-    return ms;
-}
-
 Diagnostics EditorSession::reloadTemplates()
 {
-    m_templates = templates::TemplateRegistry::loadDefault(m_templateDiagnostics);
-    emit templatesReloaded();
-    if (m_rig)
-        build();
+    setTemplates(loadTemplates(m_templateDiagnostics));
     return m_templateDiagnostics;
 }
 
 Diagnostics EditorSession::exportRig(const io::ExportRequest& request, std::function<bool(double)> progress) const
 {
-    if (!m_rig)
+    if (!rig())
         return {makeError({request.path, 0, 0}, "build the rig before exporting it")};
-    return io::runExport(*m_rig, m_document.pose, request, std::move(progress));
-}
-
-QString EditorSession::addTemplate(const QString& templateId, model::JointId hookJoint)
-{
-    auto instance = rigging::makeInstance(m_document, *m_templates, templateId.toStdString(), hookJoint);
-    if (!instance)
-        return QString::fromStdString(instance.diagnostics().front().message);
-    const model::InstanceId id = instance->id;
-    if (auto error = edit::addInstance(m_history, instance.take()))
-        return QString::fromStdString(*error);
-    select(Selection::ofInstance(id));
-    return {};
-}
-
-QString EditorSession::removeInstances(const std::vector<model::InstanceId>& ids)
-{
-    return messageOf(edit::removeInstances(m_history, ids));
-}
-
-QString EditorSession::renameInstance(model::InstanceId id, const QString& name)
-{
-    return messageOf(edit::renameInstance(m_history, id, name.toStdString()));
-}
-
-const templates::TemplateManifest* EditorSession::manifestOf(model::InstanceId id) const
-{
-    const model::TemplateInstance* instance = m_document.instance(id);
-    return instance ? m_templates->find(instance->templateId) : nullptr;
-}
-
-QString EditorSession::setOption(model::InstanceId id, const std::string& name, const Value& value)
-{
-    const model::TemplateInstance* instance = m_document.instance(id);
-    const templates::TemplateManifest* manifest = manifestOf(id);
-    if (!manifest)
-        return tr("no template for this instance");
-    const templates::Parameter* guide = manifest->findGuide(name);
-    const templates::Parameter* option = guide ? guide : manifest->findOpt(name);
-    if (!option)
-        return tr("%1 has no option '%2'").arg(QString::fromStdString(manifest->id), QString::fromStdString(name));
-    if (!guide) {
-        return messageOf(edit::setOption(m_history, id, name, value, option->value));
-    }
-    auto options = instance->options;
-    if (value == option->value)
-        options.erase(name);
-    else
-        options[name] = value;
-    if (options == instance->options)
-        return {};
-    auto regenerated = rigging::regenerateGuide(m_document, *m_templates, id, options);
-    if (!regenerated)
-        return QString::fromStdString(formatAll(regenerated.diagnostics()));
-    return messageOf(edit::replaceInstance(m_history, regenerated.take(), "Set guide option " + name));
-}
-
-QString EditorSession::resetOptions(model::InstanceId id)
-{
-    const model::TemplateInstance* instance = m_document.instance(id);
-    const templates::TemplateManifest* manifest = manifestOf(id);
-    if (!manifest)
-        return tr("no template for this instance");
-    model::TemplateInstance reset = *instance;
-    std::erase_if(reset.options, [&](const auto& entry) { return !manifest->findGuide(entry.first); });
-    if (reset.options == instance->options)
-        return {};
-    return messageOf(edit::replaceInstance(m_history, std::move(reset), "Reset options of " + instance->name));
-}
-
-QString EditorSession::setNameOverride(model::InstanceId id, const std::string& token, const QString& name)
-{
-    const templates::TemplateManifest* manifest = manifestOf(id);
-    if (!manifest)
-        return tr("no template for this instance");
-    return messageOf(edit::setNameOverride(m_history, id, token, name.toStdString(), manifest->defaultName(token)));
-}
-
-void EditorSession::select(const Selection& selection)
-{
-    m_selection = selection;
-    emit selectionChanged();
-}
-
-void EditorSession::selectSubject(const Subject& subject)
-{
-    const model::TemplateInstance* instance = m_document.instance(subject.instance());
-    if (!instance)
-        return;
-    Selection s = Selection::ofInstance(instance->id);
-    if (subject.kind == Subject::Kind::GuideJoint && instance->joint(subject.joint)) {
-        s.joint = subject.joint;
-        s.joints = {subject.joint};
-    }
-    if ((subject.kind == Subject::Kind::Node || subject.kind == Subject::Kind::Shape) && m_rig)
-        if (const auto node = m_rig->find(subject.node)) {
-            s.node = *node;
-            s.nodes = {*node};
-        }
-    select(s);
+    return io::runExport(*rig(), document().pose, request, std::move(progress));
 }
 
 model::InstanceId EditorSession::instanceNamed(const QString& name) const
 {
-    const auto* instance = m_document.instanceNamed(name.toStdString());
+    const auto* instance = document().instanceNamed(name.toStdString());
     return instance ? instance->id : model::kNoId;
+}
+
+bool EditorSession::loadReference(const QString& path, Diagnostics& diagnostics)
+{
+    if (path.isEmpty())
+        return !setReferenceModel({}); // the change clears the view
+    const std::string absolute = std::filesystem::absolute(path.toStdString()).lexically_normal().string();
+    auto triangles = readReference(absolute, diagnostics);
+    if (!triangles)
+        return false; // the shown model and the document stay
+    m_reference = std::move(*triangles);
+    m_referencePath = absolute;
+    return !setReferenceModel(absolute);
+}
+
+void EditorSession::syncReference()
+{
+    if (document().referenceModel == m_referencePath)
+        return;
+    m_referencePath = document().referenceModel;
+    m_reference.clear();
+    if (m_referencePath.empty())
+        return;
+    Diagnostics diagnostics;
+    if (auto triangles = readReference(m_referencePath, diagnostics))
+        m_reference = std::move(*triangles);
+    else
+        diagnostics.insert(diagnostics.begin(), makeError({m_referencePath, 0, 0},
+                                                          "the guide's reference model could not be loaded (the guide keeps its path)"));
+    if (!diagnostics.empty())
+        emit diagnosticsReported(diagnostics);
 }
 
 } // namespace rs::app

@@ -109,32 +109,21 @@ void MainWindow::createDocks()
 
 void MainWindow::connectDocument()
 {
-    connect(&m_session, &EditorSession::documentChanged, this, [this] {
-        refreshViews();
-        updateTitle();
-    });
-    connect(&m_session, &EditorSession::rigChanged, this, [this] {
-        m_channelBox->invalidate(); // a rebuilt rig has new channel indices
-        refreshScene();
-    });
-    connect(&m_session, &EditorSession::selectionChanged, this, [this] {
-        m_outliner->selectInstance(m_session.selection().instance);
-        refreshScene();
-    });
+    // One typed event per change: each view refreshes only what it names.
+    connect(&m_session, &EditorSession::changed, this, &MainWindow::follow);
     connect(&m_session, &EditorSession::diagnosticsReported, m_log, &widgets::LogPanel::addDiagnostics);
-    connect(&m_session, &EditorSession::templatesReloaded, this, &MainWindow::refreshViews);
 
     connect(m_outliner, &widgets::OutlinerView::instanceSelected, this,
             [this](quint32 id) { m_session.select(Selection::ofInstance(id)); });
     connect(m_outliner, &widgets::OutlinerView::addTemplateRequested, this, [this](const QString& id, quint32 joint) {
-        logError(m_session.addTemplate(id, joint));
+        logError(m_session.addTemplate(id.toStdString(), joint));
     });
     connect(m_outliner, &widgets::OutlinerView::removeRequested, this, [this](const QList<quint32>& ids) {
         logError(m_session.removeInstances({ids.begin(), ids.end()}));
     });
     connect(m_outliner, &widgets::OutlinerView::renameRequested, this, [this](quint32 id, const QString& name) {
-        if (const QString error = m_session.renameInstance(id, name); !error.isEmpty()) {
-            m_log->addMessage(error, Severity::Error);
+        if (const auto error = m_session.renameInstance(id, name.toStdString())) {
+            m_log->addMessage(QString::fromStdString(*error), Severity::Error);
             refreshViews(); // put the old name back in the tree
         }
     });
@@ -167,47 +156,92 @@ void MainWindow::connectDocument()
 
 void MainWindow::connectOptions()
 {
-    // Queued: an edit rebuilds the editor's widgets, the one that emitted included.
-    auto refresh = [this] {
-        QMetaObject::invokeMethod(this, [this] {
-            const model::TemplateInstance* instance = m_session.document().instance(m_session.selection().instance);
-            m_options->setInstance(instance, instance ? m_session.templates().find(instance->templateId) : nullptr);
-        }, Qt::QueuedConnection);
-    };
-    connect(&m_session, &EditorSession::documentChanged, this, refresh);
-    connect(&m_session, &EditorSession::selectionChanged, this, refresh);
-    connect(&m_session, &EditorSession::templatesReloaded, this, refresh);
-
-    auto refreshLists = [this] {
-        m_historyView->refresh(m_session.history());
-        m_library->refresh(m_session.templates());
-    };
-    connect(&m_session, &EditorSession::documentChanged, m_historyView,
-            [this] { m_historyView->refresh(m_session.history()); });
-    connect(&m_session, &EditorSession::templatesReloaded, m_library, refreshLists);
     connect(m_historyView, &widgets::HistoryView::jumpRequested, this,
             [this](int index) { m_session.history().jumpTo(std::size_t(index)); });
     connect(m_library, &widgets::TemplateLibrary::templateActivated, this, [this](const QString& id) {
-        logError(m_session.addTemplate(id, m_session.selection().joint));
+        logError(m_session.addTemplate(id.toStdString(), m_session.selection().joint));
     });
-    refreshLists();
+    m_historyView->refresh(m_session.history());
+    m_library->refresh(m_session.templates());
     connect(m_options, &widgets::OptionsEditor::optionEdited, this,
             [this](model::InstanceId id, const std::string& name, const Value& value) {
-                if (const QString error = m_session.setOption(id, name, value); !error.isEmpty()) {
-                    m_log->addMessage(error, Severity::Error);
-                    m_session.select(m_session.selection()); // show the stored value again
+                // The editor's own widget already shows the value: its page is
+                // not rebuilt under the cursor (a spinner keeps turning).
+                m_optionsEditing = true;
+                const auto error = m_session.setOption(id, name, value);
+                m_optionsEditing = false;
+                const model::TemplateInstance* instance = m_session.document().instance(id);
+                if (instance && !instance->options.count(name))
+                    refreshOptions(); // back to the default (its reset button): the widget shows it
+                else if (instance)
+                    m_options->showChanged(*instance);
+                if (error) {
+                    m_log->addMessage(QString::fromStdString(*error), Severity::Error);
+                    refreshOptions(); // show the stored value again
                 }
             });
     connect(m_options, &widgets::OptionsEditor::nameEdited, this,
             [this](model::InstanceId id, const std::string& token, const QString& name) {
-                logError(m_session.setNameOverride(id, token, name));
+                logError(m_session.setNameOverride(id, token, name.toStdString()));
             });
+}
+
+void MainWindow::refreshOptions()
+{
+    // Queued: an edit rebuilds the editor's widgets, the one that emitted included.
+    QMetaObject::invokeMethod(this, [this] {
+        const model::TemplateInstance* instance = m_session.document().instance(m_session.selection().instance);
+        m_options->setInstance(instance, instance ? m_session.templates().find(instance->templateId) : nullptr);
+        m_optionsInstance = m_session.selection().instance;
+    }, Qt::QueuedConnection);
+}
+
+// What each view shows of a change; previews (a drag in progress) touch only
+// the viewport and what follows the rig.
+void MainWindow::follow(const edit::Change& change)
+{
+    using K = edit::ChangeKind;
+    const bool everything = change.hasAny(K::Document | K::Templates);
+    if (everything || (!change.preview && change.hasAny(K::Instances | K::Names)))
+        m_outliner->refresh(m_session.document(), m_session.templates());
+    if (everything || change.hasAny(K::Selection | K::Instances))
+        m_outliner->selectInstance(m_session.selection().instance);
+    if (change.has(K::Templates))
+        m_library->refresh(m_session.templates());
+    if (change.hasAny(K::History | K::Document)) {
+        m_historyView->refresh(m_session.history());
+        updateUndoActions();
+        updateTitle();
+    }
+    const bool optionsShown = m_optionsInstance == m_session.selection().instance;
+    if (everything || !optionsShown ||
+        (!change.preview && !m_optionsEditing && change.hasAny(K::Options | K::Names | K::Instances)))
+        refreshOptions();
+    if (change.has(K::Rig))
+        m_channelBox->invalidate(); // a rebuilt rig has new channel indices
+    if (change.has(K::Mode))
+        followMode();
+    if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names | K::Reference | K::Selection |
+                      K::Rig | K::Evaluation | K::Mode | K::Templates))
+        refreshScene();
+}
+
+void MainWindow::setAutosaveEnabled(bool on)
+{
+    if (auto* timer = findChild<QTimer*>("autosaveTimer"))
+        on ? timer->start(kAutosaveMilliseconds) : timer->stop();
 }
 
 void MainWindow::logError(const QString& error)
 {
     if (!error.isEmpty())
         m_log->addMessage(error, Severity::Error);
+}
+
+void MainWindow::logError(const session::Error& error)
+{
+    if (error)
+        m_log->addMessage(QString::fromStdString(*error), Severity::Error);
 }
 
 void MainWindow::refreshViews()

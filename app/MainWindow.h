@@ -41,6 +41,8 @@ public:
     using RecoveryPrompt = std::function<bool(const QString& file, const QString& autosave)>;
     void setRecoveryPrompt(RecoveryPrompt prompt) { m_recoveryPrompt = std::move(prompt); }
     static constexpr int kAutosaveMilliseconds = 60000;
+    // Off for measurements and screenshots (nothing to recover from them).
+    void setAutosaveEnabled(bool on);
     // File > New: an untitled copy of a sample (empty path: an empty guide).
     bool newFromSample(const QString& samplePath);
     bool saveFile(const QString& path);
@@ -69,9 +71,14 @@ private:
     void connectOptions();  // options, template library and history docks
     void refreshViews();
     void refreshScene();
+    void refreshOptions();
+    void follow(const edit::Change& change); // the views that show what changed
+    void followMode();                        // Guide / Rig mode: viewport and actions
+    void updateUndoActions();
     void updateTitle();
     void report(const QString& what, const Diagnostics& diagnostics);
     void logError(const QString& error); // an edit's refusal message, when there is one
+    void logError(const session::Error& error);
     // Unsaved changes: asks Save / Discard / Cancel; true when the document may be replaced.
     bool maySwitchDocument(const QString& question);
 
@@ -88,6 +95,8 @@ private:
     QLabel* m_status = nullptr;
     QProgressBar* m_buildProgress = nullptr;
     QElapsedTimer m_buildPainted; // when the build's progress was last painted
+    bool m_optionsEditing = false; // an option edit from the Options dock is being applied
+    model::InstanceId m_optionsInstance = model::kNoId; // whose options the dock shows
 };
 
 } // namespace rs::app

@@ -62,7 +62,7 @@ void MainWindow::createViewActions()
         std::vector<model::InstanceId> ids = m_outliner->topSelectedInstances();
         if (ids.empty() && m_session.selection().instance != model::kNoId)
             ids.push_back(m_session.selection().instance);
-        logError(ids.empty() ? tr("select the templates to duplicate") : m_session.duplicateInstances(ids));
+        logError(ids.empty() ? session::Error(tr("select the templates to duplicate").toStdString()) : m_session.duplicateInstances(ids));
     });
     QAction* reference = makeAction(this, "importReference", tr("Import &Reference Model..."), {});
     reference->setToolTip(tr("Show a model (FBX, OBJ, glTF...) see-through to place guides on"));

@@ -58,7 +58,7 @@ void MainWindow::connectViewport()
     connect(m_viewport, &ViewportWidget::gizmoDragFinished, this, [this, guideMode, shapeMode, cvMode](quint32 target) {
         const QString verb = kDragVerbs[int(m_viewport->gizmoMode())];
         if (cvMode()) {
-            logError(m_session.endCvDrag(verb));
+            logError(m_session.endCvDrag(verb.toStdString()));
             return;
         }
         if (shapeMode()) {
@@ -69,29 +69,22 @@ void MainWindow::connectViewport()
             const model::TemplateInstance* owner = m_session.document().ownerOf(target);
             const QString name = owner ? QString::fromStdString(owner->name) : QString();
             const std::size_t count = std::max<std::size_t>(1, m_session.selection().joints.size());
-            logError(m_session.endGuideDrag(count > 1 ? tr("%1 %2 guide joints").arg(verb).arg(count)
-                                                      : tr("%1 guide joint of %2").arg(verb, name)));
+            logError(m_session.endGuideDrag((count > 1 ? tr("%1 %2 guide joints").arg(verb).arg(count)
+                                                       : tr("%1 guide joint of %2").arg(verb, name)).toStdString()));
             return;
         }
         const auto* rig = m_session.rig();
         const QString name = rig && target < rig->nodes.size() ? QString::fromStdString(rig->nodes[target].name) : QString();
-        m_session.endDrag(target, QString("%1 %2").arg(verb, name));
+        m_session.endDrag(target, QString("%1 %2").arg(verb, name).toStdString());
     });
     connect(m_viewport, &ViewportWidget::viewChanged, this, [this](int view) {
         const char* names[] = {"viewPerspective", "viewFront", "viewSide", "viewTop"};
         if (QAction* a = action(names[view])) a->setChecked(true);
     });
-    connect(&m_session, &EditorSession::guidePreviewed, this, &MainWindow::refreshScene);
-    connect(&m_session, &EditorSession::referenceChanged, this, &MainWindow::refreshScene);
 }
 
 void MainWindow::connectRigMode()
 {
-    connect(&m_session, &EditorSession::modeChanged, this, [this] {
-        m_viewport->setRigMode(m_session.mode() == EditorMode::Rig);
-        refreshScene();
-    });
-    connect(&m_session, &EditorSession::poseChanged, this, &MainWindow::refreshScene);
     connect(m_viewport, &viewport::ViewportWidget::pickwalkRequested, this,
             [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction)); });
     connect(m_channelBox, &widgets::ChannelBox::channelEdited, this, [this](int channel, double value, bool match) {

@@ -3,6 +3,9 @@
 //   rigsmith --screenshot OUT.png [GUIDE]  load, build, render the window, save it, exit
 //   rigsmith --startup-time [GUIDE]      print how long it took until the window with
 //                                        the guide loaded showed its first frame, exit
+//   rigsmith --edit-latency GUIDE        replay 100 guide drags, print the median and
+//                                        worst time from an edit to a repainted frame, exit
+#include "EditLatency.h"
 #include "MainWindow.h"
 
 #include "ViewportWidget.h"
@@ -97,14 +100,29 @@ int main(int argc, char** argv)
     }
 
     const bool startupTime = args.removeAll("--startup-time") > 0;
+    const bool editLatency = args.removeAll("--edit-latency") > 0;
+    if (editLatency && args.isEmpty()) {
+        std::fprintf(stderr, "usage: rigsmith --edit-latency GUIDE\n");
+        return 2;
+    }
     rs::app::MainWindow window;
-    if (!screenshot.isEmpty() || startupTime)
+    if (!screenshot.isEmpty() || startupTime || editLatency)
         window.setRecoveryPrompt([](const QString&, const QString&) { return false; }); // never asks
     if (!args.isEmpty() && !window.openFile(args.front()) && !screenshot.isEmpty())
         return 1;
     window.show();
     if (startupTime)
         return reportStartup(app, window, sinceMain);
+    if (editLatency) {
+        if (!window.session().document().instances().size())
+            return 1;
+        QTimer::singleShot(0, &window, [&] {
+            const int status = rs::app::reportEditLatency(window);
+            window.setProperty("skipUnsavedPrompt", true);
+            QApplication::exit(status);
+        });
+        return app.exec();
+    }
     if (screenshot.isEmpty()) {
         if (args.isEmpty())
             window.offerUntitledRecovery();

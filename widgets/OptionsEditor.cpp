@@ -76,6 +76,7 @@ void OptionsEditor::setInstance(const model::TemplateInstance* instance, const t
 {
     m_instance = instance ? instance->id : model::kNoId;
     m_editors.clear();
+    m_marks.clear();
     m_body = new QWidget; // a fresh page; setWidget below deletes the previous one
     auto* layout = new QVBoxLayout(m_body);
     if (!instance || !manifest) {
@@ -155,7 +156,20 @@ void OptionsEditor::addParameter(QFormLayout* form, const templates::Parameter& 
             [this, id, name = parameter.name, fallback = parameter.value] { emit optionEdited(id, name, fallback); });
     layout->addWidget(reset);
     m_editors[parameter.name] = editor;
+    m_marks[parameter.name] = {label, reset, parameter.value};
     form->addRow(label, row);
+}
+
+void OptionsEditor::showChanged(const model::TemplateInstance& instance)
+{
+    if (instance.id != m_instance)
+        return;
+    for (auto& [name, marks] : m_marks) {
+        const auto stored = instance.options.find(name);
+        const bool changed = stored != instance.options.end() && stored->second != marks.defaultValue;
+        marks.label->setStyleSheet(changed ? "font-weight: bold" : "");
+        marks.reset->setEnabled(changed);
+    }
 }
 
 QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& value)

@@ -29,6 +29,10 @@ public:
     // keyboard focus when the same instance is shown again.
     void setInstance(const model::TemplateInstance* instance, const templates::TemplateManifest* manifest);
     model::InstanceId instance() const { return m_instance; }
+    // After an edit made in this editor: marks the shown options that differ
+    // from their defaults (bold, reset enabled) without rebuilding any widget,
+    // so a spinner being turned keeps turning.
+    void showChanged(const model::TemplateInstance& instance);
     // The editing widget of an option (tests), null when not shown.
     QWidget* editorFor(const std::string& name) const;
 
@@ -47,6 +51,12 @@ private:
     QScrollArea* m_scroll = nullptr;
     QWidget* m_body = nullptr;
     std::map<std::string, QWidget*> m_editors;
+    struct Marks {
+        QLabel* label = nullptr;
+        QWidget* reset = nullptr;
+        Value defaultValue;
+    };
+    std::map<std::string, Marks> m_marks; // by option name
 };
 
 } // namespace rs::widgets

@@ -22,6 +22,7 @@ public:
     std::string text() const override { return "Add " + m_instance.templateId + " '" + m_instance.name + "'"; }
     void redo(GuideDocument& d) override { d.insertInstance(m_instance, d.instances().size()); }
     void undo(GuideDocument& d) override { m_instance = d.takeInstance(m_instance.id); }
+    Change change() const override { return Change::of(ChangeKind::Instances, {m_instance.id}); }
 
 private:
     TemplateInstance m_instance;
@@ -50,6 +51,7 @@ public:
             d.insertInstance(it->second, it->first);
         m_removed.clear();
     }
+    Change change() const override { return Change::of(ChangeKind::Instances, m_ids); }
 
 private:
     std::vector<InstanceId> m_ids;
@@ -63,6 +65,7 @@ public:
     std::string text() const override { return "Rename '" + m_from + "' to '" + m_to + "'"; }
     void redo(GuideDocument& d) override { d.instance(m_id)->name = m_to; }
     void undo(GuideDocument& d) override { d.instance(m_id)->name = m_from; }
+    Change change() const override { return Change::of(ChangeKind::Instances | ChangeKind::Names, {m_id}); }
 
 private:
     InstanceId m_id;
@@ -73,14 +76,16 @@ private:
 template <class T>
 class SetDocumentField final : public Command {
 public:
-    SetDocumentField(T GuideDocument::*field, T from, T to, std::string what)
-        : m_field(field), m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what)) {}
+    SetDocumentField(T GuideDocument::*field, ChangeKind kind, T from, T to, std::string what)
+        : m_field(field), m_kind(kind), m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what)) {}
     std::string text() const override { return m_what; }
     void redo(GuideDocument& d) override { d.*m_field = m_to; }
     void undo(GuideDocument& d) override { d.*m_field = m_from; }
+    Change change() const override { return Change::of(m_kind); }
 
 private:
     T GuideDocument::*m_field;
+    ChangeKind m_kind;
     T m_from, m_to;
     std::string m_what;
 };
@@ -92,6 +97,7 @@ public:
     std::string text() const override { return "Move joint " + std::to_string(m_joint); }
     void redo(GuideDocument& d) override { d.instance(m_owner)->joint(m_joint)->local = m_to; }
     void undo(GuideDocument& d) override { d.instance(m_owner)->joint(m_joint)->local = m_from; }
+    Change change() const override { return Change::of(ChangeKind::Joints, {m_owner}, {m_joint}); }
 
 private:
     InstanceId m_owner;
@@ -106,6 +112,7 @@ public:
     std::string text() const override { return "Set option " + m_option; }
     void redo(GuideDocument& d) override { apply(d, m_to); }
     void undo(GuideDocument& d) override { apply(d, m_from); }
+    Change change() const override { return Change::of(ChangeKind::Options, {m_id}); }
 
 private:
     void apply(GuideDocument& d, const std::optional<Value>& v)
@@ -123,14 +130,29 @@ private:
 class ReplaceInstance final : public Command {
 public:
     ReplaceInstance(TemplateInstance from, TemplateInstance to, std::string what)
-        : m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what)) {}
+        : m_from(std::move(from)), m_to(std::move(to)), m_what(std::move(what))
+    {
+        // What differs, once: views hear "names of arm" rather than "the arm".
+        m_change.instances = {m_to.id};
+        if (m_from.joints != m_to.joints) m_change.add(ChangeKind::Joints);
+        if (m_from.options != m_to.options) m_change.add(ChangeKind::Options);
+        if (m_from.shapes != m_to.shapes) m_change.add(ChangeKind::Shapes);
+        if (m_from.names != m_to.names) m_change.add(ChangeKind::Names);
+        if (m_from.name != m_to.name || m_from.parent != m_to.parent || m_from.parentJoint != m_to.parentJoint ||
+            m_from.structure != m_to.structure || m_from.templateId != m_to.templateId || m_change.empty())
+            m_change.add(ChangeKind::Instances);
+        for (const auto& joint : m_to.joints)
+            m_change.joints.push_back(joint.id);
+    }
     std::string text() const override { return m_what; }
     void redo(GuideDocument& d) override { *d.instance(m_to.id) = m_to; }
     void undo(GuideDocument& d) override { *d.instance(m_from.id) = m_from; }
+    Change change() const override { return m_change; }
 
 private:
     TemplateInstance m_from, m_to;
     std::string m_what;
+    Change m_change;
 };
 
 // Instances taken out (each at its index then) and others appended, in one
@@ -158,6 +180,14 @@ public:
         for (auto it = m_removed.rbegin(); it != m_removed.rend(); ++it)
             d.insertInstance(it->second, it->first);
         m_removed.clear();
+    }
+    Change change() const override
+    {
+        Change out = Change::of(ChangeKind::Instances, m_removedIds);
+        for (const TemplateInstance& instance : m_added)
+            if (std::find(out.instances.begin(), out.instances.end(), instance.id) == out.instances.end())
+                out.instances.push_back(instance.id);
+        return out;
     }
 
 private:
@@ -329,7 +359,7 @@ Error setPose(History& history, model::PoseValues pose, const std::string& what)
 {
     if (pose == history.document().pose)
         return "the pose did not change";
-    history.push(std::make_unique<SetDocumentField<model::PoseValues>>(&GuideDocument::pose, history.document().pose,
+    history.push(std::make_unique<SetDocumentField<model::PoseValues>>(&GuideDocument::pose, ChangeKind::Pose, history.document().pose,
                                                                        std::move(pose), what));
     return std::nullopt;
 }
@@ -341,7 +371,7 @@ Error setReferenceModel(History& history, const std::string& path)
         return std::nullopt;
     const std::string what = path.empty() ? "Clear reference model"
                                           : "Reference model " + std::filesystem::path(path).filename().string();
-    history.push(std::make_unique<SetDocumentField<std::string>>(&GuideDocument::referenceModel, current, path, what));
+    history.push(std::make_unique<SetDocumentField<std::string>>(&GuideDocument::referenceModel, ChangeKind::Reference, current, path, what));
     return std::nullopt;
 }
 

@@ -14,24 +14,34 @@ namespace {
 
 class SetJointTransforms final : public Command {
 public:
-    struct Change {
+    struct JointChange {
         model::InstanceId owner;
         JointId joint;
         Transform from, to;
     };
-    SetJointTransforms(std::vector<Change> changes, std::string what) : m_changes(std::move(changes)), m_what(std::move(what)) {}
+    SetJointTransforms(std::vector<JointChange> changes, std::string what) : m_changes(std::move(changes)), m_what(std::move(what)) {}
     std::string text() const override { return m_what; }
     void redo(GuideDocument& d) override
     {
-        for (const Change& c : m_changes) d.instance(c.owner)->joint(c.joint)->local = c.to;
+        for (const JointChange& c : m_changes) d.instance(c.owner)->joint(c.joint)->local = c.to;
     }
     void undo(GuideDocument& d) override
     {
-        for (const Change& c : m_changes) d.instance(c.owner)->joint(c.joint)->local = c.from;
+        for (const JointChange& c : m_changes) d.instance(c.owner)->joint(c.joint)->local = c.from;
+    }
+    Change change() const override
+    {
+        Change out = Change::of(ChangeKind::Joints);
+        for (const JointChange& c : m_changes) {
+            out.joints.push_back(c.joint);
+            if (std::find(out.instances.begin(), out.instances.end(), c.owner) == out.instances.end())
+                out.instances.push_back(c.owner);
+        }
+        return out;
     }
 
 private:
-    std::vector<Change> m_changes;
+    std::vector<JointChange> m_changes;
     std::string m_what;
 };
 
@@ -68,7 +78,7 @@ Transform localFor(const GuideDocument& document, JointId joint, const Mat4& wor
 Error setJointTransforms(History& history, const std::vector<JointTransform>& transforms, const std::string& what)
 {
     const GuideDocument& d = history.document();
-    std::vector<SetJointTransforms::Change> changes;
+    std::vector<SetJointTransforms::JointChange> changes;
     for (const JointTransform& t : transforms) {
         const model::TemplateInstance* owner = d.ownerOf(t.joint);
         if (!owner)

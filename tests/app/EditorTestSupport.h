@@ -27,6 +27,11 @@ struct Editor {
     Editor()
     {
         window.setProperty("skipUnsavedPrompt", true);
+        // A stray autosave of the sample must fail the test, not wait on a question box.
+        window.setRecoveryPrompt([](const QString& file, const QString& autosave) {
+            ADD_FAILURE() << "unexpected recovery prompt for " << file.toStdString() << " (" << autosave.toStdString() << ")";
+            return false;
+        });
         window.show();
         EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
         EXPECT_TRUE(window.openFile(kSample));

@@ -5,6 +5,7 @@
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
 #include "model/Skeleton.h"
+#include "session/Session.h"
 
 #include <benchmark/benchmark.h>
 
@@ -110,6 +111,46 @@ void countRig(benchmark::State& state, const model::Rig& rig)
     state.counters["constraints"] = double(rig.constraints.size());
     state.counters["diagnostics"] = double(rig.diagnostics.size());
 }
+
+// Issue 17's target (core edit -> rig <= 2 ms): a session with the biped built;
+// each iteration is one preview of a guide-joint drag (the arm's elbow, as the
+// editor's gizmo sends it): revert the last preview, apply the new one, rebuild
+// the rig live, compile it and evaluate the test pose.
+void BM_SessionGuideJointDragToEvaluatedRig(benchmark::State& state)
+{
+    session::Session s(std::make_shared<templates::TemplateRegistry>(registry()));
+    s.replaceDocument(biped());
+    s.build();
+    const model::JointId elbow = s.document().instanceNamed("arm")->joints[2].id;
+    const Mat4 start = s.document().jointWorldMatrix(elbow);
+    s.selectGuideJoints({elbow}, false);
+    s.beginGuideDrag(elbow);
+    int step = 0;
+    for (auto _ : state) {
+        Mat4 world = start;
+        world[3][1] += 0.001 * double(++step % 50);
+        s.dragGuideTo(world);
+        benchmark::DoNotOptimize(s.evaluation()->world.data());
+    }
+    s.endGuideDrag("bench");
+}
+BENCHMARK(BM_SessionGuideJointDragToEvaluatedRig)->Unit(benchmark::kMicrosecond);
+
+// One committed option change (the spine's stretch toggled) -> rebuilt, evaluated rig.
+void BM_SessionOptionChangeToEvaluatedRig(benchmark::State& state)
+{
+    session::Session s(std::make_shared<templates::TemplateRegistry>(registry()));
+    s.replaceDocument(biped());
+    s.build();
+    const model::InstanceId spine = s.document().instanceNamed("spine")->id;
+    bool stretch = true;
+    for (auto _ : state) {
+        stretch = !stretch;
+        s.setOption(spine, "stretch", Value(stretch));
+        benchmark::DoNotOptimize(s.evaluation()->world.data());
+    }
+}
+BENCHMARK(BM_SessionOptionChangeToEvaluatedRig)->Unit(benchmark::kMicrosecond);
 
 void BM_BuildBipedRig(benchmark::State& state)
 {

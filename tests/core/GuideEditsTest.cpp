@@ -12,7 +12,7 @@ TEST(GuideEdits, EveryEditUndoesBackToTheOriginalDocument)
     const model::GuideDocument original = doc;
     edit::History history(doc);
     int notifications = 0;
-    history.addListener([&] { ++notifications; });
+    history.addListener([&](const edit::Change&) { ++notifications; });
 
     const auto* arm = doc.instanceNamed("arm");
     auto digit = rigging::makeInstance(doc, test::builtinTemplates(), "core.joints", arm->joints.back().id);

@@ -1,16 +1,15 @@
-// EditorSession's shape editing in Guide mode: the gizmo on a controller's
-// whole shape, and CV mode (control points one by one). Both preview on the
-// built curves and land as one undo step of the instance's shape edit; the
-// rig is rebuilt at once (shape edits cannot break a build), so a mirrored
-// branch follows. A topic file of the session, like GuideSession.cpp.
-#include "EditorSession.h"
+// Session's shape editing in Guide mode: the gizmo on a controller's whole
+// shape, and CV mode (control points one by one). A drag is one history
+// transaction of the instance's shape edit; each preview rebuilds the rig, so
+// a mirrored branch follows under the cursor.
+#include "session/Session.h"
 
-#include "edit/GuideMove.h"
+#include "edit/GuideEdits.h"
 
 #include <algorithm>
 #include <utility>
 
-namespace rs::app {
+namespace rs::session {
 
 namespace {
 
@@ -35,74 +34,69 @@ std::optional<ShapeSource> shapeSourceOf(const model::Rig& rig, model::RigNodeIn
     return source;
 }
 
-const std::string& tagOf(const model::RigNode& node) { return node.key.tag; }
-
 } // namespace
 
-std::optional<Mat4> EditorSession::shapeFrame(model::RigNodeIndex node) const
+std::optional<Mat4> Session::shapeFrame(model::RigNodeIndex node) const
 {
     const auto source = m_rig ? shapeSourceOf(*m_rig, node) : std::nullopt;
     if (!source || !m_document.instance(source->authored->key.instance))
         return std::nullopt;
     const model::TemplateInstance* owner = m_document.instance(source->authored->key.instance);
-    const auto edit = owner->shapes.find(tagOf(*source->authored));
+    const auto edit = owner->shapes.find(source->authored->key.tag);
     const Mat4 m = edit == owner->shapes.end() ? Mat4(1.0) : edit->second.transform.matrix();
     // A mirrored copy shows the edit reflected: m' = R m R in its own space.
     return m_rig->nodes[node].worldMatrix * source->reflection * m * source->reflection;
 }
 
-void EditorSession::beginShapeDrag(model::RigNodeIndex node)
+void Session::beginShapeDrag(model::RigNodeIndex node)
 {
     if (!shapeFrame(node))
         return;
     const ShapeSource source = *shapeSourceOf(*m_rig, node);
     const model::TemplateInstance* owner = m_document.instance(source.authored->key.instance);
-    const std::string tag = tagOf(*source.authored);
+    const std::string& tag = source.authored->key.tag;
     const auto edit = owner->shapes.find(tag);
     const model::ShapeEdit start = edit == owner->shapes.end() ? model::ShapeEdit{} : edit->second;
-    m_shapeDrag = ShapeDrag{node,  owner->id, tag, start, start, m_rig->nodes[node].worldMatrix, source.reflection,
-                            m_rig->nodes[node].curves};
+    // The node's world matrix without the edit's transform: where the gizmo's
+    // frame maps from (the rebuilt rig keeps the node where it is).
+    m_shapeDrag = ShapeDrag{node, owner->id, tag, start, m_rig->nodes[node].worldMatrix, source.reflection};
+    m_history.begin("Edit shape " + tag);
 }
 
-void EditorSession::dragShapeTo(const Mat4& world)
+void Session::dragShapeTo(const Mat4& world)
 {
-    if (!m_shapeDrag)
+    if (!m_shapeDrag || !m_history.inTransaction())
         return;
-    // The new edit seen from the authored side; the preview applies the change
-    // from the edit the curves were built with, on the dragged side.
+    // The new edit seen from the authored side.
     const Mat4& r = m_shapeDrag->reflection;
-    const Mat4 dragged = glm::inverse(m_shapeDrag->nodeWorld) * world;
-    m_shapeDrag->now.transform = edit::localTransformOf(r * dragged * r);
-    const Mat4 change = dragged * glm::inverse(r * m_shapeDrag->start.transform.matrix() * r);
-    auto& curves = m_rig->nodes[m_shapeDrag->node].curves;
-    curves = m_shapeDrag->curves;
-    for (auto& curve : curves)
-        curve.transform(change);
-    emit guidePreviewed();
+    model::ShapeEdit now = m_shapeDrag->start;
+    now.transform = edit::localTransformOf(r * (glm::inverse(m_shapeDrag->nodeWorld) * world) * r);
+    replacePreview([&] {
+        if (!(now == m_shapeDrag->start))
+            edit::setShapeEdit(m_history, m_shapeDrag->instance, m_shapeDrag->tag, now);
+    });
 }
 
-QString EditorSession::endShapeDrag()
+Error Session::endShapeDrag()
 {
     if (!m_shapeDrag)
-        return {};
-    const ShapeDrag drag = *std::exchange(m_shapeDrag, std::nullopt);
-    m_rig->nodes[drag.node].curves = drag.curves;
-    if (drag.now == drag.start)
-        return {};
-    return messageOf(edit::setShapeEdit(m_history, drag.instance, drag.tag, drag.now));
+        return std::nullopt;
+    m_shapeDrag.reset();
+    m_history.commit(); // the shape edit's own name: "Edit shape ctrls.ik of arm"
+    return std::nullopt;
 }
 
-void EditorSession::setCvMode(bool on)
+void Session::setCvMode(bool on)
 {
     m_cvMode = on;
     if (!on)
         m_selection.cvs.clear();
     else if (!m_rig || m_rigStale)
         build(); // CVs are the built shapes'
-    emit selectionChanged();
+    emitChange(Change::of(ChangeKind::Mode | ChangeKind::Selection));
 }
 
-void EditorSession::selectCvs(const std::vector<model::CurveCv>& cvs, bool add)
+void Session::selectCvs(const std::vector<model::CurveCv>& cvs, bool add)
 {
     if (!m_rig)
         return;
@@ -140,7 +134,7 @@ void EditorSession::selectCvs(const std::vector<model::CurveCv>& cvs, bool add)
     select(s);
 }
 
-std::optional<edit::CvDrag> EditorSession::selectedCvDrag() const
+std::optional<edit::CvDrag> Session::selectedCvDrag() const
 {
     if (!m_cvMode || m_selection.cvs.empty() || !m_rig || m_rigStale)
         return std::nullopt;
@@ -148,42 +142,49 @@ std::optional<edit::CvDrag> EditorSession::selectedCvDrag() const
     return drag ? std::optional(drag.take()) : std::nullopt;
 }
 
-std::optional<Mat4> EditorSession::cvFrame() const
+std::optional<Mat4> Session::cvFrame() const
 {
+    if (m_cvDrag) // during a drag the frame is where the drag began
+        return m_cvDrag->change * m_cvDrag->drag.frame();
     const auto drag = selectedCvDrag();
     return drag ? std::optional(drag->frame()) : std::nullopt;
 }
 
-void EditorSession::beginCvDrag()
+void Session::beginCvDrag()
 {
     auto drag = selectedCvDrag();
     if (!drag)
         return;
-    m_cvDrag.emplace(CvDragState{std::move(*drag), Mat4(1.0), {}});
-    for (const auto& [node, curves] : m_cvDrag->drag.previewFor(Mat4(1.0)))
-        m_cvDrag->original[node] = m_rig->nodes[node].curves;
+    m_cvDrag.emplace(CvDragState{std::move(*drag), Mat4(1.0)});
+    m_history.begin("Move CVs");
 }
 
-void EditorSession::dragCvsTo(const Mat4& world)
+void Session::dragCvsTo(const Mat4& world)
 {
-    if (!m_cvDrag)
+    if (!m_cvDrag || !m_history.inTransaction())
         return;
     m_cvDrag->change = world * glm::inverse(m_cvDrag->drag.frame());
-    for (auto& [node, curves] : m_cvDrag->drag.previewFor(m_cvDrag->change))
-        m_rig->nodes[node].curves = std::move(curves);
-    emit guidePreviewed();
+    replacePreview([&] {
+        if (m_cvDrag->change != Mat4(1.0))
+            m_cvDrag->drag.commit(m_history, m_cvDrag->change);
+    });
 }
 
-QString EditorSession::endCvDrag(const QString& verb)
+Error Session::endCvDrag(const std::string& verb)
 {
     if (!m_cvDrag)
-        return {};
+        return std::nullopt;
     const CvDragState state = *std::exchange(m_cvDrag, std::nullopt);
-    for (const auto& [node, curves] : state.original)
-        m_rig->nodes[node].curves = curves;
-    const auto error = state.drag.commit(m_history, state.change, verb.toStdString());
-    emit guidePreviewed();
-    return messageOf(error);
+    if (state.change == Mat4(1.0)) {
+        m_history.rollback();
+        return std::nullopt;
+    }
+    // The step is named as CvDrag names it ("Move 4 CVs of ctrls.ik"): the
+    // last preview is replaced by the same edit under that name.
+    Error error;
+    replacePreview([&] { error = state.drag.commit(m_history, state.change, verb); });
+    m_history.commit();
+    return error;
 }
 
-} // namespace rs::app
+} // namespace rs::session

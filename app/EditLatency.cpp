@@ -1,0 +1,111 @@
+// rigsmith --edit-latency GUIDE: replays guide-joint drags in the real editor
+// and reports how long each edit took to reach the screen (a swapped frame).
+#include "EditLatency.h"
+
+#include "ViewportWidget.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QOpenGLWidget>
+#include <QTimer>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+namespace rs::app {
+
+namespace {
+
+// Runs `edit` and waits for the viewport's next swapped frame; milliseconds.
+double timeToFrame(QOpenGLWidget* view, const std::function<void()>& edit)
+{
+    QEventLoop loop;
+    QElapsedTimer timer;
+    double ms = -1.0;
+    const auto connection = QObject::connect(view, &QOpenGLWidget::frameSwapped, &loop, [&] {
+        ms = double(timer.nsecsElapsed()) / 1e6;
+        loop.quit();
+    });
+    QTimer::singleShot(2000, &loop, &QEventLoop::quit); // a frame that never comes counts as 2 s
+    timer.start();
+    edit();
+    view->update();
+    loop.exec();
+    QObject::disconnect(connection);
+    return ms < 0.0 ? 2000.0 : ms;
+}
+
+// The guide joint with the most joints below it in its instance (an arm's
+// shoulder, a spine's hips): a drag that moves a lot and rebuilds the limb.
+model::JointId busiestJoint(const model::GuideDocument& guide)
+{
+    model::JointId best = model::kNoId;
+    std::size_t most = 0;
+    for (const auto& instance : guide.instances())
+        for (const auto& joint : instance.joints) {
+            std::size_t below = 0;
+            for (model::JointId parent = joint.id; parent != model::kNoId;) {
+                const auto children = instance.childJoints(parent);
+                below += children.size();
+                parent = children.empty() ? model::kNoId : children.front();
+            }
+            if (below > most || best == model::kNoId) {
+                most = below;
+                best = joint.id;
+            }
+        }
+    return best;
+}
+
+} // namespace
+
+int reportEditLatency(MainWindow& window, int drags)
+{
+    auto* view = window.viewportWidget();
+    window.setAutosaveEnabled(false); // a measurement, not an editing session
+    window.buildRig();
+    window.session().setMode(EditorMode::Guide);
+    QApplication::processEvents();
+    const model::JointId joint = busiestJoint(window.session().document());
+    if (joint == model::kNoId) {
+        std::fprintf(stderr, "rigsmith: the guide has no joints to drag\n");
+        return 1;
+    }
+    window.session().selectGuideJoints({joint}, false);
+    timeToFrame(view, [] {}); // the first frame pays for shader and buffer setup
+    // The floor: a repaint with nothing changed (the GL driver and Qt's compositing).
+    std::vector<double> idle;
+    for (int i = 0; i < 20; ++i)
+        idle.push_back(timeToFrame(view, [] {}));
+    std::vector<double> moves, commits;
+    const int steps = 4; // mouse moves per drag
+    for (int d = 0; d < drags; ++d) {
+        const Mat4 start = window.session().document().jointWorldMatrix(joint);
+        commits.reserve(std::size_t(drags));
+        emit view->gizmoDragStarted(joint);
+        for (int s = 1; s <= steps; ++s) {
+            Mat4 world = start;
+            world[3][1] += 0.002 * s * (d % 2 == 0 ? 1.0 : -1.0); // up, then back down: the guide stays put
+            moves.push_back(timeToFrame(view, [&] { emit view->gizmoDragged(joint, world); }));
+        }
+        commits.push_back(timeToFrame(view, [&] { emit view->gizmoDragFinished(joint); }));
+    }
+    window.session().discardAutosave(); // a measurement leaves no recovery behind
+    std::vector<double> all = moves;
+    all.insert(all.end(), commits.begin(), commits.end());
+    auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v.empty() ? 0.0 : v[v.size() / 2];
+    };
+    std::printf("{\"drags\": %d, \"frames\": %zu, \"median_ms\": %.2f, \"worst_ms\": %.2f, "
+                "\"preview_median_ms\": %.2f, \"commit_median_ms\": %.2f, \"idle_frame_median_ms\": %.2f, "
+                "\"build_ms\": %.3f, \"undo_steps\": %zu}\n",
+                drags, all.size(), median(all), *std::max_element(all.begin(), all.end()), median(moves), median(commits),
+                median(idle), window.session().lastBuildMilliseconds(), window.session().history().size());
+    std::fflush(stdout);
+    return 0;
+}
+
+} // namespace rs::app

@@ -1,0 +1,55 @@
+#pragma once
+// A typed change event: what an edit (or its undo) changed, so views refresh
+// only that. Commands say what they change; the session adds what follows from
+// it (a rebuilt rig, a new evaluation, the selection).
+#include "base/Identity.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace rs::edit {
+
+enum class ChangeKind : std::uint32_t {
+    Document = 1u << 0,   // replaced wholesale (open, new, recover): everything
+    Instances = 1u << 1,  // instances added, removed, re-hung or renamed
+    Joints = 1u << 2,     // guide joint transforms
+    Options = 1u << 3,    // option values (a guide parameter regenerates joints: Joints too)
+    Shapes = 1u << 4,     // controller shape edits
+    Names = 1u << 5,      // name overrides
+    Pose = 1u << 6,       // the test pose
+    Reference = 1u << 7,  // the reference model
+    History = 1u << 8,    // the undo stack or its clean state
+    Selection = 1u << 9,  // session: the selection
+    Rig = 1u << 10,       // session: the rig was rebuilt (node indices may have moved)
+    Evaluation = 1u << 11, // session: the posed rig was evaluated again
+    Templates = 1u << 12, // session: the template library was reloaded
+    Mode = 1u << 13,      // session: guide / rig mode, CV mode
+};
+
+constexpr std::uint32_t operator|(ChangeKind a, ChangeKind b) { return std::uint32_t(a) | std::uint32_t(b); }
+constexpr std::uint32_t operator|(std::uint32_t a, ChangeKind b) { return a | std::uint32_t(b); }
+
+struct Change {
+    std::uint32_t kinds = 0;
+    std::vector<InstanceId> instances; // the instances touched; empty with Document or when unknown
+    std::vector<JointId> joints;       // the guide joints moved (Joints)
+    bool preview = false;              // inside an open transaction (a drag in progress)
+
+    static Change of(std::uint32_t kinds, std::vector<InstanceId> instances = {}, std::vector<JointId> joints = {})
+    {
+        return {kinds, std::move(instances), std::move(joints), false};
+    }
+    static Change of(ChangeKind kind, std::vector<InstanceId> instances = {}, std::vector<JointId> joints = {})
+    {
+        return of(std::uint32_t(kind), std::move(instances), std::move(joints));
+    }
+    bool has(ChangeKind kind) const { return (kinds & std::uint32_t(kind)) != 0; }
+    bool hasAny(std::uint32_t mask) const { return (kinds & mask) != 0; }
+    bool empty() const { return kinds == 0; }
+    // Anything a rig build depends on (the pose and the reference model are not).
+    bool touchesGuide() const;
+    void add(ChangeKind kind) { kinds |= std::uint32_t(kind); }
+    void merge(const Change& other);
+};
+
+} // namespace rs::edit

@@ -1,0 +1,315 @@
+#include "session/Session.h"
+
+#include "edit/GuideEdits.h"
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+namespace rs::session {
+
+Session::Session(std::shared_ptr<const templates::TemplateRegistry> templates) : m_templates(std::move(templates))
+{
+    m_history.addListener([this](const Change& change) { onHistoryChange(change); });
+}
+
+Session::~Session() = default;
+
+int Session::subscribe(Listener listener)
+{
+    m_listeners.emplace_back(m_nextListener, std::move(listener));
+    return m_nextListener++;
+}
+
+void Session::unsubscribe(int handle)
+{
+    std::erase_if(m_listeners, [&](const auto& l) { return l.first == handle; });
+}
+
+void Session::emitChange(const Change& change)
+{
+    const auto listeners = m_listeners; // a listener may unsubscribe
+    for (const auto& [handle, listener] : listeners)
+        listener(change);
+}
+
+void Session::report(const Diagnostics& diagnostics)
+{
+    if (m_reporter && !diagnostics.empty())
+        m_reporter(diagnostics);
+}
+
+// Follows an edit: drops a selection of what is gone, rebuilds a built rig
+// when the guide changed (live) or evaluates the pose again, then tells
+// subscribers everything that changed in one event.
+void Session::onHistoryChange(Change change)
+{
+    if (m_batching) { // replacePreview: one rebuild and one event for the revert and the new preview
+        m_batched.merge(change);
+        return;
+    }
+    if (m_selection.instance != model::kNoId && !m_document.instance(m_selection.instance)) {
+        m_selection = {};
+        change.add(ChangeKind::Selection);
+    }
+    if (change.touchesGuide() && m_rig) {
+        if (m_liveRebuild) {
+            rebuild(!change.preview); // a drag's previews do not flood the log
+            change.add(ChangeKind::Rig);
+            change.add(ChangeKind::Evaluation);
+        } else {
+            m_rigStale = true;
+        }
+    } else if (change.has(ChangeKind::Pose) && m_program) {
+        poseFromDocument();
+        change.add(ChangeKind::Evaluation);
+    }
+    emitChange(change);
+}
+
+void Session::replacePreview(const std::function<void()>& apply)
+{
+    m_batching = true;
+    m_batched = {};
+    m_history.revert();
+    apply();
+    m_batching = false;
+    if (!m_batched.empty())
+        onHistoryChange(std::exchange(m_batched, Change{}));
+}
+
+void Session::replaceDocument(model::GuideDocument document)
+{
+    m_guideDrag.reset();
+    m_shapeDrag.reset();
+    m_cvDrag.reset();
+    m_dragStart.reset();
+    m_selection = {};
+    m_rig.reset();
+    m_rigStale = false;
+    compileRig();
+    m_mode = Mode::Guide;
+    m_history.reset(std::move(document)); // emits Document: every view starts over
+}
+
+void Session::setTemplates(std::shared_ptr<const templates::TemplateRegistry> templates)
+{
+    m_templates = std::move(templates);
+    Change change = Change::of(ChangeKind::Templates);
+    if (m_rig) {
+        rebuild(true);
+        change.add(ChangeKind::Rig);
+        change.add(ChangeKind::Evaluation);
+    }
+    emitChange(change);
+}
+
+void Session::setLiveRebuild(bool on)
+{
+    m_liveRebuild = on;
+    if (on && m_rigStale)
+        build();
+}
+
+double Session::build()
+{
+    rebuild(true, true);
+    Change change = Change::of(ChangeKind::Rig | ChangeKind::Evaluation | ChangeKind::Selection);
+    emitChange(change);
+    return m_lastBuildMs;
+}
+
+// Builds, compiles and poses; the selected controllers and CVs are kept by
+// node key (indices may move).
+void Session::rebuild(bool reportDiagnostics, bool explicitBuild)
+{
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<NodeKey> selected;
+    std::vector<std::pair<NodeKey, model::CurveCv>> selectedCvs;
+    if (m_rig) {
+        for (auto n : m_selection.nodes)
+            if (n < m_rig->nodes.size()) selected.push_back(m_rig->nodes[n].key);
+        for (const auto& cv : m_selection.cvs)
+            if (cv.node < m_rig->nodes.size()) selectedCvs.emplace_back(m_rig->nodes[cv.node].key, cv);
+    }
+    m_rig = rigging::buildRig(m_document, *m_templates, rigging::BuilderRegistry::builtin(),
+                              explicitBuild ? m_progress : rigging::BuildProgress{}); // live rebuilds show no progress
+    m_rigStale = false;
+    compileRig();
+    restoreSelection(selected, selectedCvs);
+    m_lastBuildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    // A live rebuild reports only messages that changed (an edit that fixes or
+    // breaks something), an explicit build always.
+    const std::string text = formatAll(m_rig->diagnostics);
+    if (reportDiagnostics && (explicitBuild || text != m_reportedBuild))
+        report(m_rig->diagnostics);
+    if (reportDiagnostics)
+        m_reportedBuild = text;
+}
+
+void Session::restoreSelection(const std::vector<NodeKey>& nodes, const std::vector<std::pair<NodeKey, model::CurveCv>>& cvs)
+{
+    m_selection.nodes.clear();
+    m_selection.node = model::kNoNode;
+    for (const auto& key : nodes)
+        if (auto n = m_rig->find(key)) {
+            m_selection.nodes.push_back(*n);
+            m_selection.node = *n;
+        }
+    m_selection.cvs.clear();
+    for (auto [key, cv] : cvs)
+        if (auto n = m_rig->find(key); n && std::size_t(cv.curve) < m_rig->nodes[*n].curves.size() &&
+                                       std::size_t(cv.cv) < m_rig->nodes[*n].curves[cv.curve].cvs.size()) {
+            cv.node = *n;
+            m_selection.cvs.push_back(cv);
+        }
+}
+
+void Session::compileRig()
+{
+    m_posing.reset();
+    m_program.reset();
+    if (!m_rig)
+        return;
+    auto compiled = eval::RigProgram::compile(*m_rig);
+    if (!compiled) {
+        report(compiled.diagnostics());
+        m_mode = Mode::Guide;
+        return;
+    }
+    m_program = std::make_unique<eval::RigProgram>(compiled.take());
+    m_posing = std::make_unique<eval::Posing>(*m_rig, *m_program);
+    m_evaluation = m_program->makeState();
+    poseFromDocument();
+}
+
+void Session::poseFromDocument()
+{
+    if (!m_program)
+        return;
+    m_pose = eval::poseFromValues(*m_rig, m_program->channels(), m_document.pose);
+    m_program->evaluate(m_pose, m_evaluation);
+}
+
+void Session::select(const Selection& selection)
+{
+    m_selection = selection;
+    emitChange(Change::of(ChangeKind::Selection));
+}
+
+void Session::selectSubject(const Subject& subject)
+{
+    const model::TemplateInstance* instance = m_document.instance(subject.instance());
+    if (!instance)
+        return;
+    Selection s = Selection::ofInstance(instance->id);
+    if (subject.kind == Subject::Kind::GuideJoint && instance->joint(subject.joint)) {
+        s.joint = subject.joint;
+        s.joints = {subject.joint};
+    }
+    if ((subject.kind == Subject::Kind::Node || subject.kind == Subject::Kind::Shape) && m_rig)
+        if (const auto node = m_rig->find(subject.node)) {
+            s.node = *node;
+            s.nodes = {*node};
+        }
+    select(s);
+}
+
+void Session::setMode(Mode mode)
+{
+    if (mode == Mode::Rig && !m_program)
+        mode = Mode::Guide; // nothing to pose yet
+    if (mode == m_mode)
+        return;
+    m_mode = mode;
+    emitChange(Change::of(ChangeKind::Mode));
+}
+
+const templates::TemplateManifest* Session::manifestOf(model::InstanceId id) const
+{
+    const model::TemplateInstance* instance = m_document.instance(id);
+    return instance ? m_templates->find(instance->templateId) : nullptr;
+}
+
+Error Session::addTemplate(const std::string& templateId, model::JointId hookJoint)
+{
+    auto instance = rigging::makeInstance(m_document, *m_templates, templateId, hookJoint);
+    if (!instance)
+        return instance.diagnostics().front().message;
+    const model::InstanceId id = instance->id;
+    if (auto error = edit::addInstance(m_history, instance.take()))
+        return error;
+    select(Selection::ofInstance(id));
+    return std::nullopt;
+}
+
+Error Session::removeInstances(const std::vector<model::InstanceId>& ids) { return edit::removeInstances(m_history, ids); }
+
+Error Session::renameInstance(model::InstanceId id, const std::string& name)
+{
+    return edit::renameInstance(m_history, id, name);
+}
+
+Error Session::setOption(model::InstanceId id, const std::string& name, const Value& value)
+{
+    const model::TemplateInstance* instance = m_document.instance(id);
+    const templates::TemplateManifest* manifest = manifestOf(id);
+    if (!manifest)
+        return "no template for this instance";
+    const templates::Parameter* guide = manifest->findGuide(name);
+    const templates::Parameter* option = guide ? guide : manifest->findOpt(name);
+    if (!option)
+        return manifest->id + " has no option '" + name + "'";
+    if (!guide)
+        return edit::setOption(m_history, id, name, value, option->value);
+    auto options = instance->options;
+    if (value == option->value)
+        options.erase(name);
+    else
+        options[name] = value;
+    if (options == instance->options)
+        return std::nullopt;
+    auto regenerated = rigging::regenerateGuide(m_document, *m_templates, id, options);
+    if (!regenerated)
+        return formatAll(regenerated.diagnostics());
+    return edit::replaceInstance(m_history, regenerated.take(), "Set guide option " + name);
+}
+
+Error Session::resetOptions(model::InstanceId id)
+{
+    const model::TemplateInstance* instance = m_document.instance(id);
+    const templates::TemplateManifest* manifest = manifestOf(id);
+    if (!manifest)
+        return "no template for this instance";
+    model::TemplateInstance reset = *instance;
+    std::erase_if(reset.options, [&](const auto& entry) { return !manifest->findGuide(entry.first); });
+    if (reset.options == instance->options)
+        return std::nullopt;
+    return edit::replaceInstance(m_history, std::move(reset), "Reset options of " + instance->name);
+}
+
+Error Session::setNameOverride(model::InstanceId id, const std::string& token, const std::string& name)
+{
+    const templates::TemplateManifest* manifest = manifestOf(id);
+    if (!manifest)
+        return "no template for this instance";
+    return edit::setNameOverride(m_history, id, token, name, manifest->defaultName(token));
+}
+
+Error Session::duplicateInstances(const std::vector<model::InstanceId>& ids)
+{
+    std::vector<model::InstanceId> copies;
+    if (auto error = edit::duplicateInstances(m_history, ids, &copies))
+        return error;
+    select(Selection::ofInstance(copies.back()));
+    return std::nullopt;
+}
+
+Error Session::reparentInstance(model::InstanceId id, model::JointId hookJoint)
+{
+    return edit::reparentInstance(m_history, id, hookJoint);
+}
+
+Error Session::setReferenceModel(const std::string& path) { return edit::setReferenceModel(m_history, path); }
+
+} // namespace rs::session

@@ -1,0 +1,217 @@
+#pragma once
+// One open guide, without a display: the document and its history, the
+// template library, the selection, the built rig, its compiled program and the
+// evaluated test pose. Every edit is a command in the history; a drag is a
+// transaction (previews replace each other, the end commits one undo step or
+// rolls back). Every change reaches subscribers as one typed edit::Change that
+// names what changed, so views refresh only that.
+//
+// Live rebuild: once a rig is built, every change of the guide (a joint drag's
+// previews included) rebuilds it and evaluates the test pose at once, so the
+// rig follows under the cursor. The editor's Qt adapter (app/EditorSession)
+// and the headless CLI both drive this class. Not thread-safe: one thread.
+//
+// Topic files: Session.cpp (documents, builds, events), SessionGuide.cpp
+// (guide authoring), SessionPose.cpp (rig mode), SessionShapes.cpp (shape and
+// CV editing).
+#include "edit/GuideMove.h"
+#include "edit/History.h"
+#include "edit/ShapeCvEdit.h"
+#include "eval/Pickwalk.h"
+#include "eval/PoseTools.h"
+#include "model/Rig.h"
+#include "rigging/RigBuilder.h"
+#include "templates/TemplateRegistry.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::session {
+
+using edit::Change;
+using edit::ChangeKind;
+using Error = edit::Error; // nullopt on success, else a message for the rigger
+
+struct Selection {
+    model::InstanceId instance = model::kNoId;
+    model::JointId joint = model::kNoId;           // the current guide joint (the gizmo's)
+    std::vector<model::JointId> joints;            // every selected guide joint, `joint` among them
+    model::RigNodeIndex node = model::kNoNode;     // the current controller (rig mode) or shape (guide mode)
+    std::vector<model::RigNodeIndex> nodes;        // every selected controller, `node` among them
+    std::vector<model::CurveCv> cvs;               // CV mode: selected CVs, all of `node`
+
+    // An instance (and one of its guide joints), no controllers.
+    static Selection ofInstance(model::InstanceId id, model::JointId joint = model::kNoId)
+    {
+        Selection s;
+        s.instance = id;
+        s.joint = joint;
+        return s;
+    }
+    bool operator==(const Selection&) const = default;
+};
+
+enum class Mode { Guide, Rig };
+enum class PoseTool { ResetSelected, ResetAll, Mirror, Flip, IkToFk, FkToIk };
+
+class Session {
+public:
+    explicit Session(std::shared_ptr<const templates::TemplateRegistry> templates);
+    virtual ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    // --- documents, templates, events (Session.cpp)
+    const model::GuideDocument& document() const { return m_document; }
+    edit::History& history() { return m_history; }
+    const edit::History& history() const { return m_history; }
+    const templates::TemplateRegistry& templates() const { return *m_templates; }
+    // Replaces the open document (open, new, recover): selection, rig and history start over.
+    void replaceDocument(model::GuideDocument document);
+    // A reloaded template library; a built rig is rebuilt with it.
+    void setTemplates(std::shared_ptr<const templates::TemplateRegistry> templates);
+
+    using Listener = std::function<void(const Change&)>;
+    int subscribe(Listener listener);
+    void unsubscribe(int handle);
+    // Where build and evaluation messages go (the editor's log, the CLI's stderr).
+    using Reporter = std::function<void(const Diagnostics&)>;
+    void setReporter(Reporter reporter) { m_reporter = std::move(reporter); }
+    void setBuildProgress(rigging::BuildProgress progress) { m_progress = std::move(progress); }
+
+    // Builds the rig from the document, compiles and poses it; returns the time
+    // in milliseconds. From then on every guide change rebuilds it (live).
+    double build();
+    const model::Rig* rig() const { return m_rig ? &*m_rig : nullptr; }
+    // The rig no longer matches the guide (live rebuild off).
+    bool isRigStale() const { return m_rigStale; }
+    bool isLiveRebuild() const { return m_liveRebuild; }
+    void setLiveRebuild(bool on);
+    double lastBuildMilliseconds() const { return m_lastBuildMs; }
+
+    const eval::RigProgram* program() const { return m_program.get(); }
+    const eval::Pose& pose() const { return m_pose; }
+    // The posed rig; null without a compiled rig.
+    const eval::EvalState* evaluation() const { return m_program ? &m_evaluation : nullptr; }
+
+    const Selection& selection() const { return m_selection; }
+    void select(const Selection& selection);
+    // Selects what a diagnostic is about: its instance (the authored one for a
+    // mirrored copy), the guide joint, or the rig node (on the copy it names).
+    void selectSubject(const Subject& subject);
+    Mode mode() const { return m_mode; }
+    void setMode(Mode mode);
+
+    // --- template instances (Session.cpp)
+    Error addTemplate(const std::string& templateId, model::JointId hookJoint);
+    Error removeInstances(const std::vector<model::InstanceId>& ids);
+    Error renameInstance(model::InstanceId id, const std::string& name);
+    // One option, one undo step; a guide parameter regenerates the joints.
+    Error setOption(model::InstanceId id, const std::string& name, const Value& value);
+    Error resetOptions(model::InstanceId id);
+    Error setNameOverride(model::InstanceId id, const std::string& token, const std::string& name);
+    Error duplicateInstances(const std::vector<model::InstanceId>& ids);
+    Error reparentInstance(model::InstanceId id, model::JointId hookJoint);
+    Error setReferenceModel(const std::string& path);
+
+    // --- guide authoring (SessionGuide.cpp): joints are clicked (add toggles)
+    // or box-selected; a drag is one transaction, previews rebuild the rig live.
+    void selectGuideJoints(const std::vector<model::JointId>& joints, bool add);
+    model::JointId gizmoJoint() const;
+    void beginGuideDrag(model::JointId lead);
+    void dragGuideTo(const Mat4& leadWorld);
+    Error endGuideDrag(const std::string& what);
+    void setGuideDragOptions(edit::GuideDragOptions options) { m_guideDragOptions = options; }
+    const edit::GuideDragOptions& guideDragOptions() const { return m_guideDragOptions; }
+
+    // --- shapes and CVs (SessionShapes.cpp): the gizmo moves, turns or scales a
+    // controller's shape (an instance `shapes` edit) or its selected CVs; on a
+    // mirrored copy the edit lands on the authored side, reflected.
+    std::optional<Mat4> shapeFrame(model::RigNodeIndex node) const;
+    void beginShapeDrag(model::RigNodeIndex node);
+    void dragShapeTo(const Mat4& world);
+    Error endShapeDrag();
+    bool isCvMode() const { return m_cvMode; }
+    void setCvMode(bool on);
+    void selectCvs(const std::vector<model::CurveCv>& cvs, bool add);
+    std::optional<Mat4> cvFrame() const;
+    void beginCvDrag();
+    void dragCvsTo(const Mat4& world);
+    Error endCvDrag(const std::string& verb);
+
+    // --- rig mode (SessionPose.cpp)
+    void selectControllers(const std::vector<model::RigNodeIndex>& nodes, bool add);
+    // Over controllers in Rig mode, else (or with `instances`) over template instances.
+    void pickwalk(eval::WalkDirection direction, bool instances = false);
+    void beginDrag(model::RigNodeIndex node);
+    void dragTo(model::RigNodeIndex node, const Mat4& world);
+    void endDrag(model::RigNodeIndex node, const std::string& what);
+    Error setChannel(int channel, double value, bool matchSpace);
+    Error applyPoseTool(PoseTool tool);
+
+protected:
+    // Every change, after the session has followed it (rebuilt, evaluated).
+    void emitChange(const Change& change);
+    void report(const Diagnostics& diagnostics);
+
+private:
+    void onHistoryChange(Change change);
+    // Reverts the open transaction's last preview and applies the next one
+    // (`apply` pushes it) as one change: one rebuild, one event.
+    void replacePreview(const std::function<void()>& apply);
+    const templates::TemplateManifest* manifestOf(model::InstanceId id) const;
+    void rebuild(bool reportDiagnostics, bool explicitBuild = false);
+    void compileRig();
+    void poseFromDocument();
+    void previewPose(eval::Pose pose);
+    Error commitPose(const eval::Pose& pose, const std::string& what);
+    std::optional<edit::CvDrag> selectedCvDrag() const;
+    void restoreSelection(const std::vector<NodeKey>& nodes, const std::vector<std::pair<NodeKey, model::CurveCv>>& cvs);
+
+    model::GuideDocument m_document;
+    edit::History m_history{m_document};
+    std::shared_ptr<const templates::TemplateRegistry> m_templates;
+    std::vector<std::pair<int, Listener>> m_listeners;
+    bool m_batching = false;
+    Change m_batched;
+    int m_nextListener = 1;
+    Reporter m_reporter;
+    rigging::BuildProgress m_progress;
+
+    std::optional<model::Rig> m_rig;
+    bool m_rigStale = false;
+    bool m_liveRebuild = true;
+    double m_lastBuildMs = 0.0;
+    std::string m_reportedBuild; // the build messages last reported
+    std::unique_ptr<eval::RigProgram> m_program;
+    std::unique_ptr<eval::Posing> m_posing;
+    eval::Pose m_pose;
+    eval::EvalState m_evaluation;
+    Selection m_selection;
+    Mode m_mode = Mode::Guide;
+    bool m_cvMode = false;
+
+    std::optional<eval::Pose> m_dragStart;
+    std::optional<edit::GuideDrag> m_guideDrag;
+    edit::GuideDragOptions m_guideDragOptions;
+    struct ShapeDrag {
+        model::RigNodeIndex node;
+        model::InstanceId instance;
+        std::string tag;
+        model::ShapeEdit start;
+        Mat4 nodeWorld;
+        Mat4 reflection; // dragging a mirrored copy: its space -> the authored side's
+    };
+    std::optional<ShapeDrag> m_shapeDrag;
+    struct CvDragState {
+        edit::CvDrag drag;
+        Mat4 change{1.0};
+    };
+    std::optional<CvDragState> m_cvDrag;
+};
+
+} // namespace rs::session

@@ -1,0 +1,216 @@
+// The core session: transactions (a drag is one undo step, previews replace
+// each other and roll back), typed change events that name what changed, and
+// live rebuild (the rig follows every guide change, previews included, with
+// the test pose applied), all without Qt.
+#include "TestSupport.h"
+
+#include "edit/GuideEdits.h"
+#include "eval/PoseTools.h"
+#include "rigging/RigBuilder.h"
+#include "session/Session.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+using namespace rs;
+using session::Change;
+using session::ChangeKind;
+
+namespace {
+
+std::shared_ptr<const templates::TemplateRegistry> templatesForSession()
+{
+    // A shared copy of the built-in library (the session keeps its own pointer).
+    return std::make_shared<templates::TemplateRegistry>(test::builtinTemplates());
+}
+
+struct Recorder {
+    explicit Recorder(session::Session& s)
+    {
+        s.subscribe([this](const Change& c) { changes.push_back(c); });
+    }
+    std::vector<Change> changes;
+    const Change& last() const { return changes.back(); }
+};
+
+model::JointId elbowOf(const model::GuideDocument& guide) { return guide.instanceNamed("arm")->joints[2].id; }
+
+Mat4 raised(Mat4 world, double metres)
+{
+    world[3][1] += metres;
+    return world;
+}
+
+} // namespace
+
+TEST(Session, AGuideDragIsOneUndoStepAndItsPreviewsRebuildTheRigLive)
+{
+    session::Session s(templatesForSession());
+    s.replaceDocument(test::loadSample("biped"));
+    const model::GuideDocument original = s.document();
+    s.build();
+    Recorder events(s);
+    const model::JointId elbow = elbowOf(s.document());
+    const auto ik = *s.rig()->findPath("arm.L::ik.1"); // the IK elbow joint follows the guide's elbow
+    const Vec3 before = translationOf(s.rig()->nodes[ik].worldMatrix);
+    const Mat4 start = s.document().jointWorldMatrix(elbow);
+
+    s.selectGuideJoints({elbow}, false);
+    s.beginGuideDrag(elbow);
+    for (int step = 1; step <= 3; ++step) {
+        s.dragGuideTo(raised(start, 0.02 * step));
+        const Change& c = events.last();
+        EXPECT_TRUE(c.preview);
+        EXPECT_TRUE(c.has(ChangeKind::Joints) && c.has(ChangeKind::Rig) && c.has(ChangeKind::Evaluation));
+        EXPECT_FALSE(c.has(ChangeKind::History)) << "a preview is not a step";
+        EXPECT_EQ(c.instances, std::vector<model::InstanceId>{s.document().instanceNamed("arm")->id});
+        // The rig was rebuilt under the cursor: the elbow moved with the guide.
+        const auto moved = *s.rig()->findPath("arm.L::ik.1");
+        EXPECT_NEAR(translationOf(s.rig()->nodes[moved].worldMatrix).y - before.y, 0.02 * step, 1e-9);
+        EXPECT_EQ(s.history().size(), 0u) << "nothing recorded while dragging";
+    }
+    s.endGuideDrag("Move guide joint of arm");
+    EXPECT_EQ(s.history().size(), 1u);
+    EXPECT_EQ(s.history().undoText(), "Move guide joint of arm");
+    EXPECT_FALSE(events.last().preview);
+    EXPECT_TRUE(events.last().has(ChangeKind::History));
+    EXPECT_NEAR(translationOf(s.document().jointWorldMatrix(elbow)).y - translationOf(start).y, 0.06, 1e-9);
+    EXPECT_EQ(s.selection().joint, elbow);
+
+    s.history().undo();
+    EXPECT_TRUE(s.document() == original);
+    EXPECT_TRUE(events.last().has(ChangeKind::Rig)) << "undo rebuilds too";
+    EXPECT_LT(glm::length(translationOf(s.rig()->nodes[*s.rig()->findPath("arm.L::ik.1")].worldMatrix) - before), 1e-12);
+}
+
+TEST(Session, ADragThatEndsWhereItBeganRecordsNothingAndPreviewsLeaveNoTrace)
+{
+    session::Session s(templatesForSession());
+    s.replaceDocument(test::loadSample("biped"));
+    const model::GuideDocument original = s.document();
+    const model::JointId elbow = elbowOf(s.document());
+    const Mat4 start = s.document().jointWorldMatrix(elbow);
+    s.selectGuideJoints({elbow}, false);
+    s.beginGuideDrag(elbow);
+    s.dragGuideTo(raised(start, 0.1));
+    EXPECT_FALSE(s.document() == original) << "the preview shows in the document, inside the transaction";
+    s.dragGuideTo(start);
+    s.endGuideDrag("Move guide joint of arm");
+    EXPECT_EQ(s.history().size(), 0u);
+    EXPECT_TRUE(s.document() == original);
+    // A transaction rolled back (undo during a drag) restores the document exactly.
+    s.beginGuideDrag(elbow);
+    s.dragGuideTo(raised(start, 0.1));
+    s.history().rollback();
+    EXPECT_TRUE(s.document() == original);
+    s.endGuideDrag("nothing");
+    EXPECT_EQ(s.history().size(), 0u);
+}
+
+TEST(Session, EventsNameWhatChanged)
+{
+    session::Session s(templatesForSession());
+    Recorder events(s);
+    s.replaceDocument(test::loadSample("biped"));
+    EXPECT_TRUE(events.last().has(ChangeKind::Document));
+    const model::InstanceId spine = s.document().instanceNamed("spine")->id;
+
+    ASSERT_FALSE(s.setOption(spine, "stretch", Value(false)));
+    EXPECT_EQ(events.last().kinds, (ChangeKind::Options | ChangeKind::History));
+    EXPECT_EQ(events.last().instances, std::vector<model::InstanceId>{spine});
+    EXPECT_FALSE(events.last().has(ChangeKind::Rig)) << "no rig built yet: nothing to rebuild";
+
+    ASSERT_FALSE(s.setOption(spine, "number", Value(7LL))); // a guide parameter: joints regenerated
+    EXPECT_TRUE(events.last().has(ChangeKind::Options) && events.last().has(ChangeKind::Joints));
+
+    ASSERT_FALSE(s.renameInstance(spine, "torso"));
+    EXPECT_TRUE(events.last().has(ChangeKind::Instances) && events.last().has(ChangeKind::Names));
+
+    s.build();
+    EXPECT_EQ(events.last().kinds, (ChangeKind::Rig | ChangeKind::Evaluation | ChangeKind::Selection));
+    ASSERT_FALSE(s.setNameOverride(s.document().instanceNamed("arm")->id, "ik", "hand"));
+    EXPECT_TRUE(events.last().has(ChangeKind::Names) && events.last().has(ChangeKind::Rig));
+    EXPECT_FALSE(events.last().has(ChangeKind::Joints) || events.last().has(ChangeKind::Options));
+    EXPECT_TRUE(s.rig()->findPath("arm.L::ctrls.ik"));
+    EXPECT_EQ(s.rig()->nodes[*s.rig()->findPath("arm.L::ctrls.ik")].name, "c_arm_hand_L") << "rebuilt at once";
+
+    s.select(session::Selection::ofInstance(spine));
+    EXPECT_EQ(events.last().kinds, std::uint32_t(ChangeKind::Selection));
+}
+
+TEST(Session, PoseEditsEvaluateWithoutRebuildingAndRebuildsKeepThePose)
+{
+    session::Session s(templatesForSession());
+    s.replaceDocument(test::loadSample("biped"));
+    s.build();
+    Recorder events(s);
+    const model::Rig* built = s.rig();
+    const auto fk = *s.rig()->findPath("arm.L::ctrls.fk.0");
+    const auto hand = *s.rig()->findPath("arm.L::skin.limb.2");
+    const auto blend = s.program()->channels().find(*s.rig()->findPath("arm.L::ctrls.switch"), "ik_blend");
+    ASSERT_TRUE(blend);
+    ASSERT_FALSE(s.setChannel(*blend, 0.0, false)); // FK
+    const auto rz = s.program()->channels().find(fk, "rz");
+    ASSERT_TRUE(rz);
+    ASSERT_FALSE(s.setChannel(*rz, -45.0, false));
+    EXPECT_TRUE(events.last().has(ChangeKind::Pose) && events.last().has(ChangeKind::Evaluation));
+    EXPECT_FALSE(events.last().has(ChangeKind::Rig)) << "posing never rebuilds";
+    EXPECT_EQ(s.rig(), built);
+    const Vec3 posedHand = translationOf(s.evaluation()->worldMatrix(hand));
+    EXPECT_GT(glm::length(posedHand - translationOf(s.rig()->nodes[hand].worldMatrix)), 0.1);
+
+    // A guide edit rebuilds live and the test pose is applied to the new rig.
+    const model::JointId wrist = s.document().instanceNamed("spine")->joints[0].id;
+    Transform moved = s.document().joint(wrist)->local;
+    moved.translate.z += 0.05;
+    ASSERT_FALSE(edit::setJointTransform(s.history(), wrist, moved));
+    EXPECT_TRUE(events.last().has(ChangeKind::Rig));
+    const auto handAfter = *s.rig()->findPath("arm.L::skin.limb.2");
+    const model::Rig expected = rigging::buildRig(s.document(), s.templates());
+    const auto posed = eval::posedRig(expected, s.document().pose);
+    ASSERT_TRUE(posed.ok());
+    EXPECT_LT(maxAbsDifference(s.evaluation()->worldMatrix(handAfter), posed->nodes[*expected.findPath("arm.L::skin.limb.2")].worldMatrix),
+              1e-9) << "the live rig equals a fresh build, posed";
+    EXPECT_NEAR(translationOf(s.evaluation()->worldMatrix(handAfter)).z - posedHand.z, 0.05, 1e-9);
+}
+
+TEST(Session, ShapeAndCvDragsAreTransactionsOnTheAuthoredSide)
+{
+    session::Session s(templatesForSession());
+    s.replaceDocument(test::loadSample("biped"));
+    s.build();
+    const model::GuideDocument original = s.document();
+    const auto right = *s.rig()->findPath("arm.R::ctrls.ik");
+    const Vec3 rightBefore = s.rig()->nodes[right].curves.front().points.front();
+    s.selectControllers({right}, false);
+    const Mat4 frame = *s.shapeFrame(right);
+    s.beginShapeDrag(right);
+    s.dragShapeTo(glm::translate(Mat4(1.0), Vec3(0.0, 0.1, 0.0)) * frame);
+    EXPECT_TRUE(s.document().instanceNamed("arm")->shapes.count("ctrls.ik")) << "the L side (authored) holds the edit";
+    const auto previewed = *s.rig()->findPath("arm.R::ctrls.ik");
+    EXPECT_GT(glm::length(s.rig()->nodes[previewed].curves.front().points.front() - rightBefore), 0.05) << "rebuilt live";
+    EXPECT_EQ(s.history().size(), 0u);
+    s.endShapeDrag();
+    EXPECT_EQ(s.history().size(), 1u);
+    EXPECT_EQ(s.history().undoText(), "Edit shape ctrls.ik of arm");
+    s.history().undo();
+    EXPECT_TRUE(s.document() == original);
+
+    // CV mode: one undo step named by the CVs.
+    s.setCvMode(true);
+    const auto ik = *s.rig()->findPath("arm.L::ctrls.ik");
+    s.selectControllers({ik}, false);
+    s.selectCvs({{ik, 0, 0}, {ik, 0, 1}}, false);
+    const Mat4 cvFrame = *s.cvFrame();
+    s.beginCvDrag();
+    s.dragCvsTo(glm::translate(Mat4(1.0), Vec3(0.0, 0.0, 0.05)) * cvFrame);
+    s.dragCvsTo(glm::translate(Mat4(1.0), Vec3(0.0, 0.0, 0.1)) * cvFrame);
+    EXPECT_EQ(s.history().size(), 1u) << "the undone shape step is still there to redo; nothing new yet";
+    ASSERT_FALSE(s.endCvDrag("Move"));
+    EXPECT_EQ(s.history().size(), 1u);
+    EXPECT_EQ(s.history().undoText(), "Move 2 CVs of ctrls.ik of arm");
+    EXPECT_EQ(s.selection().cvs.size(), 2u) << "kept across the live rebuilds";
+    s.history().undo();
+    EXPECT_TRUE(s.document() == original);
+}
