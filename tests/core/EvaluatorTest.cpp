@@ -1,6 +1,6 @@
 // The evaluation engine on the bundled samples: rest reproduction, IK reach,
-// stretch and soft IK, global and segment scale, spline IK, reverse foot, and
-// compile-time rejection of cycles.
+// stretch and soft IK, global and segment scale, spline IK, reverse foot,
+// compile-time rejection of cycles, and a golden evaluation of every channel moved.
 #include "EvalTestSupport.h"
 #include "eval/IkSolver.h"
 
@@ -49,6 +49,16 @@ TEST_P(SampleEvaluation, GlobalScaleScalesEverySkinJointAboutTheWorldControl)
         EXPECT_LT(glm::length(translationOf(state.worldMatrix(i)) - 2.0 * translationOf(r.rig.nodes[i].worldMatrix)), 1e-9)
             << r.rig.nodes[i].path;
     }
+}
+
+// Every channel moved at once: the world transforms every constraint solves,
+// compared with the golden evaluation (changes to a solver show up here).
+TEST_P(SampleEvaluation, ASweptPoseEvaluatesAsTheGolden)
+{
+    PosedRig r(GetParam());
+    ASSERT_TRUE(r.ok());
+    const auto& state = r.evaluate(test::sweepPose(r.program->channels()));
+    test::expectMatchesGolden(test::worldDump(r.rig, state), "Evaluator/" + GetParam() + "/swept.yml");
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, SampleEvaluation, ::testing::Values("biped", "quadruped", "prop"));
