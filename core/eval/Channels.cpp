@@ -88,15 +88,12 @@ std::optional<int> ChannelLayout::find(model::RigNodeIndex node, const std::stri
     return std::nullopt;
 }
 
-std::optional<int> ChannelLayout::findPath(const model::Rig& rig, const std::string& path) const
+std::optional<int> ChannelLayout::find(const model::AttributeRef& attribute) const
 {
-    const auto dot = path.rfind('.');
-    if (dot == std::string::npos)
+    const auto channel = find(attribute.node, attribute.attribute);
+    if (!channel || m_channels[*channel].transform >= 0)
         return std::nullopt;
-    const auto node = rig.findPath(std::string_view(path).substr(0, dot));
-    if (!node)
-        return std::nullopt;
-    return find(*node, path.substr(dot + 1));
+    return channel;
 }
 
 Pose ChannelLayout::defaults() const

@@ -45,8 +45,9 @@ public:
     int firstOf(model::RigNodeIndex node) const { return m_first[node]; }
     int countOf(model::RigNodeIndex node) const { return m_count[node]; }
     std::optional<int> find(model::RigNodeIndex node, const std::string& name) const;
-    // "<node id>.<attribute>" as the rig's constraints write it.
-    std::optional<int> findPath(const model::Rig& rig, const std::string& path) const;
+    // The channel of a node's custom attribute (never a transform channel);
+    // nullopt when the node is out of range or has no such attribute.
+    std::optional<int> find(const model::AttributeRef& attribute) const;
 
     Pose defaults() const;
     double clamp(int channel, double value) const;

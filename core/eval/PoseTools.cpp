@@ -11,7 +11,7 @@ namespace {
 const model::RigConstraint* limbIk(const model::Rig& rig, const CopyKey& instance)
 {
     for (const auto& c : rig.constraints)
-        if (c.kind == model::ConstraintKind::Ik && c.key.copy() == instance)
+        if (c.kind() == model::ConstraintKind::Ik && c.key.copy() == instance)
             return &c;
     return nullptr;
 }
@@ -21,7 +21,7 @@ std::vector<const model::RigConstraint*> limbBlends(const model::Rig& rig, const
 {
     std::vector<const model::RigConstraint*> out;
     for (const auto& c : rig.constraints)
-        if (c.kind == model::ConstraintKind::Blend && c.key.copy() == instance && c.targets.size() == 2)
+        if (c.kind() == model::ConstraintKind::Blend && c.key.copy() == instance && c.targets.size() == 2)
             out.push_back(&c);
     return out;
 }
@@ -151,7 +151,7 @@ std::optional<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node, s
     Pose out = pose;
     for (const auto& [fk, world] : targets) // parents first: each placement sees its parent's new place
         out = placeAt(out, fk, world);
-    if (auto weight = m_program.channels().findPath(m_rig, blends.front()->attributes.at("weight")))
+    if (auto weight = m_program.channels().find(std::get<model::BlendConstraint>(blends.front()->settings).weight))
         out[*weight] = 0.0;
     return out;
 }
@@ -194,7 +194,7 @@ std::optional<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node, s
         poleWorld[3] = Vec4(polePosition, 1.0);
         result = placeAt(result, pole, poleWorld);
     }
-    if (auto weight = m_program.channels().findPath(m_rig, blends.front()->attributes.at("weight")))
+    if (auto weight = m_program.channels().find(std::get<model::BlendConstraint>(blends.front()->settings).weight))
         result[*weight] = 1.0;
     return result;
 }

@@ -17,9 +17,40 @@ Affine channelAffine(const Pose& pose, int first)
     return {Mat3(r[0] * v[6], r[1] * v[7], r[2] * v[8]), Vec3(v[0], v[1], v[2])};
 }
 
-std::string attributeError(const model::RigConstraint& c, const std::string& role, const std::string& path)
+// Attribute references resolved, then the rest data of the constraint's solver.
+// A constraint that cannot be evaluated keeps its slot (indices stay aligned
+// with rig.constraints) with no driven node, so it never runs.
+CompiledConstraint compileConstraint(const model::RigConstraint& rc, const model::Rig& rig, const ChannelLayout& channels,
+                                     const std::vector<Affine>& rest, const std::vector<CompiledConstraint>& before,
+                                     Diagnostics& diagnostics)
 {
-    return "constraint '" + c.path + "': " + role + " attribute '" + path + "' is not a channel of the rig";
+    CompiledConstraint c;
+    c.kind = rc.kind();
+    c.driven = rc.driven;
+    c.targets = rc.targets;
+    c.slot = int(before.size());
+    bool ok = !c.driven.empty();
+    if (!ok)
+        diagnostics.push_back(makeError({}, "constraint '" + rc.path + "' drives no node"));
+    ok = readSettings(rc, rig, channels, rest, c, diagnostics) && ok;
+    // A degenerate setup (overlapping guides, already warned about by the
+    // builder) leaves the driven nodes where their parents put them.
+    if (ok) {
+        if (std::string error = prepareConstraint(c, rig, rest); !error.empty()) {
+            diagnostics.push_back(makeWarning({}, "constraint '" + rc.path + "': " + error + "; it is not evaluated"));
+            ok = false;
+        }
+    }
+    if (!ok) {
+        c.driven.clear();
+        return c;
+    }
+    if (c.kind == model::ConstraintKind::Twist && !before.empty()) {
+        const CompiledConstraint& previous = before.back();
+        if (previous.kind == model::ConstraintKind::Twist && previous.targets == c.targets && !previous.driven.empty())
+            c.shareTwistOf = previous.shareTwistOf >= 0 ? previous.shareTwistOf : previous.slot;
+    }
+    return c;
 }
 
 } // namespace
@@ -52,78 +83,12 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
             s.parentChannels = p.m_channels.transformOf(node.parent);
     }
 
-    // Constraints: resolve attribute paths, then the rest data of each solver.
     p.m_constraints.reserve(rig.constraints.size());
     for (const model::RigConstraint& rc : rig.constraints) {
-        CompiledConstraint c;
-        c.kind = rc.kind;
-        c.driven = rc.driven;
-        c.targets = rc.targets;
-        bool ok = !c.driven.empty();
-        if (!ok)
-            diagnostics.push_back(makeError({}, "constraint '" + rc.path + "' drives no node"));
-        for (const auto& [role, path] : rc.attributes) {
-            const auto channel = p.m_channels.findPath(rig, path);
-            if (!channel) {
-                diagnostics.push_back(makeError({}, attributeError(rc, role, path)));
-                ok = false;
-                continue;
-            }
-            int* slot = role == "weight" ? &c.weightChannel : role == "stretch" ? &c.stretchChannel
-                      : role == "soft"   ? &c.softChannel   : role == "value"   ? &c.valueChannel
-                      : role == "break"  ? &c.breakChannel  : role == "space"   ? &c.spaceChannel : nullptr;
-            if (slot) *slot = *channel;
-        }
-        auto value = [&](const char* key, double fallback) {
-            auto it = rc.values.find(key);
-            return it == rc.values.end() ? fallback : it->second;
-        };
-        c.axis = value("axis", 0.0);
-        c.mode = value("mode", 0.0);
-        c.factor = value("factor", 1.0);
-        c.low = value("low", -1e300);
-        c.high = value("high", 1e300);
-        c.fraction = value("fraction", 0.0);
-        c.orientOnly = value("orient_only", 0.0) != 0.0;
-        c.scaleDrive = value("channel", 0.0) == 1.0;
-        c.aimAxis = int(value("aim", 0.0));
-        c.upAxis = int(value("up", 1.0));
-        const std::size_t t = c.targets.size();
-        c.weights.assign(t, 1.0);
-        if (t == 2 && rc.values.count("weight")) {
-            c.weights[1] = value("weight", 0.5);
-            c.weights[0] = 1.0 - c.weights[1];
-        }
-        for (std::size_t k = 0; k < t; ++k)
-            c.weights[k] = value(("weight." + std::to_string(k)).c_str(), c.weights[k]);
-        double total = 0.0;
-        for (double w : c.weights) total += w;
-        for (double& w : c.weights) w = total > 0.0 ? w / total : 1.0 / double(t);
-        const bool keepOffset = value("offset", 1.0) != 0.0;
-        for (std::size_t k = 0; ok && k < t; ++k)
-            c.offsets.push_back(keepOffset ? rest[c.targets[k]].inverse() * rest[c.driven.front()] : Affine{});
-        for (const Affine& offset : c.offsets)
-            c.identityOffset.push_back(maxAbsDifference(offset.matrix(), Mat4(1.0)) < 1e-12);
-        if (ok) {
-            // A degenerate setup (overlapping guides, already warned about by the
-            // builder) leaves the driven nodes where their parents put them.
-            if (std::string error = prepareConstraint(c, rig, rest); !error.empty()) {
-                diagnostics.push_back(makeWarning({}, "constraint '" + rc.path + "': " + error + "; it is not evaluated"));
-                ok = false;
-            }
-        }
-        if (!ok)
-            c.driven.clear(); // keeps indices aligned with rig.constraints; never run
-        c.slot = int(p.m_constraints.size());
-        if (ok && c.kind == model::ConstraintKind::Twist && !p.m_constraints.empty()) {
-            const CompiledConstraint& previous = p.m_constraints.back();
-            if (previous.kind == model::ConstraintKind::Twist && previous.targets == c.targets && !previous.driven.empty())
-                c.shareTwistOf = previous.shareTwistOf >= 0 ? previous.shareTwistOf : previous.slot;
-        }
-        p.m_maxSamples = std::max(p.m_maxSamples, c.kind == model::ConstraintKind::Spline
-                                                      ? std::size_t(c.samplesPerSegment) * c.targets.size() + 1
-                                                      : std::size_t(0));
-        p.m_constraints.push_back(std::move(c));
+        p.m_constraints.push_back(compileConstraint(rc, rig, p.m_channels, rest, p.m_constraints, diagnostics));
+        const CompiledConstraint& c = p.m_constraints.back();
+        if (c.kind == model::ConstraintKind::Spline)
+            p.m_maxSamples = std::max(p.m_maxSamples, std::size_t(c.samplesPerSegment) * c.targets.size() + 1);
     }
     if (hasErrors(diagnostics))
         return Result<RigProgram>::failure(diagnostics);

@@ -3,13 +3,13 @@
 // dependency order (ozz-style jobs: compile validates once, evaluate runs). A
 // step either places one node (parent world * rest local * channels, with the
 // parent's channel scale removed on segment-scale-compensated nodes) or solves
-// one constraint (model::ConstraintKind documents each kind). Attribute paths
-// and ids are resolved to indices at compile time; evaluate() does no name
-// lookup and no allocation once the state is made.
+// one constraint (model/Constraint.h documents each kind's settings). Attribute
+// references are resolved to channel indices at compile time; evaluate() does
+// no name lookup and no allocation once the state is made.
 //
 // Compile fails with a diagnostic when the constraints form a cycle (a node
-// that, through its targets, depends on itself) or reference channels the rig
-// does not have. A constraint whose rest setup is degenerate (IK joints on one
+// that, through its targets, depends on itself) or reference attributes their
+// nodes do not have (every such reference is reported). A constraint whose rest setup is degenerate (IK joints on one
 // spot) is skipped with a warning. Units: metres, degrees in channels, radians inside.
 #include "base/Result.h"
 #include "eval/Affine.h"

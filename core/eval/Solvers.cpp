@@ -133,8 +133,8 @@ void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affin
     const double v = c.valueChannel >= 0 ? pose[c.valueChannel] : 0.0;
     const double breakAt = c.breakChannel >= 0 ? pose[c.breakChannel] : 0.0;
     double amount;
-    if (c.mode == 1.0) amount = c.factor * std::clamp(v, 0.0, std::max(breakAt, 0.0));
-    else if (c.mode == 2.0) amount = c.factor * std::max(v - breakAt, 0.0);
+    if (c.driveResponse == 1) amount = c.factor * std::clamp(v, 0.0, std::max(breakAt, 0.0));
+    else if (c.driveResponse == 2) amount = c.factor * std::max(v - breakAt, 0.0);
     else amount = c.factor * std::clamp(v, c.low, c.high);
     Affine& driven = world[c.driven.front()];
     if (c.scaleDrive) {
@@ -144,7 +144,7 @@ void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affin
     if (amount == 0.0)
         return;
     // Right-multiplying by a rotation about local axis k mixes the other two columns.
-    const int k = std::clamp(int(c.axis), 0, 2), a = (k + 1) % 3, b = (k + 2) % 3;
+    const int k = c.axis, a = (k + 1) % 3, b = (k + 2) % 3;
     double sine, cosine;
     sinCosDegrees(amount, sine, cosine);
     const Vec3 columnA = driven.linear[a], columnB = driven.linear[b];
@@ -175,6 +175,9 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
     }
     switch (c.kind) {
     case ConstraintKind::Parent: case ConstraintKind::Orient: case ConstraintKind::Point: case ConstraintKind::Scale:
+        if (c.weights.size() != t)
+            return "has " + std::to_string(c.weights.size()) + " weights for " + std::to_string(t) + (t == 1 ? " target" : " targets");
+        [[fallthrough]];
     case ConstraintKind::Space:
         if (t == 0) return "needs at least one target";
         if (t > kMaxTargets) return "has more than 16 targets";
@@ -198,6 +201,7 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         const Affine& a = rest[c.targets[0]];
         const Affine& b = rest[c.targets[1]];
         const Affine& d = rest[c.driven.front()];
+        c.offsets.resize(1);
         c.restRelative = glm::inverse(rotationOf(a)) * rotationOf(b);
         const Vec3 bone = b.translation - a.translation;
         if (glm::length(bone) < 1e-9) return "its two targets are at the same place";
@@ -208,7 +212,7 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         return {};
     }
     case ConstraintKind::Drive:
-        return c.valueChannel >= 0 ? std::string() : "needs a value attribute";
+        return c.low <= c.high ? std::string() : "its low limit is above its high limit";
     case ConstraintKind::Ik:
         return prepareIk(c, rest);
     case ConstraintKind::Spline:

@@ -1,11 +1,12 @@
 #pragma once
 // Internal to rs::eval: one constraint compiled for the evaluator (indices,
 // rest offsets and rest lengths precomputed) and the solver of each kind. See
-// model::ConstraintKind for the semantics; RigProgram orders and runs them.
+// model/Constraint.h for the semantics; RigProgram orders and runs them.
 #include "eval/Affine.h"
 #include "eval/Channels.h"
 #include "model/Rig.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,14 @@ struct CompiledConstraint {
     std::vector<Affine> offsets;       // per target: inverse(target rest) * driven rest
     std::vector<bool> identityOffset;  // per target: the offset is the identity (skipped)
     int weightChannel = -1, stretchChannel = -1, softChannel = -1, valueChannel = -1, breakChannel = -1,
-        spaceChannel = -1;
-    double axis = 0, mode = 0, factor = 1, low = -1e300, high = 1e300, fraction = 0;
-    bool orientOnly = false, scaleDrive = false;
+        spaceChannel = -1;             // -1: none
+    double fraction = 0;               // twist
+    bool orientOnly = false;           // space
+    // Drive: the local rotation axis (0 x, 1 y, 2 z) unless it scales, the
+    // response (model::DriveResponse's index) and its limits.
+    int axis = 0, driveResponse = 0;
+    double factor = 1, low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+    bool scaleDrive = false;
     model::RigNodeIndex chainParent = model::kNoNode; // parent of driven[0]
     double restParentScale = 1.0;
     Mat3 restParentRotation{1.0};
@@ -54,6 +60,12 @@ struct CompiledConstraint {
     int aimAxis = 0, upAxis = 1;
 };
 
+// Reads the typed settings of `rc` into `c` (its kind, driven and targets
+// already set): attribute channels resolved, weights normalised, rest offsets
+// measured. False, with an error naming the constraint and the attribute for
+// each reference that is not a custom attribute of its node.
+bool readSettings(const model::RigConstraint& rc, const model::Rig& rig, const ChannelLayout& channels,
+                  const std::vector<Affine>& restWorld, CompiledConstraint& c, Diagnostics& diagnostics);
 // Fills the rest data of `c` (offsets, lengths, spline parameters) from the rig's
 // rest pose; returns an error message, empty when the constraint is usable.
 std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, const std::vector<Affine>& restWorld);

@@ -53,6 +53,94 @@ std::string colorText(const Vec3& c)
     return buffer;
 }
 
+std::string nodeText(const model::Rig& rig, model::RigNodeIndex node)
+{
+    return node < rig.nodes.size() ? quoteIfNeeded(rig.nodes[node].path) : std::string("~");
+}
+
+std::string attributeText(const model::Rig& rig, const model::AttributeRef& a)
+{
+    return "{node: " + nodeText(rig, a.node) + ", attribute: " + quoteIfNeeded(a.attribute) + "}";
+}
+
+std::string attributeText(const model::Rig& rig, const std::optional<model::AttributeRef>& a)
+{
+    return a ? attributeText(rig, *a) : std::string("~");
+}
+
+std::string number(double v)
+{
+    return std::isinf(v) ? (v < 0.0 ? "-.inf" : ".inf") : fixed(v);
+}
+
+const char* boolText(bool b) { return b ? "true" : "false"; }
+
+// The typed settings of one constraint, every field by name in declaration order
+// (model/Constraint.h): absent attribute references are `~`.
+class SettingsWriter {
+public:
+    SettingsWriter(std::ostream& out, const model::Rig& rig) : m_out(out), m_rig(rig) {}
+
+    void operator()(const model::ParentConstraint& s) { weighted(s.weights, s.keepOffset); }
+    void operator()(const model::OrientConstraint& s) { weighted(s.weights, s.keepOffset); }
+    void operator()(const model::PointConstraint& s) { weighted(s.weights, s.keepOffset); }
+    void operator()(const model::ScaleConstraint& s) { weighted(s.weights, s.keepOffset); }
+    void operator()(const model::BlendConstraint& s)
+    {
+        field("weight", attributeText(m_rig, s.weight));
+        field("keep_offset", boolText(s.keepOffset));
+    }
+    void operator()(const model::IkConstraint& s)
+    {
+        field("stretch", attributeText(m_rig, s.stretch));
+        field("soft", attributeText(m_rig, s.soft));
+    }
+    void operator()(const model::TwistConstraint& s) { field("fraction", number(s.fraction)); }
+    void operator()(const model::SplineConstraint& s) { field("stretch", attributeText(m_rig, s.stretch)); }
+    void operator()(const model::SpaceConstraint& s)
+    {
+        field("choice", attributeText(m_rig, s.choice));
+        field("orient_only", boolText(s.orientOnly));
+        field("keep_offset", boolText(s.keepOffset));
+    }
+    void operator()(const model::DriveConstraint& s)
+    {
+        field("value", attributeText(m_rig, s.value));
+        field("output", model::driveOutputName(s.output));
+        field("factor", number(s.factor));
+        if (const auto* clamped = std::get_if<model::DriveClamped>(&s.response)) {
+            field("response", "clamped");
+            field("low", number(clamped->low));
+            field("high", number(clamped->high));
+        } else if (const auto* up = std::get_if<model::DriveUpToBreak>(&s.response)) {
+            field("response", "up_to_break");
+            field("break", attributeText(m_rig, up->breakAngle));
+        } else if (const auto* past = std::get_if<model::DrivePastBreak>(&s.response)) {
+            field("response", "past_break");
+            field("break", attributeText(m_rig, past->breakAngle));
+        }
+    }
+    void operator()(const model::AimConstraint& s)
+    {
+        field("aim", model::axisName(s.aim));
+        field("up", model::axisName(s.up));
+    }
+
+private:
+    void field(const char* name, const std::string& text) { m_out << "    " << name << ": " << text << "\n"; }
+    void weighted(const std::vector<double>& weights, bool keepOffset)
+    {
+        std::string text = "[";
+        for (std::size_t i = 0; i < weights.size(); ++i)
+            text += (i ? ", " : "") + number(weights[i]);
+        field("weights", text + "]");
+        field("keep_offset", boolText(keepOffset));
+    }
+
+    std::ostream& m_out;
+    const model::Rig& m_rig;
+};
+
 } // namespace
 
 std::string writeRigDump(const model::Rig& rig)
@@ -117,13 +205,10 @@ std::string writeRigDump(const model::Rig& rig)
     out << "constraints:" << (rig.constraints.empty() ? " []\n" : "\n");
     for (const auto& c : rig.constraints) {
         out << "  - id: " << quoteIfNeeded(c.path) << "\n";
-        out << "    kind: " << model::constraintKindName(c.kind) << "\n";
+        out << "    kind: " << model::constraintKindName(c.kind()) << "\n";
         out << "    driven: " << ids(c.driven) << "\n";
         out << "    targets: " << ids(c.targets) << "\n";
-        for (const auto& [role, attribute] : c.attributes)
-            out << "    " << role << ": " << quoteIfNeeded(attribute) << "\n";
-        for (const auto& [key, value] : c.values)
-            out << "    " << key << ": " << fixed(value) << "\n";
+        std::visit(SettingsWriter(out, rig), c.settings);
     }
     out << "sets:" << (rig.sets.empty() ? " {}\n" : "\n");
     for (const auto& [name, members] : rig.sets)

@@ -30,24 +30,6 @@ const char* kindName(RigNodeKind kind)
     return "group";
 }
 
-const char* constraintKindName(ConstraintKind kind)
-{
-    switch (kind) {
-    case ConstraintKind::Parent: return "parent";
-    case ConstraintKind::Orient: return "orient";
-    case ConstraintKind::Point: return "point";
-    case ConstraintKind::Blend: return "blend";
-    case ConstraintKind::Ik: return "ik";
-    case ConstraintKind::Twist: return "twist";
-    case ConstraintKind::Spline: return "spline";
-    case ConstraintKind::Space: return "space";
-    case ConstraintKind::Drive: return "drive";
-    case ConstraintKind::Aim: return "aim";
-    case ConstraintKind::Scale: return "scale";
-    }
-    return "parent";
-}
-
 namespace {
 constexpr const char* kRotateOrders[] = {"xyz", "yzx", "zxy", "xzy", "yxz", "zyx"};
 constexpr const char* kChannels[] = {"tx", "ty", "tz", "rx", "ry", "rz", "sx", "sy", "sz"};

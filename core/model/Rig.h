@@ -5,14 +5,15 @@
 // metres, Y-up. A node is identified by its NodeKey (authored instance id,
 // branch, tag path); its `path` ("arm.L::ctrls.fk.0", Mikan's rig id made of
 // the instance's current name) is for people, dumps and name maps only.
+// Constraints are typed per kind (model/Constraint.h).
 #include "base/Diagnostic.h"
 #include "base/Math.h"
+#include "model/Constraint.h"
 #include "model/GuideDocument.h"
 
 #include <array>
 #include <compare>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -20,9 +21,6 @@
 #include <vector>
 
 namespace rs::model {
-
-using RigNodeIndex = std::uint32_t;
-constexpr RigNodeIndex kNoNode = std::numeric_limits<RigNodeIndex>::max();
 
 enum class RigNodeKind { Group, Controller, Joint };
 const char* kindName(RigNodeKind kind);
@@ -131,46 +129,9 @@ private:
     bool m_inHierarchy = false;
 };
 
-// What a constraint does; the evaluator (issue 5) solves them in order after
-// the node hierarchy.
-enum class ConstraintKind {
-    Parent,  // driven follows the target's full transform (offset kept from the rest pose)
-    Orient,  // rotation only
-    Point,   // translation only
-    Blend,   // driven = mix(targets[0], targets[1]) by the "weight" attribute (FK/IK)
-    Ik,      // two- or three-bone IK: driven = chain, targets = [effector, pole]
-    Twist,   // driven takes `fraction` of the twist between targets[0] and targets[1]
-    Spline,  // driven chain follows a curve through the targets (control points)
-    Space,   // driven follows one of the targets, picked by the "space" attribute
-    Drive,   // attribute "value" rotates the driven node about its local `axis` (0 x, 1 y, 2 z), in degrees:
-             //   mode 0: factor * clamp(value, low, high)
-             //   mode 1: factor * clamp(value, 0, break)     (ball roll; "break" attribute)
-             //   mode 2: factor * max(value - break, 0)      (toe roll after the break)
-             // or, with value `channel` 1, scales it uniformly by factor * clamp(value, low, high).
-    Aim,     // driven's `aim` axis (0 x, 1 y, 2 z) points at targets[0]; its `up` axis towards
-             // targets[1] when given, else world Y; rest offset kept
-    Scale,   // driven's scale follows the targets' (weighted), rest ratio kept
-};
-// Settings every kind of point/orient/parent/aim/scale constraint understands:
-// values "weight" (two targets: the share of targets[1], default 0.5) or
-// "weight.<i>" per target (default 1, normalised); "offset" 0 snaps to the
-// targets instead of keeping the rest offset (default 1).
-const char* constraintKindName(ConstraintKind kind);
-
-struct RigConstraint {
-    NodeKey key;                             // identity, as a node's
-    std::string path;                        // display only, as a node's
-    ConstraintKind kind = ConstraintKind::Parent;
-    InstanceId owner = kNoId;
-    std::vector<RigNodeIndex> driven;
-    std::vector<RigNodeIndex> targets;
-    std::map<std::string, std::string> attributes; // role -> "<node id>.<attribute>" ("weight", "stretch"...)
-    std::map<std::string, double> values;          // numeric settings ("fraction", "axis", "min"...)
-};
-
 struct Rig {
     std::vector<RigNode> nodes;
-    std::vector<RigConstraint> constraints;
+    std::vector<RigConstraint> constraints; // in build order; the evaluator orders them by dependency
     std::map<std::string, std::vector<RigNodeIndex>> sets; // "controllers": every animatable controller
     std::map<NodeKey, RigNodeIndex> byKey;
     std::map<std::string, RigNodeIndex, std::less<>> byPath;

@@ -109,20 +109,21 @@ std::optional<model::RigNodeIndex> BuildContext::findNode(const std::string& tag
 
 void BuildContext::setHidden(model::RigNodeIndex index) { m_assembly.rig.nodes.at(index).hidden = true; }
 
-std::string BuildContext::addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min, double max)
+model::AttributeRef BuildContext::addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min,
+                                              double max)
 {
     auto& node = m_assembly.rig.nodes.at(index);
     node.attributes.push_back({name, std::clamp(value, min, max), min, max, {}});
-    return node.path + "." + name;
+    return {index, name};
 }
 
-std::string BuildContext::addEnumAttribute(model::RigNodeIndex index, const std::string& name, int value,
-                                          std::vector<std::string> labels)
+model::AttributeRef BuildContext::addEnumAttribute(model::RigNodeIndex index, const std::string& name, int value,
+                                                  std::vector<std::string> labels)
 {
     const double last = labels.empty() ? 0.0 : double(labels.size() - 1);
-    const std::string path = addAttribute(index, name, value, 0.0, last);
+    model::AttributeRef attribute = addAttribute(index, name, value, 0.0, last);
     m_assembly.rig.nodes.at(index).attributes.back().labels = std::move(labels);
-    return path;
+    return attribute;
 }
 
 model::ChannelSettings& BuildContext::channels(model::RigNodeIndex index)
@@ -130,30 +131,24 @@ model::ChannelSettings& BuildContext::channels(model::RigNodeIndex index)
     return m_assembly.rig.nodes.at(index).channels;
 }
 
-void BuildContext::addConstraint(model::ConstraintKind kind, const std::string& tag, std::vector<model::RigNodeIndex> driven,
-                                 std::vector<model::RigNodeIndex> targets, std::map<std::string, std::string> attributes,
-                                 std::map<std::string, double> values)
+void BuildContext::addConstraint(const std::string& tag, std::vector<model::RigNodeIndex> driven,
+                                 std::vector<model::RigNodeIndex> targets, model::ConstraintSettings settings)
 {
     model::RigConstraint c;
     c.key = m_assembly.keyOf(m_instance, tag);
     c.path = m_assembly.pathOf(m_instance, tag);
-    c.kind = kind;
     c.owner = m_assembly.copyOf(m_instance.id).original;
     c.driven = std::move(driven);
     c.targets = std::move(targets);
-    c.attributes = std::move(attributes);
-    c.values = std::move(values);
+    c.settings = std::move(settings);
     // Builders work in authored space. On a mirrored copy a rotation about a
     // local axis comes out reversed (M Rk(a) M = Rk(-a) unless k is the mirror
     // axis), so the drive's factor turns with it and the sides stay mirror images.
-    if (kind == model::ConstraintKind::Drive && c.values["channel"] == 0.0) {
+    if (auto* drive = std::get_if<model::DriveConstraint>(&c.settings); drive && drive->output != model::DriveOutput::Scale) {
         const Mat4& mirror = m_assembly.copyOf(m_instance.id).mirror;
-        const int axis = std::clamp(int(c.values["axis"]), 0, 2);
-        const double sign = mirror[(axis + 1) % 3][(axis + 1) % 3] * mirror[(axis + 2) % 3][(axis + 2) % 3];
-        c.values["factor"] = (c.values.count("factor") ? c.values["factor"] : 1.0) * sign;
+        const int axis = static_cast<int>(drive->output);
+        drive->factor *= mirror[(axis + 1) % 3][(axis + 1) % 3] * mirror[(axis + 2) % 3][(axis + 2) % 3];
     }
-    if (c.values["channel"] == 0.0)
-        c.values.erase("channel");
     for (auto index : c.driven)
         if (index == model::kNoNode) {
             error("constraint '" + c.path + "' has no driven node");

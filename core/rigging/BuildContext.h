@@ -64,15 +64,20 @@ public:
     // A node of this instance by tag ("ctrls.ik"); nullopt when it was not created.
     std::optional<model::RigNodeIndex> findNode(const std::string& tag) const;
     void setHidden(model::RigNodeIndex index);
-    // Adds an animatable attribute and returns its path "<node id>.<name>".
-    std::string addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min, double max);
+    // Adds an animatable attribute (value clamped to [min, max], in the
+    // attribute's unit) and returns the reference constraints read it by.
+    model::AttributeRef addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min, double max);
     // An enum attribute: one label per value 0, 1, 2...
-    std::string addEnumAttribute(model::RigNodeIndex index, const std::string& name, int value, std::vector<std::string> labels);
+    model::AttributeRef addEnumAttribute(model::RigNodeIndex index, const std::string& name, int value,
+                                         std::vector<std::string> labels);
     // A controller's transform channels (locks, limits, rotate order).
     model::ChannelSettings& channels(model::RigNodeIndex index);
-    void addConstraint(model::ConstraintKind kind, const std::string& tag, std::vector<model::RigNodeIndex> driven,
-                       std::vector<model::RigNodeIndex> targets, std::map<std::string, std::string> attributes = {},
-                       std::map<std::string, double> values = {});
+    // Adds the constraint "<instance>::<tag>"; `settings` (one struct per kind,
+    // model/Constraint.h) are in authored space: on a mirrored copy a drive's
+    // rotation factor is flipped to match. Reports an error, and adds nothing,
+    // when a driven node or a target is kNoNode.
+    void addConstraint(const std::string& tag, std::vector<model::RigNodeIndex> driven, std::vector<model::RigNodeIndex> targets,
+                       model::ConstraintSettings settings);
     // Named spaces other instances can follow ("world", "cog", "chest", "head").
     // The latest definition wins; space() gives kNoNode when none is defined.
     void defineSpace(const std::string& name, model::RigNodeIndex index);

@@ -1,6 +1,12 @@
 #include "EvalTestSupport.h"
 
+#include "io/YamlSupport.h"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
 
 namespace rs::test {
 
@@ -42,6 +48,53 @@ eval::Pose PosedRig::moveTo(const eval::Pose& pose, const std::string& control, 
     Mat4 world = posing->evaluate(pose).worldMatrix(index(control));
     world[3] = Vec4(target + restPosition(control) - restPosition(measured), 1.0);
     return posing->placeAt(pose, index(control), world);
+}
+
+eval::Pose sweepPose(const eval::ChannelLayout& layout)
+{
+    eval::Pose pose = layout.defaults();
+    for (std::size_t i = 0; i < layout.size(); ++i) {
+        const eval::Channel& c = layout[i];
+        const double s = std::sin(1.7 * double(i) + 0.3); // in [-1, 1], different for neighbouring channels
+        double value;
+        if (c.transform == eval::kRotateOrderChannel || (c.transform >= 0 && c.locked))
+            continue;
+        if (c.transform >= 0) // 5 cm, 25 degrees, 20 % of scale at most
+            value = c.transform < 3 ? 0.05 * s : c.transform < 6 ? 25.0 * s : 1.0 + 0.2 * s;
+        else if (c.min > 0.0) // a scale factor (post_scale): its range is too wide to sweep
+            value = c.defaultValue * (1.0 + 0.25 * s);
+        else
+            value = c.min + (c.max - c.min) * (0.5 + 0.4 * s);
+        pose[i] = layout.clamp(int(i), value);
+    }
+    return pose;
+}
+
+namespace {
+
+std::string fixed(double v)
+{
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.6f", v);
+    return std::string(buffer) == "-0.000000" ? "0.000000" : buffer;
+}
+
+} // namespace
+
+std::string worldDump(const model::Rig& rig, const eval::EvalState& state)
+{
+    std::ostringstream out;
+    for (model::RigNodeIndex i = 0; i < rig.nodes.size(); ++i) {
+        Vec3 t, s;
+        Quat r;
+        decompose(state.worldMatrix(i), t, r, s);
+        if (r.w < 0.0)
+            r = -r;
+        out << io::quoteIfNeeded(rig.nodes[i].path) << ": {t: [" << fixed(t.x) << ", " << fixed(t.y) << ", " << fixed(t.z)
+            << "], r: [" << fixed(r.x) << ", " << fixed(r.y) << ", " << fixed(r.z) << ", " << fixed(r.w) << "], s: ["
+            << fixed(s.x) << ", " << fixed(s.y) << ", " << fixed(s.z) << "]}\n";
+    }
+    return out.str();
 }
 
 } // namespace rs::test

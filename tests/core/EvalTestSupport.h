@@ -34,4 +34,13 @@ public:
     std::unique_ptr<eval::Posing> posing;
 };
 
+// A pose that moves every unlocked transform channel and every custom channel
+// (ik_blend, stretch, roll, space, curl, post_scale...) off its default, by a
+// different, deterministic amount per channel, so that every constraint of the
+// rig has something to solve. Rotate orders keep their defaults.
+eval::Pose sweepPose(const eval::ChannelLayout& layout);
+// Every node's evaluated world transform, one line per node ("<id>: {t, r, s}",
+// 6 decimals, quaternions [x, y, z, w]): what evaluation golden files hold.
+std::string worldDump(const model::Rig& rig, const eval::EvalState& state);
+
 } // namespace rs::test

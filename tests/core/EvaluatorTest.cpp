@@ -1,6 +1,6 @@
 // The evaluation engine on the bundled samples: rest reproduction, IK reach,
-// stretch and soft IK, global and segment scale, spline IK, reverse foot, and
-// compile-time rejection of cycles.
+// stretch and soft IK, global and segment scale, spline IK, reverse foot,
+// compile-time rejection of cycles, and a golden evaluation of every channel moved.
 #include "EvalTestSupport.h"
 #include "eval/IkSolver.h"
 
@@ -49,6 +49,16 @@ TEST_P(SampleEvaluation, GlobalScaleScalesEverySkinJointAboutTheWorldControl)
         EXPECT_LT(glm::length(translationOf(state.worldMatrix(i)) - 2.0 * translationOf(r.rig.nodes[i].worldMatrix)), 1e-9)
             << r.rig.nodes[i].path;
     }
+}
+
+// Every channel moved at once: the world transforms every constraint solves,
+// compared with the golden evaluation (changes to a solver show up here).
+TEST_P(SampleEvaluation, ASweptPoseEvaluatesAsTheGolden)
+{
+    PosedRig r(GetParam());
+    ASSERT_TRUE(r.ok());
+    const auto& state = r.evaluate(test::sweepPose(r.program->channels()));
+    test::expectMatchesGolden(test::worldDump(r.rig, state), "Evaluator/" + GetParam() + "/swept.yml");
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, SampleEvaluation, ::testing::Values("biped", "quadruped", "prop"));
@@ -244,21 +254,50 @@ TEST(Evaluator, CompileRejectsConstraintCyclesWithTheirIds)
     PosedRig r("prop");
     model::Rig rig = r.rig;
     const auto chest = *rig.findPath("chest::ctrls.xform"), lid = *rig.findPath("lid::ctrls.xform");
-    rig.constraints.push_back({{}, "test::cns.a", model::ConstraintKind::Parent, model::kNoId, {chest}, {lid}, {}, {}});
+    rig.constraints.push_back({{}, "test::cns.a", model::kNoId, {chest}, {lid}, model::ParentConstraint{}});
     const auto program = eval::RigProgram::compile(rig);
     ASSERT_FALSE(program.ok());
     EXPECT_NE(program.diagnostics().front().message.find("cycle"), std::string::npos);
     EXPECT_NE(program.diagnostics().front().message.find("test::cns.a"), std::string::npos);
 }
 
-TEST(Evaluator, CompileRejectsAttributePathsThatAreNotChannels)
+TEST(Evaluator, CompileRejectsEveryAttributeReferenceThatIsNotAnAttributeOfItsNode)
 {
     PosedRig r("prop");
     model::Rig rig = r.rig;
-    rig.constraints.back().attributes["weight"] = "chest::ctrls.xform.nothing";
+    const auto chest = *rig.findPath("chest::ctrls.xform"), lid = *rig.findPath("lid::ctrls.xform");
+    auto& drive = std::get<model::DriveConstraint>(rig.constraints.front().settings); // world::cns.post_scale
+    drive.value = {chest, "nothing"};
+    rig.constraints.push_back({{}, "test::cns.blend", model::kNoId, {*rig.findPath("antenna::skin.0")}, {chest, lid},
+                               model::BlendConstraint{.weight = {model::kNoNode, "ik_blend"}}});
     const auto program = eval::RigProgram::compile(rig);
     ASSERT_FALSE(program.ok());
-    EXPECT_NE(program.diagnostics().front().message.find("'chest::ctrls.xform.nothing' is not a channel"), std::string::npos);
+    ASSERT_EQ(program.diagnostics().size(), 2u) << formatAll(program.diagnostics());
+    EXPECT_EQ(program.diagnostics()[0].message,
+              "constraint 'world::cns.post_scale': its value attribute 'nothing' is not an attribute of node 'chest::ctrls.xform'");
+    EXPECT_EQ(program.diagnostics()[1].message, "constraint 'test::cns.blend': its weight attribute 'ik_blend' names no node of the rig");
+}
+
+TEST(Evaluator, ConstraintsWhoseSettingsDoNotFitAreSkippedWithAWarningEach)
+{
+    PosedRig r("prop");
+    model::Rig rig = r.rig;
+    const auto antenna = *rig.findPath("antenna::skin.3"), lid = *rig.findPath("lid::ctrls.xform");
+    const model::AttributeRef postScale{*rig.findPath("world::grps.post"), "post_scale"};
+    rig.constraints.push_back({{}, "t::point", model::kNoId, {antenna}, {lid}, model::PointConstraint{.weights = {1.0, 1.0}}});
+    rig.constraints.push_back({{}, "t::aim", model::kNoId, {antenna}, {lid}, model::AimConstraint{.aim = model::Axis::Z, .up = model::Axis::Z}});
+    rig.constraints.push_back({{}, "t::drive", model::kNoId, {antenna}, {},
+                               model::DriveConstraint{.value = postScale, .response = model::DriveClamped{.low = 2.0, .high = 1.0}}});
+    const auto program = eval::RigProgram::compile(rig);
+    ASSERT_TRUE(program.ok()) << formatAll(program.diagnostics());
+    ASSERT_EQ(program.diagnostics().size(), 3u) << formatAll(program.diagnostics());
+    EXPECT_EQ(program.diagnostics()[0].message, "constraint 't::point': has 2 weights for 1 target; it is not evaluated");
+    EXPECT_EQ(program.diagnostics()[1].message,
+              "constraint 't::aim': aim and up axes must be two different axes of x, y, z; it is not evaluated");
+    EXPECT_EQ(program.diagnostics()[2].message, "constraint 't::drive': its low limit is above its high limit; it is not evaluated");
+    auto state = program->makeState();
+    program->evaluate(program->channels().defaults(), state);
+    EXPECT_LT(maxAbsDifference(state.worldMatrix(antenna), rig.nodes[antenna].worldMatrix), 1e-9);
 }
 
 TEST(Evaluator, AimPointScaleConstraintsFollowTheirTargets)
@@ -266,9 +305,9 @@ TEST(Evaluator, AimPointScaleConstraintsFollowTheirTargets)
     PosedRig r("prop");
     model::Rig rig = r.rig;
     const auto antenna = *rig.findPath("antenna::skin.3"), lid = *rig.findPath("lid::ctrls.xform"), chest = *rig.findPath("chest::ctrls.xform");
-    rig.constraints.push_back({{}, "t::aim", model::ConstraintKind::Aim, model::kNoId, {antenna}, {lid}, {}, {{"aim", 1.0}, {"up", 0.0}}});
-    rig.constraints.push_back({{}, "t::point", model::ConstraintKind::Point, model::kNoId, {*rig.findPath("antenna::skin.0")}, {chest, lid}, {}, {}});
-    rig.constraints.push_back({{}, "t::scale", model::ConstraintKind::Scale, model::kNoId, {*rig.findPath("antenna::skin.1")}, {chest}, {}, {}});
+    rig.constraints.push_back({{}, "t::aim", model::kNoId, {antenna}, {lid}, model::AimConstraint{.aim = model::Axis::Y, .up = model::Axis::X}});
+    rig.constraints.push_back({{}, "t::point", model::kNoId, {*rig.findPath("antenna::skin.0")}, {chest, lid}, model::PointConstraint{}});
+    rig.constraints.push_back({{}, "t::scale", model::kNoId, {*rig.findPath("antenna::skin.1")}, {chest}, model::ScaleConstraint{}});
     auto program = eval::RigProgram::compile(rig);
     ASSERT_TRUE(program.ok());
     auto state = program->makeState();

@@ -134,10 +134,11 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     EXPECT_EQ(settings.attribute("soft_ik")->value, 0.0);
     const auto* ik = constraint(rig, "arm.L::cns.ik");
     ASSERT_NE(ik, nullptr);
-    EXPECT_EQ(ik->kind, ConstraintKind::Ik);
+    ASSERT_EQ(ik->kind(), ConstraintKind::Ik);
     EXPECT_EQ(ik->driven.size(), 3u);
     EXPECT_EQ(rig.nodes[ik->targets[1]].path, "arm.L::ctrls.pole");
-    EXPECT_EQ(ik->attributes.at("stretch"), "arm.L::ctrls.switch.stretch");
+    EXPECT_EQ(std::get<model::IkConstraint>(ik->settings).stretch,
+              (model::AttributeRef{*rig.findPath("arm.L::ctrls.switch"), "stretch"}));
     const auto* blend = constraint(rig, "arm.L::cns.blend.1");
     ASSERT_NE(blend, nullptr);
     EXPECT_EQ(rig.nodes[blend->targets[0]].path, "arm.L::ctrls.fk.1");
@@ -147,9 +148,10 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     EXPECT_EQ(countTagged(rig, "arm.L::skin.dn."), 2u);
     const Vec3 shoulder = at(rig, "arm.L::blend.0"), elbow = at(rig, "arm.L::blend.1");
     EXPECT_LT(glm::length(at(rig, "arm.L::skin.up.0") - glm::mix(shoulder, elbow, 1.0 / 3.0)), 1e-9);
-    EXPECT_EQ(constraint(rig, "arm.L::cns.up.1")->values.at("fraction"), 2.0 / 3.0);
+    EXPECT_EQ(std::get<model::TwistConstraint>(constraint(rig, "arm.L::cns.up.1")->settings).fraction, 2.0 / 3.0);
     // Blend joints at elbow and wrist, halfway between their segments.
-    EXPECT_EQ(constraint(rig, "arm.L::cns.mid.0")->values.at("weight"), 0.5);
+    EXPECT_EQ(std::get<model::OrientConstraint>(constraint(rig, "arm.L::cns.mid.0")->settings).weights,
+              (std::vector<double>{0.5, 0.5}));
     // The pole sits behind the elbow, the knee's pole in front of the knee.
     EXPECT_LT(at(rig, "arm.L::ctrls.pole").z, elbow.z - 0.1);
     EXPECT_GT(at(rig, "leg.L::ctrls.pole").z, at(rig, "leg.L::blend.1").z + 0.1);
@@ -204,7 +206,10 @@ TEST(Templates, TheLegHasAReverseFootFromTaggedPivots)
     const auto& ik = node(rig, "leg.L::ctrls.ik");
     for (const char* attribute : {"roll", "roll_break", "bank", "heel_twist", "toe_twist", "toe_tap"})
         EXPECT_NE(ik.attribute(attribute), nullptr) << attribute;
-    EXPECT_EQ(constraint(rig, "leg.L::cns.rfoot.toe_roll")->attributes.at("break"), "leg.L::ctrls.ik.roll_break");
+    const auto& toeRoll = std::get<model::DriveConstraint>(constraint(rig, "leg.L::cns.rfoot.toe_roll")->settings);
+    ASSERT_TRUE(std::holds_alternative<model::DrivePastBreak>(toeRoll.response));
+    EXPECT_EQ(std::get<model::DrivePastBreak>(toeRoll.response).breakAngle,
+              (model::AttributeRef{*rig.findPath("leg.L::ctrls.ik"), "roll_break"}));
 }
 
 TEST(Templates, TheHeadFollowsTheSpaceItsOptionPicks)

@@ -203,9 +203,8 @@ void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNode
             index = int(i);
         targets.push_back(target);
     }
-    const std::string attribute = ctx.addEnumAttribute(control, "space", index, spaces);
-    ctx.addConstraint(model::ConstraintKind::Space, tag, {group}, targets, {{"space", attribute}},
-                      orientOnly ? std::map<std::string, double>{{"orient_only", 1.0}} : std::map<std::string, double>{});
+    const model::AttributeRef choice = ctx.addEnumAttribute(control, "space", index, spaces);
+    ctx.addConstraint(tag, {group}, targets, model::SpaceConstraint{.choice = choice, .orientOnly = orientOnly});
 }
 
 } // namespace rs::rigging::kit

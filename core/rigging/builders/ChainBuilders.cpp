@@ -10,7 +10,6 @@ namespace rs::rigging {
 
 namespace {
 
-using model::ConstraintKind;
 using model::JointId;
 using model::RigNodeIndex;
 using model::RigNodeKind;
@@ -55,10 +54,13 @@ public:
         }
         ctx.setHook(chain.back(), parent);
         // Curl bends every phalanx about its bend axis (Z) from one attribute.
-        const std::string curl = ctx.addAttribute(controls.front().ctrl, "curl", 0.0, -30.0, 120.0);
+        const model::AttributeRef curl = ctx.addAttribute(controls.front().ctrl, "curl", 0.0, -30.0, 120.0);
         for (std::size_t i = base ? 1 : 0; i < controls.size(); ++i)
-            ctx.addConstraint(ConstraintKind::Drive, "cns.curl." + std::to_string(i), {controls[i].offset}, {}, {{"value", curl}},
-                              {{"axis", 2.0}, {"mode", 0.0}, {"factor", 1.0}, {"low", -30.0}, {"high", 120.0}});
+            ctx.addConstraint("cns.curl." + std::to_string(i), {controls[i].offset}, {},
+                              model::DriveConstraint{.value = curl,
+                                                     .output = model::DriveOutput::RotateZ,
+                                                     .factor = 1.0,
+                                                     .response = model::DriveClamped{.low = -30.0, .high = 120.0}});
     }
 };
 
@@ -102,7 +104,7 @@ public:
             parent = kit::addControl(ctx, "spline." + std::to_string(c), "", c + 1, parent, frame, chain[s]).ctrl;
             targets.push_back(parent);
         }
-        const std::string stretch = ctx.addAttribute(targets.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+        const model::AttributeRef stretch = ctx.addAttribute(targets.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
 
         // The driven chain follows the curve; skin joints ride on it.
         std::vector<RigNodeIndex> driven;
@@ -113,7 +115,7 @@ public:
             kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, drvParent, frames[i], chain[i]);
             ctx.setHook(chain[i], drvParent);
         }
-        ctx.addConstraint(ConstraintKind::Spline, "cns.spline", driven, targets, {{"stretch", stretch}});
+        ctx.addConstraint("cns.spline", driven, targets, model::SplineConstraint{.stretch = stretch});
     }
 };
 

@@ -16,7 +16,7 @@ namespace rs::rigging {
 
 namespace {
 
-using model::ConstraintKind;
+using model::AttributeRef;
 using model::JointId;
 using model::RigNodeIndex;
 using model::RigNodeKind;
@@ -199,9 +199,9 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const auto settings = kit::addControl(ctx, "switch", "switch", {}, limbGroup, switchFrame, g.limb[k - 1]).ctrl;
     if (ctx.node(settings).kind == model::RigNodeKind::Controller)
         ctx.channels(settings).lock(0, model::ChannelSettings::kCount); // a settings holder: custom channels only
-    const std::string weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
-    const std::string stretch = ctx.addAttribute(settings, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
-    const std::string soft = ctx.addAttribute(settings, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
+    const AttributeRef weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
+    const AttributeRef stretch = ctx.addAttribute(settings, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+    const AttributeRef soft = ctx.addAttribute(settings, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
 
     // IK controller, pole vector and the reverse foot.
     const Mat4 ikFrame = legLike() ? kit::uprightFrame(g.points[k - 1]) : frames[k - 1];
@@ -230,17 +230,16 @@ void LimbBuilder::generate(BuildContext& ctx) const
         blendParent = kit::addSetup(ctx, RigNodeKind::Joint, "blend." + index, "blend", int(i) + 1, blendParent, frames[i], g.limb[i]);
         blend.push_back(blendParent);
     }
-    ctx.addConstraint(ConstraintKind::Ik, "cns.ik", ik, {effector, poleCtrl}, {{"stretch", stretch}, {"soft", soft}},
-                      {{"segments", double(k - 1)}});
+    ctx.addConstraint("cns.ik", ik, {effector, poleCtrl}, model::IkConstraint{.stretch = stretch, .soft = soft});
     for (std::size_t i = 0; i < k; ++i)
-        ctx.addConstraint(ConstraintKind::Blend, "cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]}, {{"weight", weight}});
+        ctx.addConstraint("cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]}, model::BlendConstraint{.weight = weight});
     RigNodeIndex end = blend.back();
     if (legLike()) { // the ball joint: FK toe control or the reverse foot's toe tap
         const auto toeFk = kit::addControl(ctx, "fk.ball", "toe", {}, fk.back(), frames[k], g.end).ctrl;
         const auto ikBall = kit::addSetup(ctx, RigNodeKind::Joint, "ik.ball", "ik_toe", {}, ik.back(), frames[k], g.end);
-        ctx.addConstraint(ConstraintKind::Orient, "cns.ik_ball", {ikBall}, {toeTap});
+        ctx.addConstraint("cns.ik_ball", {ikBall}, {toeTap}, model::OrientConstraint{});
         end = kit::addSetup(ctx, RigNodeKind::Joint, "blend.ball", "blend_toe", {}, blend.back(), frames[k], g.end);
-        ctx.addConstraint(ConstraintKind::Blend, "cns.blend.ball", {end}, {toeFk, ikBall}, {{"weight", weight}});
+        ctx.addConstraint("cns.blend.ball", {end}, {toeFk, ikBall}, model::BlendConstraint{.weight = weight});
     }
 
     // Skin: one joint per segment, twist joints spread along the upper and
@@ -261,15 +260,15 @@ void LimbBuilder::generate(BuildContext& ctx) const
                 frame[3] = Vec4(glm::mix(g.points[s], g.points[s + 1], fraction), 1.0);
                 const auto joint = kit::addSkin(ctx, std::string(segment[s]) + "." + std::to_string(t), segment[s], int(t) + 1,
                                                 skin[s], frame, g.limb[s]);
-                ctx.addConstraint(ConstraintKind::Twist, "cns." + std::string(segment[s]) + "." + std::to_string(t), {joint},
-                                  {blend[s], blend[s + 1]}, {}, {{"fraction", fraction}});
+                ctx.addConstraint("cns." + std::string(segment[s]) + "." + std::to_string(t), {joint}, {blend[s], blend[s + 1]},
+                                  model::TwistConstraint{.fraction = fraction});
             }
         }
         if (ctx.optionBool("blend_joints"))
             for (std::size_t i = 1; i < k; ++i) {
                 const auto joint = kit::addSkin(ctx, "mid." + std::to_string(i - 1), "mid", int(i), skin[i - 1], frames[i], g.limb[i]);
-                ctx.addConstraint(ConstraintKind::Orient, "cns.mid." + std::to_string(i - 1), {joint}, {blend[i - 1], blend[i]}, {},
-                                  {{"weight", 0.5}});
+                ctx.addConstraint("cns.mid." + std::to_string(i - 1), {joint}, {blend[i - 1], blend[i]},
+                                  model::OrientConstraint{.weights = {0.5, 0.5}}); // halfway
             }
     }
 
@@ -321,24 +320,23 @@ void LimbBuilder::buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNod
     // Z), a negative roll rocks back on the heel; bank rolls onto the outer edge.
     const Vec3 lateral = glm::normalize(glm::cross(forward, Vec3(0.0, 1.0, 0.0)));
     auto frameAt = [&](const Vec3& p) { return kit::aimFrame(p, forward, lateral); };
-    const std::string roll = ctx.addAttribute(ikCtrl, "roll", 0.0, -90.0, 90.0);
-    const std::string rollBreak = ctx.addAttribute(ikCtrl, "roll_break", 30.0, 0.0, 90.0);
-    const std::string bank = ctx.addAttribute(ikCtrl, "bank", 0.0, -90.0, 90.0);
-    const std::string heelTwist = ctx.addAttribute(ikCtrl, "heel_twist", 0.0, -90.0, 90.0);
-    const std::string toeTwist = ctx.addAttribute(ikCtrl, "toe_twist", 0.0, -90.0, 90.0);
-    const std::string tap = ctx.addAttribute(ikCtrl, "toe_tap", 0.0, -90.0, 90.0);
+    const AttributeRef roll = ctx.addAttribute(ikCtrl, "roll", 0.0, -90.0, 90.0);
+    const AttributeRef rollBreak = ctx.addAttribute(ikCtrl, "roll_break", 30.0, 0.0, 90.0);
+    const AttributeRef bank = ctx.addAttribute(ikCtrl, "bank", 0.0, -90.0, 90.0);
+    const AttributeRef heelTwist = ctx.addAttribute(ikCtrl, "heel_twist", 0.0, -90.0, 90.0);
+    const AttributeRef toeTwist = ctx.addAttribute(ikCtrl, "toe_twist", 0.0, -90.0, 90.0);
+    const AttributeRef tap = ctx.addAttribute(ikCtrl, "toe_tap", 0.0, -90.0, 90.0);
 
     auto group = [&](const std::string& key, RigNodeIndex parent, const Vec3& p, JointId source) {
         return kit::addSetup(ctx, RigNodeKind::Group, "rfoot." + key, key, {}, parent, frameAt(p), source);
     };
-    auto drive = [&](const std::string& key, RigNodeIndex node, const std::string& value, double axis, double mode,
-                     double factor, double low, double high) {
-        std::map<std::string, std::string> attributes{{"value", value}};
-        if (mode != 0.0)
-            attributes["break"] = rollBreak;
-        ctx.addConstraint(ConstraintKind::Drive, "cns.rfoot." + key, {node}, {}, attributes,
-                          {{"axis", axis}, {"mode", mode}, {"factor", factor}, {"low", low}, {"high", high}});
+    using model::DriveOutput;
+    auto drive = [&](const std::string& key, RigNodeIndex node, const AttributeRef& value, DriveOutput output, double factor,
+                     model::DriveResponse response) {
+        ctx.addConstraint("cns.rfoot." + key, {node}, {},
+                          model::DriveConstraint{.value = value, .output = output, .factor = factor, .response = response});
     };
+    auto range = [](double low, double high) { return model::DriveClamped{.low = low, .high = high}; };
     const JointId ankleJoint = g.limb[limbCount() - 1];
     const auto heelNode = group("heel", ikCtrl, heel, ankleJoint);
     const auto toeNode = group("toe", heelNode, Vec3(toe.x, ground, toe.z), g.toe);
@@ -348,15 +346,15 @@ void LimbBuilder::buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNod
     toeTap = group("toe_tap", intNode, ball, g.end);
     effector = kit::addSetup(ctx, RigNodeKind::Group, "rfoot.ankle", "ankle", {}, ballNode, frameAt(ankle), ankleJoint);
 
-    drive("heel_roll", heelNode, roll, 2, 0, -1.0, -90.0, 0.0);
-    drive("heel_twist", heelNode, heelTwist, 1, 0, 1.0, -90.0, 90.0);
-    drive("toe_roll", toeNode, roll, 2, 2, -1.0, 0.0, 90.0);
-    drive("toe_twist", toeNode, toeTwist, 1, 0, 1.0, -90.0, 90.0);
+    drive("heel_roll", heelNode, roll, DriveOutput::RotateZ, -1.0, range(-90.0, 0.0));
+    drive("heel_twist", heelNode, heelTwist, DriveOutput::RotateY, 1.0, range(-90.0, 90.0));
+    drive("toe_roll", toeNode, roll, DriveOutput::RotateZ, -1.0, model::DrivePastBreak{.breakAngle = rollBreak});
+    drive("toe_twist", toeNode, toeTwist, DriveOutput::RotateY, 1.0, range(-90.0, 90.0));
     const double outward = glm::dot(lateral, bankExt - bankInt) >= 0.0 ? 1.0 : -1.0;
-    drive("bank_ext", extNode, bank, 0, 0, outward, 0.0, 90.0);
-    drive("bank_int", intNode, bank, 0, 0, outward, -90.0, 0.0);
-    drive("ball_roll", ballNode, roll, 2, 1, -1.0, 0.0, 90.0);
-    drive("toe_tap", toeTap, tap, 2, 0, 1.0, -90.0, 90.0);
+    drive("bank_ext", extNode, bank, DriveOutput::RotateX, outward, range(0.0, 90.0));
+    drive("bank_int", intNode, bank, DriveOutput::RotateX, outward, range(-90.0, 0.0));
+    drive("ball_roll", ballNode, roll, DriveOutput::RotateZ, -1.0, model::DriveUpToBreak{.breakAngle = rollBreak});
+    drive("toe_tap", toeTap, tap, DriveOutput::RotateZ, 1.0, range(-90.0, 90.0));
 }
 
 } // namespace

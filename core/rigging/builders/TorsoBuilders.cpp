@@ -9,7 +9,6 @@ namespace rs::rigging {
 
 namespace {
 
-using model::ConstraintKind;
 using model::RigNodeIndex;
 using model::RigNodeKind;
 
@@ -49,7 +48,7 @@ public:
 
         const auto cog = kit::addControl(ctx, "cog", "cog", {}, ctx.hookNode(), hipsFrame, chain.front());
         const auto hips = kit::addControl(ctx, "hips", "hips", {}, cog.ctrl, hipsFrame, chain.front());
-        const std::string blendWeight = ctx.addAttribute(cog.ctrl, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
+        const model::AttributeRef blendWeight = ctx.addAttribute(cog.ctrl, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
 
         // FK: one control per joint, each under the previous one.
         std::vector<RigNodeIndex> fk;
@@ -61,7 +60,7 @@ public:
         // IK-style torso: hips and chest controls drive a spline through the chain.
         const auto ikHips = kit::addControl(ctx, "ik_hips", "ik_hips", {}, cog.ctrl, hipsFrame, chain.front());
         const auto ikChest = kit::addControl(ctx, "ik_chest", "ik_chest", {}, cog.ctrl, kit::uprightFrame(points.back()), chain.back());
-        const std::string stretch = ctx.addAttribute(ikChest.ctrl, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+        const model::AttributeRef stretch = ctx.addAttribute(ikChest.ctrl, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
         std::vector<RigNodeIndex> ik, blend;
         RigNodeIndex ikParent = cog.ctrl, blendParent = cog.ctrl;
         for (std::size_t i = 0; i < n; ++i) {
@@ -71,10 +70,10 @@ public:
             blendParent = kit::addSetup(ctx, RigNodeKind::Joint, "blend." + index, "blend", int(i) + 1, blendParent, frames[i], chain[i]);
             blend.push_back(blendParent);
         }
-        ctx.addConstraint(ConstraintKind::Spline, "cns.ik", ik, {ikHips.ctrl, ikChest.ctrl}, {{"stretch", stretch}});
+        ctx.addConstraint("cns.ik", ik, {ikHips.ctrl, ikChest.ctrl}, model::SplineConstraint{.stretch = stretch});
         for (std::size_t i = 0; i < n; ++i)
-            ctx.addConstraint(ConstraintKind::Blend, "cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]},
-                              {{"weight", blendWeight}});
+            ctx.addConstraint("cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]},
+                              model::BlendConstraint{.weight = blendWeight});
 
         // Skin: the pelvis follows the hips control, the spine the blended chain.
         kit::addSkin(ctx, "0", "hips", {}, hips.ctrl, frames.front(), chain.front());

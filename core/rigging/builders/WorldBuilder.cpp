@@ -62,9 +62,12 @@ public:
         const auto post = ctx.createNode(RigNodeKind::Group, "grps.post", ctx.nodeName(NameRole::Group, "post"), top, worldFrame);
         // Seed 004's post transform: the rigger's overall scale of the character,
         // set once (not animated) and applied below the animators' controls.
-        const std::string postScale = ctx.addAttribute(post, "post_scale", 1.0, 0.0001, 1000.0);
-        ctx.addConstraint(model::ConstraintKind::Drive, "cns.post_scale", {post}, {}, {{"value", postScale}},
-                          {{"channel", 1.0}, {"factor", 1.0}, {"low", 0.0001}, {"high", 1000.0}});
+        const model::AttributeRef postScale = ctx.addAttribute(post, "post_scale", 1.0, 0.0001, 1000.0);
+        ctx.addConstraint("cns.post_scale", {post}, {},
+                          model::DriveConstraint{.value = postScale,
+                                                 .output = model::DriveOutput::Scale,
+                                                 .factor = 1.0,
+                                                 .response = model::DriveClamped{.low = 0.0001, .high = 1000.0}});
         model::RigNodeIndex anchor = post;
         if (ctx.optionBool("do_fly"))
             anchor = control("fly", post, rootFrame, root);
@@ -78,7 +81,7 @@ public:
         if (ctx.optionBool("do_skin")) {
             const auto skin = ctx.createNode(RigNodeKind::Joint, "skin.root", ctx.nodeName(NameRole::Skin, "root"), jointGroup,
                                              rootFrame, root);
-            ctx.addConstraint(model::ConstraintKind::Parent, "cns.root", {skin}, {anchor});
+            ctx.addConstraint("cns.root", {skin}, {anchor}, model::ParentConstraint{});
         }
     }
 };

@@ -1,0 +1,214 @@
+#pragma once
+// The constraints of a built rig, typed: one settings struct per kind holding
+// exactly what the evaluator (rs::eval::RigProgram) reads for that kind, so a
+// setting nothing reads cannot be written. Builders add them through
+// rs::rigging::BuildContext::addConstraint; the evaluator solves them in
+// dependency order after the node hierarchy; the rig dump writes every field
+// by name.
+//
+// Nodes are indices into Rig::nodes. Units: metres; every angle a setting or
+// an attribute holds is in degrees. A custom attribute is referenced by node
+// and name (AttributeRef), never by a text path: compiling the rig fails with
+// an error naming the constraint and the attribute when the node has no such
+// attribute. A constraint whose settings do not fit (an IK with one target,
+// weights that are not one per target, an aim whose aim and up axes are the
+// same, a drive whose low limit is above its high one) or whose rest setup is
+// degenerate is skipped by the evaluator with a warning.
+#include "base/Identity.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace rs::model {
+
+using RigNodeIndex = std::uint32_t; // into Rig::nodes
+constexpr RigNodeIndex kNoNode = std::numeric_limits<RigNodeIndex>::max();
+
+// A local axis of a node: column 0, 1 or 2 of its world matrix.
+enum class Axis : std::uint8_t { X, Y, Z };
+const char* axisName(Axis axis); // "x", "y", "z"
+
+// An animatable custom attribute of a node (RigNode::attributes: `ik_blend`,
+// `roll`, `space`), read by a constraint as a channel of the pose.
+struct AttributeRef {
+    RigNodeIndex node = kNoNode;
+    std::string attribute{};
+    bool operator==(const AttributeRef&) const = default;
+};
+
+// Parent, orient, point and scale constraints: driven[0] takes the weighted
+// average of its targets' transforms (positions and scales averaged linearly,
+// rotations as a normalised quaternion mix), each target's taken with the
+// driven's rest offset from it.
+//  - weights: the relative share of each target, in target order, normalised
+//    to sum 1. Empty: equal shares. Otherwise exactly one per target (the
+//    constraint is skipped with a warning if not); a sum <= 0 gives equal shares.
+//  - keepOffset: true keeps the driven's rest offset from each target (the
+//    rest pose is unchanged); false snaps it onto the targets.
+struct ParentConstraint { // position, rotation and scale
+    std::vector<double> weights{};
+    bool keepOffset = true;
+    bool operator==(const ParentConstraint&) const = default;
+};
+struct OrientConstraint { // rotation only
+    std::vector<double> weights{};
+    bool keepOffset = true;
+    bool operator==(const OrientConstraint&) const = default;
+};
+struct PointConstraint { // position only
+    std::vector<double> weights{};
+    bool keepOffset = true;
+    bool operator==(const PointConstraint&) const = default;
+};
+struct ScaleConstraint { // scale only
+    std::vector<double> weights{};
+    bool keepOffset = true;
+    bool operator==(const ScaleConstraint&) const = default;
+};
+
+// FK/IK blend: driven[0] = mix(targets[0] (FK), targets[1] (IK)) by `weight`
+// clamped to [0, 1]: 0 all FK, 1 all IK. Positions and scales mix linearly,
+// rotations by a normalised quaternion lerp. Exactly two targets.
+struct BlendConstraint {
+    AttributeRef weight{};
+    bool keepOffset = true; // as ParentConstraint's
+    bool operator==(const BlendConstraint&) const = default;
+};
+
+// Limb IK. driven is the chain, root first, each joint a child of the one
+// before: 3 joints (the analytic two-bone solution) or 4 (a quadruped hind
+// leg: joint 2 keeps its place in the frame of a virtual bone from joint 1 to
+// the end). targets = [effector, pole]: the end reaches for the effector's
+// position and takes its rotation (rest offset kept); the pole sets the bend
+// plane. Both attributes are clamped to [0, 1].
+struct IkConstraint {
+    // 0: the chain stops at full reach; 1: the bones lengthen to reach the
+    // effector; in between, part of the way. None: 0.
+    std::optional<AttributeRef> stretch{};
+    // The share of the full reach (sum of bone lengths) over which the reach
+    // eases out instead of snapping straight. None: 0 (hard IK).
+    std::optional<AttributeRef> soft{};
+    bool operator==(const IkConstraint&) const = default;
+};
+
+// A twist joint between targets[0] (segment start) and targets[1] (segment
+// end): driven[0] sits `fraction` of the way along the segment (its rest
+// offset kept) and turns by `fraction` of the end's twist about the bone
+// relative to the start (taken within +-180 degrees). Consecutive twist
+// constraints with the same targets share one twist angle.
+struct TwistConstraint {
+    double fraction = 0.0; // 0 at targets[0], 1 at targets[1]
+    bool operator==(const TwistConstraint&) const = default;
+};
+
+// Spline IK (spines, necks, tails): driven is a chain, root first; targets are
+// 2 to 16 controls a cubic curve passes through (tangents along the controls'
+// rest chain direction, its frame blending their rotations). Each joint keeps
+// its rest offset from the curve frame.
+struct SplineConstraint {
+    // Clamped to [0, 1]. 1: each joint keeps its rest curve parameter, so the
+    // chain stretches with the curve; 0: each keeps its rest arc length, so the
+    // chain keeps its length and slides along the curve. None: 1.
+    std::optional<AttributeRef> stretch{};
+    bool operator==(const SplineConstraint&) const = default;
+};
+
+// Space switch: driven[0] follows targets[i], i the `choice` enum attribute's
+// value (rounded, clamped to the targets).
+struct SpaceConstraint {
+    AttributeRef choice{};
+    bool orientOnly = false; // only the target's rotation: the driven keeps its own position and scale
+    bool keepOffset = true;  // as ParentConstraint's
+    bool operator==(const SpaceConstraint&) const = default;
+};
+
+// What a drive does with its amount (below): turn driven[0] about its local
+// X, Y or Z axis by `amount` degrees, or scale it uniformly by `amount` (1
+// keeps its size, 0 collapses it).
+enum class DriveOutput : std::uint8_t { RotateX = 0, RotateY = 1, RotateZ = 2, Scale = 3 }; // rotations: the axis index
+const char* driveOutputName(DriveOutput output); // "rotate_x" ... "scale"
+
+// How a drive's amount follows its value (`factor` as DriveConstraint's):
+// amount = factor * clamp(value, low, high); no limit by default.
+struct DriveClamped {
+    double low = -std::numeric_limits<double>::infinity();
+    double high = std::numeric_limits<double>::infinity();
+    bool operator==(const DriveClamped&) const = default;
+};
+// amount = factor * clamp(value, 0, max(break, 0)): a ball roll up to the break angle.
+struct DriveUpToBreak {
+    AttributeRef breakAngle{}; // degrees
+    bool operator==(const DriveUpToBreak&) const = default;
+};
+// amount = factor * max(value - break, 0): a toe roll past the break angle.
+struct DrivePastBreak {
+    AttributeRef breakAngle{}; // degrees
+    bool operator==(const DrivePastBreak&) const = default;
+};
+using DriveResponse = std::variant<DriveClamped, DriveUpToBreak, DrivePastBreak>;
+
+// An attribute-driven rotation or scale: `value` turns or scales driven[0]
+// after its parent placed it (finger curl, foot roll pivots, the rig's post
+// scale). No targets.
+struct DriveConstraint {
+    AttributeRef value{};
+    DriveOutput output = DriveOutput::RotateX;
+    // Degrees per unit of value for a rotation, scale per unit for Scale. On a
+    // mirrored branch copy the builder flips its sign for rotations about the
+    // axes the mirror reverses, so both sides turn as mirror images.
+    double factor = 1.0;
+    DriveResponse response{};
+    bool operator==(const DriveConstraint&) const = default;
+};
+
+// driven[0]'s `aim` axis points at targets[0]; its `up` axis towards
+// targets[1] when there is one, else world +Y (target positions only). The
+// driven's rest orientation relative to that frame is kept, so the rest pose
+// is unchanged. `aim` and `up` must differ.
+struct AimConstraint {
+    Axis aim = Axis::X;
+    Axis up = Axis::Y;
+    bool operator==(const AimConstraint&) const = default;
+};
+
+// What a constraint does; the index of its settings in ConstraintSettings.
+enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale };
+const char* constraintKindName(ConstraintKind kind); // "parent", "orient"...
+
+using ConstraintSettings = std::variant<ParentConstraint, OrientConstraint, PointConstraint, BlendConstraint, IkConstraint,
+                                        TwistConstraint, SplineConstraint, SpaceConstraint, DriveConstraint, AimConstraint,
+                                        ScaleConstraint>;
+
+template <ConstraintKind kind>
+using SettingsOf = std::variant_alternative_t<static_cast<std::size_t>(kind), ConstraintSettings>;
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Parent>, ParentConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Orient>, OrientConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Point>, PointConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Blend>, BlendConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Ik>, IkConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Twist>, TwistConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Spline>, SplineConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Space>, SpaceConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Drive>, DriveConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Aim>, AimConstraint>);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Scale>, ScaleConstraint>);
+static_assert(std::variant_size_v<ConstraintSettings> == 11);
+
+struct RigConstraint {
+    NodeKey key;                       // identity, as a node's
+    std::string path;                  // display only, as a node's
+    InstanceId owner = kNoId;
+    std::vector<RigNodeIndex> driven;  // what it writes, in the order its kind documents
+    std::vector<RigNodeIndex> targets; // what it reads, in the order its kind documents
+    ConstraintSettings settings;
+
+    ConstraintKind kind() const { return static_cast<ConstraintKind>(settings.index()); }
+};
+
+} // namespace rs::model

@@ -1,0 +1,212 @@
+// The rig dump writes every typed constraint setting by name: the constraints
+// read back from a sample's dump have the same kinds, nodes and settings (to
+// the dump's 6 decimals), no field the kind does not have, and the rig
+// evaluates as before. Aim, point and scale constraints (no builder makes
+// them) are added to the prop, so every kind is covered.
+#include "EvalTestSupport.h"
+#include "io/RigDump.h"
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <set>
+
+namespace rs {
+namespace {
+
+using eval::Affine;
+using model::AttributeRef;
+
+// One constraint entry of a dump, read strictly: every field its kind has must
+// be there, and unread() lists the fields it has that its kind does not.
+class ConstraintEntry {
+public:
+    ConstraintEntry(const model::Rig& rig, const YAML::Node& entry) : m_rig(rig), m_entry(entry) {}
+
+    model::RigConstraint read()
+    {
+        model::RigConstraint c;
+        c.path = field("id").as<std::string>();
+        for (const auto& n : field("driven")) c.driven.push_back(node(n));
+        for (const auto& n : field("targets")) c.targets.push_back(node(n));
+        c.settings = settings(field("kind").as<std::string>());
+        return c;
+    }
+
+    std::set<std::string> unread() const
+    {
+        std::set<std::string> out;
+        for (const auto& item : m_entry)
+            if (!m_read.count(item.first.as<std::string>()))
+                out.insert(item.first.as<std::string>());
+        return out;
+    }
+
+private:
+    model::ConstraintSettings settings(const std::string& kind)
+    {
+        if (kind == "parent") return weighted<model::ParentConstraint>();
+        if (kind == "orient") return weighted<model::OrientConstraint>();
+        if (kind == "point") return weighted<model::PointConstraint>();
+        if (kind == "scale") return weighted<model::ScaleConstraint>();
+        if (kind == "blend") return model::BlendConstraint{attribute("weight"), flag("keep_offset")};
+        if (kind == "ik") return model::IkConstraint{optionalAttribute("stretch"), optionalAttribute("soft")};
+        if (kind == "twist") return model::TwistConstraint{number("fraction")};
+        if (kind == "spline") return model::SplineConstraint{optionalAttribute("stretch")};
+        if (kind == "space") return model::SpaceConstraint{attribute("choice"), flag("orient_only"), flag("keep_offset")};
+        if (kind == "drive") return drive();
+        if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
+        ADD_FAILURE() << "unknown kind " << kind;
+        return {};
+    }
+
+    template <class Settings>
+    Settings weighted()
+    {
+        return Settings{field("weights").as<std::vector<double>>(), flag("keep_offset")};
+    }
+
+    model::DriveConstraint drive()
+    {
+        model::DriveConstraint d{attribute("value"), model::DriveOutput::RotateX, number("factor"), {}};
+        const std::string output = field("output").as<std::string>();
+        for (auto o : {model::DriveOutput::RotateX, model::DriveOutput::RotateY, model::DriveOutput::RotateZ, model::DriveOutput::Scale})
+            if (output == model::driveOutputName(o)) d.output = o;
+        const std::string response = field("response").as<std::string>();
+        if (response == "clamped") d.response = model::DriveClamped{number("low"), number("high")};
+        else if (response == "up_to_break") d.response = model::DriveUpToBreak{attribute("break")};
+        else if (response == "past_break") d.response = model::DrivePastBreak{attribute("break")};
+        else ADD_FAILURE() << "unknown drive response " << response;
+        return d;
+    }
+
+    YAML::Node field(const std::string& name)
+    {
+        m_read.insert(name);
+        const YAML::Node n = m_entry[name];
+        if (!n) ADD_FAILURE() << m_entry["id"].as<std::string>("?") << " has no field " << name;
+        return n;
+    }
+    model::RigNodeIndex node(const YAML::Node& path) const
+    {
+        const auto found = m_rig.findPath(path.as<std::string>());
+        EXPECT_TRUE(found) << "no node " << path.as<std::string>();
+        return found.value_or(model::kNoNode);
+    }
+    AttributeRef attribute(const std::string& name)
+    {
+        const YAML::Node n = field(name);
+        return {node(n["node"]), n["attribute"].as<std::string>()};
+    }
+    std::optional<AttributeRef> optionalAttribute(const std::string& name)
+    {
+        if (field(name).IsNull()) return std::nullopt;
+        return attribute(name);
+    }
+    double number(const std::string& name) { return field(name).as<double>(); }
+    bool flag(const std::string& name) { return field(name).as<bool>(); }
+    model::Axis axis(const std::string& name)
+    {
+        const std::string text = field(name).as<std::string>();
+        return text == "z" ? model::Axis::Z : text == "y" ? model::Axis::Y : model::Axis::X;
+    }
+
+    const model::Rig& m_rig;
+    const YAML::Node m_entry;
+    std::set<std::string> m_read;
+};
+
+// `settings` with every number as the dump writes it (6 decimals).
+model::ConstraintSettings asDumped(model::ConstraintSettings settings)
+{
+    auto round = [](double& v) {
+        if (std::isfinite(v)) v = std::round(v * 1e6) / 1e6;
+    };
+    std::visit([&](auto& s) {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (requires { s.weights; })
+            for (double& w : s.weights) round(w);
+        if constexpr (std::is_same_v<S, model::TwistConstraint>)
+            round(s.fraction);
+        if constexpr (std::is_same_v<S, model::DriveConstraint>) {
+            round(s.factor);
+            if (auto* clamped = std::get_if<model::DriveClamped>(&s.response)) {
+                round(clamped->low);
+                round(clamped->high);
+            }
+        }
+    }, settings);
+    return settings;
+}
+
+// The rig with its constraints replaced by those read back from its dump.
+model::Rig readBack(const model::Rig& rig)
+{
+    model::Rig out = rig;
+    out.constraints.clear();
+    const YAML::Node dump = YAML::Load(io::writeRigDump(rig));
+    for (const auto& entry : dump["constraints"]) {
+        ConstraintEntry reader(rig, entry);
+        out.constraints.push_back(reader.read());
+        EXPECT_TRUE(reader.unread().empty()) << out.constraints.back().path << " has fields its kind does not: "
+                                             << *reader.unread().begin();
+    }
+    return out;
+}
+
+// Every node's world transform in the swept pose (empty when the rig does not compile).
+std::vector<Affine> sweptWorld(const model::Rig& rig)
+{
+    auto program = eval::RigProgram::compile(rig);
+    EXPECT_TRUE(program.ok()) << formatAll(program.diagnostics());
+    if (!program.ok()) return {};
+    eval::EvalState state = program->makeState();
+    program->evaluate(test::sweepPose(program->channels()), state);
+    return state.world;
+}
+
+void addAimPointAndScale(model::Rig& rig)
+{
+    const auto antenna = *rig.findPath("antenna::skin.3"), lid = *rig.findPath("lid::ctrls.xform"),
+               chest = *rig.findPath("chest::ctrls.xform");
+    rig.constraints.push_back({{}, "t::aim", model::kNoId, {antenna}, {lid, chest},
+                               model::AimConstraint{.aim = model::Axis::Y, .up = model::Axis::Z}});
+    rig.constraints.push_back({{}, "t::point", model::kNoId, {*rig.findPath("antenna::skin.0")}, {chest, lid},
+                               model::PointConstraint{.weights = {1.0, 2.0 / 3.0}, .keepOffset = false}});
+    rig.constraints.push_back({{}, "t::scale", model::kNoId, {*rig.findPath("antenna::skin.1")}, {chest},
+                               model::ScaleConstraint{.weights = {}, .keepOffset = true}});
+}
+
+} // namespace
+
+TEST(ConstraintDump, EveryKindReadsBackFromTheDumpWithItsTypedSettingsAndEvaluatesTheSame)
+{
+    std::set<model::ConstraintKind> kinds;
+    for (const std::string sample : {"biped", "quadruped", "prop"}) {
+        SCOPED_TRACE(sample);
+        test::PosedRig built(sample);
+        model::Rig rig = built.rig;
+        if (sample == "prop")
+            addAimPointAndScale(rig);
+        const model::Rig back = readBack(rig);
+        ASSERT_EQ(back.constraints.size(), rig.constraints.size());
+        for (std::size_t i = 0; i < rig.constraints.size(); ++i) {
+            const auto &a = rig.constraints[i], &b = back.constraints[i];
+            kinds.insert(a.kind());
+            EXPECT_EQ(b.path, a.path);
+            EXPECT_EQ(b.kind(), a.kind()) << a.path;
+            EXPECT_EQ(b.driven, a.driven) << a.path;
+            EXPECT_EQ(b.targets, a.targets) << a.path;
+            EXPECT_TRUE(b.settings == asDumped(a.settings)) << a.path;
+        }
+        EXPECT_EQ(io::writeRigDump(back), io::writeRigDump(rig));
+        const std::vector<Affine> before = sweptWorld(rig), after = sweptWorld(back);
+        ASSERT_EQ(before.size(), after.size());
+        for (std::size_t i = 0; i < before.size(); ++i) // equal but for the dump's rounding of twist fractions
+            EXPECT_LT(maxAbsDifference(before[i].matrix(), after[i].matrix()), 1e-6) << rig.nodes[i].path;
+    }
+    EXPECT_EQ(kinds.size(), std::variant_size_v<model::ConstraintSettings>) << "every kind is covered";
+}
+
+} // namespace rs
