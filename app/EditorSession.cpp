@@ -114,7 +114,7 @@ bool EditorSession::loadReference(const QString& path, Diagnostics& diagnostics)
     auto triangles = readReference(absolute, diagnostics);
     if (!triangles)
         return false; // the shown model and the document stay
-    m_reference = std::move(*triangles);
+    m_reference = std::make_shared<const std::vector<glm::vec3>>(std::move(*triangles));
     m_referencePath = absolute;
     return !setReferenceModel(absolute);
 }
@@ -124,12 +124,12 @@ void EditorSession::syncReference()
     if (document().referenceModel == m_referencePath)
         return;
     m_referencePath = document().referenceModel;
-    m_reference.clear();
+    m_reference.reset();
     if (m_referencePath.empty())
         return;
     Diagnostics diagnostics;
     if (auto triangles = readReference(m_referencePath, diagnostics))
-        m_reference = std::move(*triangles);
+        m_reference = std::make_shared<const std::vector<glm::vec3>>(std::move(*triangles));
     else
         diagnostics.insert(diagnostics.begin(), makeError({m_referencePath, 0, 0},
                                                           "the guide's reference model could not be loaded (the guide keeps its path)"));

@@ -60,7 +60,8 @@ public:
     // guides; empty path clears it. The guide keeps its path (one undo step).
     // A file that fails to load is reported and changes nothing.
     bool loadReference(const QString& path, Diagnostics& diagnostics);
-    const std::vector<glm::vec3>& referenceTriangles() const { return m_reference; }
+    // Shared with the viewport's scene (uploaded to the GPU once per model); null without one.
+    const std::shared_ptr<const std::vector<glm::vec3>>& referenceTriangles() const { return m_reference; }
 
 signals:
     void changed(const rs::edit::Change& change);
@@ -76,7 +77,7 @@ private:
     Diagnostics m_templateDiagnostics;
     QString m_filePath;
     mutable bool m_ownsAutosave = false;
-    std::vector<glm::vec3> m_reference;
+    std::shared_ptr<const std::vector<glm::vec3>> m_reference;
     std::string m_referencePath; // what m_reference shows
 };
 

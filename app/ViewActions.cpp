@@ -87,7 +87,7 @@ bool MainWindow::loadReference(const QString& path)
     Diagnostics diagnostics;
     const bool ok = m_session.loadReference(path, diagnostics);
     if (!path.isEmpty())
-        report(ok ? tr("Reference model %1: %2 triangles").arg(path).arg(m_session.referenceTriangles().size() / 3)
+        report(ok ? tr("Reference model %1: %2 triangles").arg(path).arg(m_session.referenceTriangles() ? m_session.referenceTriangles()->size() / 3 : 0)
                   : tr("Could not load the reference model %1").arg(path),
                diagnostics);
     return ok;

@@ -8,6 +8,8 @@
 #include "templates/TemplateRegistry.h"
 
 #include <glm/glm.hpp>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace rs::viewport {
@@ -52,11 +54,16 @@ struct Scene {
     // The other side of mirrored branches (`branches: [L, R]`): derived from the
     // authored guide, drawn dimmer, not pickable; they follow every edit.
     std::vector<SceneJoint> mirrorJoints;
-    std::vector<glm::vec3> reference;     // a see-through reference model, triangles
+    // A see-through reference model, triangles; shared, so the renderer sends
+    // it to the GPU once per model, not once per scene.
+    std::shared_ptr<const std::vector<glm::vec3>> reference;
     std::vector<SceneCv> cvs;             // CV mode: pickable control points
     std::vector<SceneCurve> hulls;        // CV mode: the hulls joining them
     std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo)
     bool showGuides = true;
+    // Set by the viewport each time it is given a new scene: the renderer sends
+    // the scene's vertices again only when it changed (0: always).
+    std::uint64_t revision = 0;
 
     // Bounds of everything drawn; false when the scene is empty.
     bool bounds(glm::dvec3& lo, glm::dvec3& hi) const;

@@ -48,9 +48,12 @@ void ViewportWidget::cleanup()
     doneCurrent();
 }
 
+std::uint64_t ViewportWidget::verticesUploaded() const { return m_renderer ? m_renderer->verticesUploaded() : 0; }
+
 void ViewportWidget::setScene(Scene scene)
 {
     m_scene = std::move(scene);
+    m_scene.revision = ++m_sceneRevision;
     update();
 }
 

@@ -35,6 +35,8 @@ public:
 
     void setScene(Scene scene);
     const Scene& scene() const { return m_scene; }
+    // Vertices the renderer has sent to the GPU (0 before the first frame).
+    std::uint64_t verticesUploaded() const;
     Camera& camera() { return m_camera; }
     void frameAll();
     // Where a world point lands in widget pixels (for tests and tools).
@@ -89,6 +91,7 @@ private:
 
     std::unique_ptr<Renderer> m_renderer;
     Scene m_scene;
+    std::uint64_t m_sceneRevision = 0;
     Camera m_camera;
     QPoint m_pressPosition, m_lastPosition;
     Qt::MouseButton m_dragButton = Qt::NoButton;

@@ -4,10 +4,13 @@
 #include "EditorTestSupport.h"
 
 #include "LogPanel.h"
+#include "edit/GuideEdits.h"
 #include "ViewportWidget.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QOpenGLWidget>
+#include <QSignalSpy>
 
 #include <fstream>
 #include <iterator>
@@ -125,12 +128,35 @@ TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
     ASSERT_TRUE(w.exportRig(request));
     w.session().setMode(app::EditorMode::Guide);
     ASSERT_TRUE(w.loadReference(QString::fromStdString(request.path)));
-    EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u);
-    EXPECT_EQ(w.viewportWidget()->scene().reference.size() % 3, 0u);
+    EXPECT_GT(w.viewportWidget()->scene().reference->size(), 3000u);
+    EXPECT_EQ(w.viewportWidget()->scene().reference->size() % 3, 0u);
     QTest::keyClick(w.viewportWidget(), Qt::Key_1);
     w.viewportWidget()->frameAll();
     QApplication::processEvents();
     w.grab().save(QString::fromStdString(outputPath("reference-model.png")));
+
+    // Persistent GPU buffers: a repaint that only moves the camera sends no
+    // scene vertices, and a guide edit sends the guide but not the model again.
+    auto* view = w.viewportWidget();
+    auto repaint = [&] {
+        QSignalSpy swapped(view, &QOpenGLWidget::frameSwapped);
+        view->update();
+        return swapped.wait(2000);
+    };
+    ASSERT_TRUE(repaint());
+    const std::size_t modelVertices = view->scene().reference->size();
+    std::uint64_t before = view->verticesUploaded();
+    ASSERT_TRUE(repaint());
+    EXPECT_LT(view->verticesUploaded() - before, 500u) << "only the gizmo";
+    const model::JointId neck = w.session().document().instanceNamed("neck")->joints[1].id;
+    Transform moved = w.session().document().joint(neck)->local;
+    moved.translate.x += 0.01;
+    before = view->verticesUploaded();
+    ASSERT_FALSE(edit::setJointTransform(w.session().history(), neck, moved));
+    ASSERT_TRUE(repaint());
+    EXPECT_GT(view->verticesUploaded() - before, 10u) << "the moved guide is sent";
+    EXPECT_LT(view->verticesUploaded() - before, modelVertices) << "the model is not sent again";
+    w.action("undo")->trigger();
 
     const std::string broken = outputPath("broken.obj");
     std::ofstream(broken) << "this is not a model\n";
@@ -138,7 +164,7 @@ TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
     EXPECT_FALSE(w.loadReference(QString::fromStdString(broken)));
     EXPECT_GT(w.log()->count(), messages);
     EXPECT_TRUE(w.log()->item(w.log()->count() - 1)->text().contains("broken.obj"));
-    EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u) << "the shown model stays";
+    EXPECT_GT(w.viewportWidget()->scene().reference->size(), 3000u) << "the shown model stays";
     EXPECT_EQ(w.session().document().referenceModel, request.path) << "and the guide keeps the good one";
 
     // The guide remembers its reference model (relative to the guide file): reopened, it shows again.
@@ -152,14 +178,14 @@ TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
     {
         Editor second;
         ASSERT_TRUE(second.window.openFile(saved));
-        EXPECT_EQ(second.window.viewportWidget()->scene().reference.size(), w.viewportWidget()->scene().reference.size());
+        EXPECT_EQ(second.window.viewportWidget()->scene().reference->size(), w.viewportWidget()->scene().reference->size());
     }
 
     w.action("clearReference")->trigger();
-    EXPECT_TRUE(w.viewportWidget()->scene().reference.empty());
+    EXPECT_FALSE(w.viewportWidget()->scene().reference);
     EXPECT_TRUE(w.session().document().referenceModel.empty());
     w.action("undo")->trigger();
-    EXPECT_GT(w.viewportWidget()->scene().reference.size(), 3000u) << "undoing the clear shows it again";
+    EXPECT_GT(w.viewportWidget()->scene().reference->size(), 3000u) << "undoing the clear shows it again";
 }
 
 TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)

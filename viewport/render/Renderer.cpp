@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace rs::viewport {
@@ -36,6 +37,7 @@ void main() {
 struct Vertex {
     float x, y, z, r, g, b;
 };
+std::vector<Vertex> gridVertices();
 
 void push(std::vector<Vertex>& out, const glm::dvec3& p, const glm::dvec3& c)
 {
@@ -68,9 +70,33 @@ const glm::dvec3 kReferenceColor(0.55, 0.6, 0.7);
 
 } // namespace
 
+// What is drawn, each in its own persistent vertex buffer: the grid is
+// uploaded once, the reference model when the model changes, the scene's
+// layers when the scene changes (not when only the camera moves), the gizmo
+// (a few hundred vertices) every frame.
+enum Layer { Grid, Reference, Lines, Curves, SkinPoints, MirrorPoints, GuidePoints, Hulls, CvPoints, Overlay, kLayerCount };
+
 struct Renderer::GlState {
-    GLuint program = 0, vao = 0, vbo = 0;
+    GLuint program = 0;
     GLint viewProjection = -1, pointSize = -1, roundPoints = -1, alpha = -1;
+    struct Buffer {
+        GLuint vao = 0, vbo = 0;
+        GLsizei count = 0;
+    };
+    Buffer buffers[kLayerCount];
+    std::uint64_t sceneRevision = ~std::uint64_t(0); // what the scene layers hold
+    const void* reference = nullptr;                // the reference model the buffer holds
+    std::uint64_t uploads = 0;                      // vertex uploads so far (tests, measurements)
+
+    void upload(Layer layer, const std::vector<Vertex>& vertices)
+    {
+        Buffer& b = buffers[layer];
+        glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(),
+                     layer == Overlay ? GL_STREAM_DRAW : GL_DYNAMIC_DRAW);
+        b.count = GLsizei(vertices.size());
+        uploads += vertices.size();
+    }
 };
 
 Renderer::Renderer() = default;
@@ -107,15 +133,18 @@ bool Renderer::initialize(std::string& error)
     gl->pointSize = glGetUniformLocation(gl->program, "pointSize");
     gl->roundPoints = glGetUniformLocation(gl->program, "roundPoints");
     gl->alpha = glGetUniformLocation(gl->program, "alpha");
-    glGenVertexArrays(1, &gl->vao);
-    glGenBuffers(1, &gl->vbo);
-    glBindVertexArray(gl->vao);
-    glBindBuffer(GL_ARRAY_BUFFER, gl->vbo);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(3 * sizeof(float)));
+    for (auto& b : gl->buffers) {
+        glGenVertexArrays(1, &b.vao);
+        glGenBuffers(1, &b.vbo);
+        glBindVertexArray(b.vao);
+        glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(3 * sizeof(float)));
+    }
     glBindVertexArray(0);
+    gl->upload(Grid, gridVertices());
     m_gl = std::move(gl);
     return true;
 }
@@ -124,22 +153,21 @@ void Renderer::release()
 {
     if (!m_gl)
         return;
-    glDeleteBuffers(1, &m_gl->vbo);
-    glDeleteVertexArrays(1, &m_gl->vao);
+    for (auto& b : m_gl->buffers) {
+        glDeleteBuffers(1, &b.vbo);
+        glDeleteVertexArrays(1, &b.vao);
+    }
     glDeleteProgram(m_gl->program);
     m_gl.reset();
 }
 
-void Renderer::render(const Scene& scene, const Camera& camera, int width, int height)
-{
-    glViewport(0, 0, width, height);
-    glClearColor(0.16f, 0.17f, 0.19f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (!isInitialized() || width <= 0 || height <= 0)
-        return;
+std::uint64_t Renderer::verticesUploaded() const { return m_gl ? m_gl->uploads : 0; }
 
-    // Batches: lines drawn with depth, then points and curves on top.
-    std::vector<Vertex> grid, lines, guidePoints, skinPoints;
+namespace {
+
+std::vector<Vertex> gridVertices()
+{
+    std::vector<Vertex> grid;
     const int half = 10;
     for (int i = -half; i <= half; ++i) {
         const double v = i * 0.25;
@@ -149,95 +177,116 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
         push(grid, {-half * 0.25, 0, v}, i == 0 ? glm::dvec3(0.8, 0.3, 0.3) : c);
         push(grid, {half * 0.25, 0, v}, i == 0 ? glm::dvec3(0.8, 0.3, 0.3) : c);
     }
-    if (scene.showGuides)
-        for (const auto& j : scene.guideJoints) {
-            const glm::dvec3 c = j.selected ? kSelectedColor : kGuideColor;
-            if (j.hasParent) {
-                push(lines, j.parentPosition, c * 0.8);
-                push(lines, j.position, c * 0.8);
-            }
-            push(guidePoints, j.position, c);
-        }
-    std::vector<Vertex> mirrorPoints;
-    if (scene.showGuides)
-        for (const auto& j : scene.mirrorJoints) {
-            if (j.hasParent) {
-                push(lines, j.parentPosition, kGuideColor * 0.4);
-                push(lines, j.position, kGuideColor * 0.4);
-            }
-            push(mirrorPoints, j.position, kGuideColor * 0.5);
-        }
-    std::vector<Vertex> reference;
-    for (const glm::vec3& p : scene.reference)
-        push(reference, glm::dvec3(p), kReferenceColor);
-    for (const auto& j : scene.skinJoints) {
-        if (j.hasParent) {
-            push(lines, j.parentPosition, kSkinColor * 0.6);
-            push(lines, j.position, kSkinColor * 0.6);
-        }
-        push(skinPoints, j.position, kSkinColor);
-    }
-    std::vector<Vertex> curves;
-    for (const auto& c : scene.curves)
-        for (std::size_t i = 1; i < c.points.size(); ++i) {
-            const glm::dvec3 color = c.selected ? kSelectedColor : c.color;
-            push(curves, c.points[i - 1], color);
-            push(curves, c.points[i], color);
-        }
+    return grid;
+}
 
-    std::vector<Vertex> hulls, cvPoints;
-    for (const auto& h : scene.hulls)
-        for (std::size_t i = 1; i < h.points.size(); ++i) {
-            push(hulls, h.points[i - 1], h.color);
-            push(hulls, h.points[i], h.color);
+void pushJoints(const std::vector<SceneJoint>& joints, std::vector<Vertex>& lines, std::vector<Vertex>& points,
+                const glm::dvec3& lineColor, const glm::dvec3& pointColor, bool showSelection)
+{
+    for (const auto& j : joints) {
+        const bool selected = showSelection && j.selected;
+        if (j.hasParent) {
+            push(lines, j.parentPosition, selected ? kSelectedColor * 0.8 : lineColor);
+            push(lines, j.position, selected ? kSelectedColor * 0.8 : lineColor);
         }
+        push(points, j.position, selected ? kSelectedColor : pointColor);
+    }
+}
+
+void pushCurves(const std::vector<SceneCurve>& curves, std::vector<Vertex>& out, bool showSelection)
+{
+    for (const auto& c : curves)
+        for (std::size_t i = 1; i < c.points.size(); ++i) {
+            const glm::dvec3 color = showSelection && c.selected ? kSelectedColor : c.color;
+            push(out, c.points[i - 1], color);
+            push(out, c.points[i], color);
+        }
+}
+
+} // namespace
+
+// The scene's layers, uploaded again only when the scene changed.
+void Renderer::uploadScene(const Scene& scene)
+{
+    std::vector<Vertex> lines, guidePoints, mirrorPoints, skinPoints, curves, hulls, cvPoints;
+    if (scene.showGuides) {
+        pushJoints(scene.guideJoints, lines, guidePoints, kGuideColor * 0.8, kGuideColor, true);
+        pushJoints(scene.mirrorJoints, lines, mirrorPoints, kGuideColor * 0.4, kGuideColor * 0.5, false);
+    }
+    pushJoints(scene.skinJoints, lines, skinPoints, kSkinColor * 0.6, kSkinColor, false);
+    pushCurves(scene.curves, curves, true);
+    pushCurves(scene.hulls, hulls, false);
     for (bool selected : {false, true}) // selected on top of unselected CVs at the same place
         for (const auto& cv : scene.cvs)
             if (cv.selected == selected) push(cvPoints, cv.position, selected ? kSelectedCvColor : kCvColor);
+    m_gl->upload(Lines, lines);
+    m_gl->upload(GuidePoints, guidePoints);
+    m_gl->upload(MirrorPoints, mirrorPoints);
+    m_gl->upload(SkinPoints, skinPoints);
+    m_gl->upload(Curves, curves);
+    m_gl->upload(Hulls, hulls);
+    m_gl->upload(CvPoints, cvPoints);
+    const void* reference = scene.reference ? static_cast<const void*>(scene.reference.get()) : nullptr;
+    if (reference != m_gl->reference) { // a model of 100k triangles is not sent again on every edit
+        std::vector<Vertex> triangles;
+        if (scene.reference)
+            for (const glm::vec3& p : *scene.reference)
+                push(triangles, glm::dvec3(p), kReferenceColor);
+        m_gl->upload(Reference, triangles);
+        m_gl->reference = reference;
+    }
+    m_gl->sceneRevision = scene.revision;
+}
+
+void Renderer::render(const Scene& scene, const Camera& camera, int width, int height)
+{
+    glViewport(0, 0, width, height);
+    glClearColor(0.16f, 0.17f, 0.19f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!isInitialized() || width <= 0 || height <= 0)
+        return;
+    if (scene.revision != m_gl->sceneRevision || scene.revision == 0) // 0: a scene nobody stamped
+        uploadScene(scene);
+    std::vector<Vertex> overlay;
+    pushCurves(scene.overlay, overlay, false);
+    m_gl->upload(Overlay, overlay);
 
     glUseProgram(m_gl->program);
     const glm::mat4 viewProjection(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
     glUniformMatrix4fv(m_gl->viewProjection, 1, GL_FALSE, &viewProjection[0][0]);
-    glBindVertexArray(m_gl->vao);
-    glBindBuffer(GL_ARRAY_BUFFER, m_gl->vbo);
     glEnable(GL_PROGRAM_POINT_SIZE);
-    auto draw = [&](const std::vector<Vertex>& v, GLenum mode, float pointSize) {
-        if (v.empty())
+    auto draw = [&](Layer layer, GLenum mode, float pointSize) {
+        const GlState::Buffer& b = m_gl->buffers[layer];
+        if (b.count == 0)
             return;
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(Vertex)), v.data(), GL_STREAM_DRAW);
+        glBindVertexArray(b.vao);
         glUniform1f(m_gl->pointSize, pointSize);
         glUniform1i(m_gl->roundPoints, mode == GL_POINTS);
-        glDrawArrays(mode, 0, GLsizei(v.size()));
+        glDrawArrays(mode, 0, b.count);
     };
     glUniform1f(m_gl->alpha, 1.0f);
     glEnable(GL_DEPTH_TEST);
-    draw(grid, GL_LINES, 1.0f);
-    if (!reference.empty()) { // see-through: guides stay visible inside the model
+    draw(Grid, GL_LINES, 1.0f);
+    if (m_gl->buffers[Reference].count > 0) { // see-through: guides stay visible inside the model
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
         glUniform1f(m_gl->alpha, 0.12f);
-        draw(reference, GL_TRIANGLES, 1.0f);
+        draw(Reference, GL_TRIANGLES, 1.0f);
         glUniform1f(m_gl->alpha, 1.0f);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
     glDisable(GL_DEPTH_TEST); // rig elements stay visible through each other, as in a DCC's X-ray mode
-    draw(lines, GL_LINES, 1.0f);
-    draw(curves, GL_LINES, 1.0f);
-    draw(skinPoints, GL_POINTS, 6.0f);
-    draw(mirrorPoints, GL_POINTS, 7.0f);
-    draw(guidePoints, GL_POINTS, 10.0f);
-    draw(hulls, GL_LINES, 1.0f);
-    draw(cvPoints, GL_POINTS, 8.0f);
-    std::vector<Vertex> overlay;
-    for (const auto& c : scene.overlay)
-        for (std::size_t i = 1; i < c.points.size(); ++i) {
-            push(overlay, c.points[i - 1], c.color);
-            push(overlay, c.points[i], c.color);
-        }
+    draw(Lines, GL_LINES, 1.0f);
+    draw(Curves, GL_LINES, 1.0f);
+    draw(SkinPoints, GL_POINTS, 6.0f);
+    draw(MirrorPoints, GL_POINTS, 7.0f);
+    draw(GuidePoints, GL_POINTS, 10.0f);
+    draw(Hulls, GL_LINES, 1.0f);
+    draw(CvPoints, GL_POINTS, 8.0f);
     glLineWidth(2.0f); // core profiles may clamp this to 1; the gizmo colours still stand out
-    draw(overlay, GL_LINES, 1.0f);
+    draw(Overlay, GL_LINES, 1.0f);
     glLineWidth(1.0f);
     glBindVertexArray(0);
     glUseProgram(0);

@@ -6,6 +6,7 @@
 #include "../Camera.h"
 #include "../Scene.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -26,8 +27,12 @@ public:
     void render(const Scene& scene, const Camera& camera, int width, int height);
     // Frees GL objects; needs the same context current.
     void release();
+    // Vertices sent to the GPU so far: a frame that only moves the camera sends
+    // the gizmo's alone (Scene::revision unchanged).
+    std::uint64_t verticesUploaded() const;
 
 private:
+    void uploadScene(const Scene& scene);
     struct GlState;
     std::unique_ptr<GlState> m_gl;
 };
