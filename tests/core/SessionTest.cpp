@@ -7,6 +7,7 @@
 #include "edit/GuideEdits.h"
 #include "eval/PoseTools.h"
 #include "rigging/RigBuilder.h"
+#include "io/RigDump.h"
 #include "session/Session.h"
 
 #include <gtest/gtest.h>
@@ -213,4 +214,108 @@ TEST(Session, ShapeAndCvDragsAreTransactionsOnTheAuthoredSide)
     EXPECT_EQ(s.selection().cvs.size(), 2u) << "kept across the live rebuilds";
     s.history().undo();
     EXPECT_TRUE(s.document() == original);
+}
+
+namespace {
+
+// The live rig of the session after an edit must be exactly what a full build
+// of the edited guide makes (dumped: every node, matrix, curve, constraint),
+// posed the same.
+void expectLiveRigIsAFullBuild(session::Session& s, const std::string& what)
+{
+    ASSERT_NE(s.rig(), nullptr) << what;
+    const model::Rig fresh = rigging::buildRig(s.document(), s.templates());
+    EXPECT_EQ(io::writeRigDump(*s.rig()), io::writeRigDump(fresh)) << what;
+    const auto posed = eval::posedRig(fresh, s.document().pose);
+    ASSERT_TRUE(posed.ok()) << what;
+    ASSERT_EQ(s.evaluation()->world.size(), posed->nodes.size()) << what;
+    for (model::RigNodeIndex i = 0; i < posed->nodes.size(); ++i)
+        ASSERT_LT(maxAbsDifference(s.evaluation()->worldMatrix(i), posed->nodes[i].worldMatrix), 1e-9) << what << " " << posed->nodes[i].path;
+}
+
+} // namespace
+
+TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
+{
+    for (const std::string sample : {"biped", "quadruped", "prop"}) {
+        session::Session s(templatesForSession());
+        s.replaceDocument(test::loadSample(sample));
+        s.build();
+        // The last instance with a controller of its own: a finger, a tail, a lid.
+        model::InstanceId leaf = model::kNoId;
+        std::string controllerTag;
+        for (const auto& node : s.rig()->nodes)
+            if (node.kind == model::RigNodeKind::Controller && !node.shapeFromTwin) {
+                leaf = node.key.instance;
+                controllerTag = node.key.tag;
+            }
+        ASSERT_NE(leaf, model::kNoId);
+        const model::InstanceId root = s.document().instances().front().id;
+        const std::string label = sample + ": ";
+
+        // A guide-joint drag: previews, then the commit.
+        const model::JointId joint = s.document().instance(leaf)->joints.front().id;
+        const Mat4 start = s.document().jointWorldMatrix(joint);
+        s.selectGuideJoints({joint}, false);
+        s.beginGuideDrag(joint);
+        s.dragGuideTo(raised(start, 0.03));
+        expectLiveRigIsAFullBuild(s, label + "drag preview");
+        s.dragGuideTo(raised(start, 0.05));
+        s.endGuideDrag("Move");
+        expectLiveRigIsAFullBuild(s, label + "drag commit");
+
+        // Options and guide parameters of the leaf's template.
+        const auto* manifest = s.templates().find(s.document().instance(leaf)->templateId);
+        ASSERT_NE(manifest, nullptr);
+        for (const auto& option : manifest->opts)
+            if (std::holds_alternative<bool>(option.value)) {
+                ASSERT_FALSE(s.setOption(leaf, option.name, Value(!std::get<bool>(option.value))));
+                expectLiveRigIsAFullBuild(s, label + "option " + option.name);
+                break;
+            }
+        for (const auto& guide : manifest->guides)
+            if (std::holds_alternative<long long>(guide.value) && guide.max && *guide.max > double(std::get<long long>(guide.value))) {
+                ASSERT_FALSE(s.setOption(leaf, guide.name, Value(std::get<long long>(guide.value) + 1)));
+                expectLiveRigIsAFullBuild(s, label + "guide parameter " + guide.name);
+                break;
+            }
+
+        // A shape edit, a name override, a rename, a pose.
+        model::ShapeEdit shape; // (an option above may have removed the controller: then the edit is kept, unused)
+        shape.transform.scale = Vec3(1.5);
+        ASSERT_FALSE(edit::setShapeEdit(s.history(), leaf, controllerTag, shape));
+        expectLiveRigIsAFullBuild(s, label + "shape edit");
+        for (const auto& [token, name] : manifest->names)
+            if (!s.setNameOverride(leaf, token, "renamed")) {
+                expectLiveRigIsAFullBuild(s, label + "name override " + token);
+                break;
+            }
+        ASSERT_FALSE(s.renameInstance(leaf, "leafy"));
+        expectLiveRigIsAFullBuild(s, label + "rename");
+        const auto fk = std::find_if(s.rig()->nodes.begin(), s.rig()->nodes.end(), [](const model::RigNode& n) {
+            return n.kind == model::RigNodeKind::Controller;
+        });
+        model::PoseValues pose = s.document().pose;
+        pose[fk->key]["rx"] = 20.0;
+        ASSERT_FALSE(edit::setPose(s.history(), pose, "Pose"));
+        expectLiveRigIsAFullBuild(s, label + "pose");
+
+        // Instances: duplicate, re-hang, remove; then undo and redo everything.
+        ASSERT_FALSE(s.duplicateInstances({leaf}));
+        expectLiveRigIsAFullBuild(s, label + "duplicate");
+        const model::InstanceId copy = s.document().instances().back().id;
+        ASSERT_FALSE(s.reparentInstance(copy, s.document().instance(root)->joints.front().id));
+        expectLiveRigIsAFullBuild(s, label + "re-hang");
+        ASSERT_FALSE(s.removeInstances({copy}));
+        expectLiveRigIsAFullBuild(s, label + "remove");
+        ASSERT_FALSE(s.addTemplate("core.joints", s.document().instance(root)->joints.front().id));
+        expectLiveRigIsAFullBuild(s, label + "add template");
+        while (s.history().canUndo()) {
+            s.history().undo();
+            expectLiveRigIsAFullBuild(s, label + "undo to " + std::to_string(s.history().index()));
+        }
+        while (s.history().canRedo())
+            s.history().redo();
+        expectLiveRigIsAFullBuild(s, label + "redo all");
+    }
 }
