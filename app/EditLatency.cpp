@@ -10,7 +10,10 @@
 #include <QOpenGLWidget>
 #include <QTimer>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -99,11 +102,17 @@ int reportEditLatency(MainWindow& window, int drags)
         std::sort(v.begin(), v.end());
         return v.empty() ? 0.0 : v[v.size() / 2];
     };
-    std::printf("{\"drags\": %d, \"frames\": %zu, \"median_ms\": %.2f, \"worst_ms\": %.2f, "
-                "\"preview_median_ms\": %.2f, \"commit_median_ms\": %.2f, \"idle_frame_median_ms\": %.2f, "
-                "\"build_ms\": %.3f, \"undo_steps\": %zu}\n",
-                drags, all.size(), median(all), *std::max_element(all.begin(), all.end()), median(moves), median(commits),
-                median(idle), window.session().lastBuildMilliseconds(), window.session().history().size());
+    auto ms = [](double v) { return std::round(v * 100.0) / 100.0; };
+    const nlohmann::json report{{"drags", drags},
+                                {"frames", all.size()},
+                                {"median_ms", ms(median(all))},
+                                {"worst_ms", ms(*std::max_element(all.begin(), all.end()))},
+                                {"preview_median_ms", ms(median(moves))},
+                                {"commit_median_ms", ms(median(commits))},
+                                {"idle_frame_median_ms", ms(median(idle))},
+                                {"build_ms", ms(window.session().lastBuildMilliseconds())},
+                                {"undo_steps", window.session().history().size()}};
+    std::printf("%s\n", report.dump().c_str());
     std::fflush(stdout);
     return 0;
 }

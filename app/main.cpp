@@ -18,6 +18,9 @@
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -68,8 +71,10 @@ double msSinceProcessStart()
 int reportStartup(QApplication& app, rs::app::MainWindow& window, const QElapsedTimer& sinceMain)
 {
     QObject::connect(window.viewportWidget(), &QOpenGLWidget::frameSwapped, &window, [&] {
-        std::printf("{\"ms_since_main\": %.1f, \"ms_since_process_start\": %.0f, \"templates\": %zu}\n",
-                    sinceMain.nsecsElapsed() / 1e6, msSinceProcessStart(), window.session().document().instances().size());
+        const nlohmann::json report{{"ms_since_main", std::round(sinceMain.nsecsElapsed() / 1e5) / 10.0},
+                                    {"ms_since_process_start", std::round(msSinceProcessStart())},
+                                    {"templates", window.session().document().instances().size()}};
+        std::printf("%s\n", report.dump().c_str());
         std::fflush(stdout);
         window.setProperty("skipUnsavedPrompt", true);
         app.quit();

@@ -32,4 +32,10 @@ void decompose(const Mat4& m, Vec3& translate, Quat& rotate, Vec3& scale);
 // Largest absolute difference between two matrices' elements.
 double maxAbsDifference(const Mat4& a, const Mat4& b);
 
+// Units. Rigsmith works in metres; FBX's UnitScaleFactor is the number of
+// centimetres in one file unit (1 for centimetre files, 100 for metre files).
+constexpr double kCentimetresPerMetre = 100.0;
+constexpr double metresPerFbxUnit(double unitScaleFactor) { return unitScaleFactor / kCentimetresPerMetre; }
+constexpr double fbxUnitScaleFactor(double unitsPerMetre) { return kCentimetresPerMetre / unitsPerMetre; }
+
 } // namespace rs

@@ -6,6 +6,7 @@
 #include "model/Skeleton.h"
 
 #include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -275,7 +276,7 @@ Convention conventionFor(ExportPreset preset, bool fbx)
 {
     // glTF fixes metres and Y-up; Unreal's glTF importer converts on its side.
     if (preset == ExportPreset::Unreal && fbx)
-        return {100.0, true};
+        return {kCentimetresPerMetre, true}; // Z-up centimetres
     return {};
 }
 
@@ -315,40 +316,30 @@ ExportScene converted(ExportScene scene, const Convention& convention)
 
 std::string exportReferenceJson(const ExportScene& scene)
 {
-    auto quote = [](const std::string& s) { // forced exports may carry any name
-        std::string out = "\"";
-        for (char c : s)
-            out += c == '"' || c == '\\' ? std::string{'\\', c} : std::string{c};
-        return out + "\"";
-    };
-    std::ostringstream out;
-    out << "{\"joints\": [\n";
-    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
-        const auto& j = scene.joints[i];
+    using nlohmann::json;
+    json joints = json::array();
+    for (const auto& j : scene.joints) {
         const Vec3 head = translationOf(j.bindWorld);
-        out << "  {\"name\": " << quote(j.name) << ", \"parent\": "
-            << (j.parent < 0 ? std::string("null") : quote(scene.joints[std::size_t(j.parent)].name)) << ", \"head\": ["
-            << formatNumber(head.x) << ", " << formatNumber(head.y) << ", " << formatNumber(head.z) << "]}"
-            << (i + 1 < scene.joints.size() ? ",\n" : "\n");
+        joints.push_back({{"name", j.name},
+                          {"parent", j.parent < 0 ? json(nullptr) : json(scene.joints[std::size_t(j.parent)].name)},
+                          {"head", {head.x, head.y, head.z}}});
     }
-    out << "], \"meshes\": [";
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-        const auto& mesh = scene.meshes[m];
-        out << (m ? ",\n" : "\n") << "  {\"name\": " << quote(mesh.name) << ", \"vertices\": [";
+    json meshes = json::array();
+    for (const auto& mesh : scene.meshes) {
+        json vertices = json::array();
         for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
             const auto& p = mesh.positions[v];
-            out << (v ? ",\n" : "\n") << "    [" << formatNumber(p.x) << ", " << formatNumber(p.y) << ", "
-                << formatNumber(p.z) << ", {";
+            json weights = json::object();
             for (std::size_t k = 0; k < mesh.influenceCount(v); ++k) {
                 const Influence& in = mesh.influencesOf(v)[k];
-                out << (k ? ", " : "") << quote(scene.joints[std::size_t(in.joint)].name) << ": " << formatNumber(in.weight);
+                weights[scene.joints[std::size_t(in.joint)].name] = double(in.weight);
             }
-            out << "}]";
+            vertices.push_back({p.x, p.y, p.z, std::move(weights)});
         }
-        out << "]}";
+        meshes.push_back({{"name", mesh.name}, {"vertices", std::move(vertices)}});
     }
-    out << "]}\n";
-    return out.str();
+    // A forced export may carry names that are not UTF-8: replaced, never thrown.
+    return json{{"joints", std::move(joints)}, {"meshes", std::move(meshes)}}.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 } // namespace rs::io

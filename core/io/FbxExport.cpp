@@ -166,7 +166,7 @@ std::optional<ExportClip> poseClip(const ExportScene& scene)
 
 void declareConvention(aiScene& ai, const Convention& convention)
 {
-    const double centimetresPerUnit = 100.0 / convention.unitsPerMetre;
+    const double centimetresPerUnit = fbxUnitScaleFactor(convention.unitsPerMetre);
     const int up = convention.zUp ? 2 : 1, front = convention.zUp ? 1 : 2, frontSign = convention.zUp ? -1 : 1;
     ai.mMetaData = aiMetadata::Alloc(10);
     unsigned i = 0;

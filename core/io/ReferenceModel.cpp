@@ -1,5 +1,7 @@
 #include "io/ReferenceModel.h"
 
+#include "base/Math.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -17,9 +19,9 @@ void fbxConvention(const aiScene& scene, double& metresPerUnit, bool& zUp)
         return;
     double unitScale = 0.0; // centimetres per unit
     if (scene.mMetaData->Get("UnitScaleFactor", unitScale) && unitScale > 0.0)
-        metresPerUnit = unitScale / 100.0;
+        metresPerUnit = metresPerFbxUnit(unitScale);
     else if (float f = 0.0f; scene.mMetaData->Get("UnitScaleFactor", f) && f > 0.0f)
-        metresPerUnit = f / 100.0;
+        metresPerUnit = metresPerFbxUnit(f);
     int upAxis = 1;
     if (scene.mMetaData->Get("UpAxis", upAxis))
         zUp = upAxis == 2;

@@ -3,7 +3,8 @@
 // glTF, ...), flattened to world-space triangles in the document's convention
 // (Y-up, metres). FBX files say their unit and up axis in their header; Z-up
 // centimetre files (Unreal's) come in standing and metre-sized. Display only:
-// nothing of it is saved in the guide.
+// the guide keeps the file's path (`reference_model:`, relative to the guide)
+// and the editor loads it again on open; its triangles are never saved.
 #include "base/Result.h"
 
 #include <glm/glm.hpp>
