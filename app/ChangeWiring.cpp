@@ -1,0 +1,86 @@
+// MainWindow's change wiring: what each view shows of a session change (the
+// typed edit::Change), and the docks that edit options, names and history.
+#include "MainWindow.h"
+
+#include "ChannelBox.h"
+#include "HistoryView.h"
+#include "LogPanel.h"
+#include "OptionsEditor.h"
+#include "OutlinerView.h"
+#include "TemplateLibrary.h"
+
+namespace rs::app {
+
+void MainWindow::connectOptions()
+{
+    connect(m_historyView, &widgets::HistoryView::jumpRequested, this,
+            [this](int index) { m_session.history().jumpTo(std::size_t(index)); });
+    connect(m_library, &widgets::TemplateLibrary::templateActivated, this, [this](const QString& id) {
+        logError(m_session.addTemplate(id.toStdString(), m_session.selection().joint));
+    });
+    m_historyView->refresh(m_session.history());
+    m_library->refresh(m_session.templates());
+    connect(m_options, &widgets::OptionsEditor::optionEdited, this,
+            [this](model::InstanceId id, const std::string& name, const Value& value) {
+                // The editor's own widget already shows the value: its page is
+                // not rebuilt under the cursor (a spinner keeps turning).
+                m_optionsEditing = true;
+                const auto error = m_session.setOption(id, name, value);
+                m_optionsEditing = false;
+                const model::TemplateInstance* instance = m_session.document().instance(id);
+                if (instance && !instance->options.count(name))
+                    refreshOptions(); // back to the default (its reset button): the widget shows it
+                else if (instance)
+                    m_options->showChanged(*instance);
+                if (error) {
+                    m_log->addMessage(QString::fromStdString(*error), Severity::Error);
+                    refreshOptions(); // show the stored value again
+                }
+            });
+    connect(m_options, &widgets::OptionsEditor::nameEdited, this,
+            [this](model::InstanceId id, const std::string& token, const QString& name) {
+                logError(m_session.setNameOverride(id, token, name.toStdString()));
+            });
+}
+
+void MainWindow::refreshOptions()
+{
+    // Queued: an edit rebuilds the editor's widgets, the one that emitted included.
+    QMetaObject::invokeMethod(this, [this] {
+        const model::TemplateInstance* instance = m_session.document().instance(m_session.selection().instance);
+        m_options->setInstance(instance, instance ? m_session.templates().find(instance->templateId) : nullptr);
+        m_optionsInstance = m_session.selection().instance;
+    }, Qt::QueuedConnection);
+}
+
+// What each view shows of a change; previews (a drag in progress) touch only
+// the viewport and what follows the rig.
+void MainWindow::follow(const edit::Change& change)
+{
+    using K = edit::ChangeKind;
+    const bool everything = change.hasAny(K::Document | K::Templates);
+    if (everything || (!change.preview && change.hasAny(K::Instances | K::Names)))
+        m_outliner->refresh(m_session.document(), m_session.templates());
+    if (everything || change.hasAny(K::Selection | K::Instances))
+        m_outliner->selectInstance(m_session.selection().instance);
+    if (change.has(K::Templates))
+        m_library->refresh(m_session.templates());
+    if (change.hasAny(K::History | K::Document)) {
+        m_historyView->refresh(m_session.history());
+        updateUndoActions();
+        updateTitle();
+    }
+    const bool optionsShown = m_optionsInstance == m_session.selection().instance;
+    if (everything || !optionsShown ||
+        (!change.preview && !m_optionsEditing && change.hasAny(K::Options | K::Names | K::Instances)))
+        refreshOptions();
+    if (change.has(K::Rig))
+        m_channelBox->invalidate(); // a rebuilt rig has new channel indices
+    if (change.has(K::Mode))
+        followMode();
+    if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names | K::Reference | K::Selection |
+                      K::Rig | K::Evaluation | K::Mode | K::Templates))
+        refreshScene();
+}
+
+} // namespace rs::app
