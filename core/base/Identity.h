@@ -4,6 +4,7 @@
 // files. Nothing in Rigsmith finds a thing by its display name, and no id has a
 // text form that is parsed again, except at file boundaries (rs::io).
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace rs {
@@ -59,3 +60,16 @@ struct Subject {
 };
 
 } // namespace rs
+
+// Hashes, for the rig's node index (an unordered map: looked up for every node
+// a build creates).
+template <>
+struct std::hash<rs::NodeKey> {
+    std::size_t operator()(const rs::NodeKey& key) const noexcept
+    {
+        std::size_t h = std::hash<std::string>{}(key.tag);
+        h ^= std::hash<std::string>{}(key.branch) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+        h ^= std::size_t(key.instance) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+        return h;
+    }
+};

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace rs::model {
@@ -133,7 +134,7 @@ struct Rig {
     std::vector<RigNode> nodes;
     std::vector<RigConstraint> constraints; // in build order; the evaluator orders them by dependency
     std::map<std::string, std::vector<RigNodeIndex>> sets; // "controllers": every animatable controller
-    std::map<NodeKey, RigNodeIndex> byKey;
+    std::unordered_map<NodeKey, RigNodeIndex> byKey;
     std::map<std::string, RigNodeIndex, std::less<>> byPath;
     Diagnostics diagnostics;
 
