@@ -3,6 +3,7 @@
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
 #include "io/ReferenceModel.h"
+#include "io/TemplateFolders.h"
 
 #include <filesystem>
 
@@ -12,7 +13,7 @@ namespace {
 
 std::shared_ptr<const templates::TemplateRegistry> loadTemplates(Diagnostics& diagnostics)
 {
-    return templates::TemplateRegistry::loadDefault(diagnostics);
+    return io::loadDefaultTemplates(diagnostics);
 }
 
 std::optional<std::vector<glm::vec3>> readReference(const std::string& path, Diagnostics& diagnostics)

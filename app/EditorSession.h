@@ -66,7 +66,7 @@ public:
 signals:
     void changed(const rs::edit::Change& change);
     void diagnosticsReported(const rs::Diagnostics& diagnostics);
-    // During a build: the fraction done and the stage (rigging::BuildProgress).
+    // During a build: the fraction done and the stage (session::BuildProgress).
     void buildProgressed(double fraction, const QString& stage);
 
 private:

@@ -98,9 +98,12 @@ void MainWindow::refreshScene()
     const bool rigMode = m_session.mode() == EditorMode::Rig;
     const eval::EvalState* pose = rigMode ? m_session.evaluation() : nullptr;
     const bool cvMode = !rigMode && m_session.isCvMode();
+    // The mirrored branches' guides are drawn with the guides only (not in Rig mode).
+    const std::vector<session::MirroredGuideJoint> mirrored =
+        pose ? std::vector<session::MirroredGuideJoint>{} : m_session.mirroredGuideJoints();
     viewport::Scene scene = viewport::makeScene(m_session.document(), m_session.rig(),
                                                 {s.instance, s.joint, s.joints, s.node, s.nodes, cvMode, s.cvs}, pose,
-                                                &m_session.templates());
+                                                mirrored);
     scene.reference = m_session.referenceTriangles();
     m_viewport->setScene(std::move(scene));
     const auto* rig = m_session.rig();

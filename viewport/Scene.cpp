@@ -1,7 +1,5 @@
 #include "Scene.h"
 
-#include "rigging/BranchStage.h"
-
 #include <algorithm>
 
 namespace rs::viewport {
@@ -39,34 +37,6 @@ namespace {
 
 const glm::dvec3 kHullColor{0.55, 0.3, 0.6}; // Maya draws hulls and CVs in violet
 
-std::vector<SceneJoint> mirroredGuides(const model::GuideDocument& guide, const templates::TemplateRegistry& templates)
-{
-    Diagnostics ignored; // the build reports branch problems
-    const rigging::ExpandedGuide expanded = rigging::expandBranches(guide, templates, ignored);
-    std::vector<SceneJoint> out;
-    for (const auto& instance : expanded.document.instances()) {
-        const auto copy = expanded.copies.find(instance.id);
-        if (copy == expanded.copies.end() || copy->second.mirror == Mat4(1.0))
-            continue;
-        const Mat4& mirror = copy->second.mirror;
-        auto placed = [&](model::JointId id) { return glm::dvec3(mirror * glm::dvec4(translationOf(expanded.document.jointWorldMatrix(id)), 1.0)); };
-        for (const auto& joint : instance.joints) {
-            SceneJoint j;
-            j.owner = copy->second.original;
-            j.position = placed(joint.id);
-            const model::JointId parent = joint.parent != model::kNoId ? joint.parent : instance.parentJoint;
-            if (parent != model::kNoId) {
-                j.hasParent = true;
-                const auto parentCopy = expanded.copies.find(expanded.document.ownerOf(parent)->id);
-                const Mat4& parentMirror = parentCopy != expanded.copies.end() ? parentCopy->second.mirror : Mat4(1.0);
-                j.parentPosition = glm::dvec3(parentMirror * glm::dvec4(translationOf(expanded.document.jointWorldMatrix(parent)), 1.0));
-            }
-            out.push_back(j);
-        }
-    }
-    return out;
-}
-
 bool showsCvs(const SceneSelection& selection, model::RigNodeIndex node)
 {
     return selection.cvMode &&
@@ -96,7 +66,7 @@ void addCvs(Scene& scene, const model::RigNode& node, model::RigNodeIndex index,
 } // namespace
 
 Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
-                const eval::EvalState* pose, const templates::TemplateRegistry* templates)
+                const eval::EvalState* pose, const std::vector<session::MirroredGuideJoint>& mirrored)
 {
     Scene scene;
     scene.showGuides = pose == nullptr;
@@ -116,8 +86,15 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                          (selection.joint == model::kNoId && instance.id == selection.instance);
             scene.guideJoints.push_back(j);
         }
-    if (templates && scene.showGuides)
-        scene.mirrorJoints = mirroredGuides(guide, *templates);
+    if (scene.showGuides)
+        for (const session::MirroredGuideJoint& m : mirrored) {
+            SceneJoint j;
+            j.owner = m.owner;
+            j.position = m.position;
+            j.hasParent = m.hasParent;
+            j.parentPosition = m.parentPosition;
+            scene.mirrorJoints.push_back(j);
+        }
     if (!rig)
         return scene;
     const bool posed = pose && pose->world.size() == rig->nodes.size();

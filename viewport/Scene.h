@@ -5,7 +5,7 @@
 #include "eval/RigProgram.h"
 #include "model/GuideDocument.h"
 #include "model/Rig.h"
-#include "templates/TemplateRegistry.h"
+#include "session/MirroredGuides.h"
 
 #include <glm/glm.hpp>
 #include <cstdint>
@@ -71,9 +71,10 @@ struct Scene {
 
 // `rig` may be null (not built yet). With `pose` (an evaluation of the rig) the
 // controllers and skin joints are drawn posed and the guides hidden: Rig mode.
-// With `templates` the mirrored branches' guides are drawn too.
+// `mirrored` (session::Session::mirroredGuideJoints()) are the mirrored branches'
+// guides, drawn with the guides.
 Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
-                const eval::EvalState* pose = nullptr, const templates::TemplateRegistry* templates = nullptr);
+                const eval::EvalState* pose = nullptr, const std::vector<session::MirroredGuideJoint>& mirrored = {});
 // Bounds of the selected guide joints or controllers; false when nothing is selected.
 bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
 

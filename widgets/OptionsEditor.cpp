@@ -1,5 +1,7 @@
 #include "OptionsEditor.h"
 
+#include "io/YamlText.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -15,8 +17,6 @@
 #include <QSpinBox>
 #include <QToolButton>
 #include <QVBoxLayout>
-
-#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 
@@ -38,17 +38,6 @@ QDoubleSpinBox* numberBox(QWidget* parent, double value, std::optional<double> m
     box->setValue(value);
     box->setKeyboardTracking(false); // one edit per finished value, not per keystroke
     return box;
-}
-
-// Flow YAML as the manifests write it (`[a, b]`, `{k: v}`); empty is valid.
-bool isValidYaml(const QString& value)
-{
-    try {
-        YAML::Load(value.toStdString());
-        return true;
-    } catch (const YAML::Exception&) {
-        return false;
-    }
 }
 
 } // namespace
@@ -223,7 +212,7 @@ QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& v
         auto* line = new QLineEdit(text(std::get<std::string>(value)), m_body);
         const bool yaml = p.yaml;
         connect(line, &QLineEdit::editingFinished, this, [line, yaml, emitValue] {
-            if (yaml && !isValidYaml(line->text())) {
+            if (yaml && !io::isValidYaml(line->text().toStdString())) {
                 line->setStyleSheet("border: 1px solid #d04040");
                 line->setToolTip(tr("Not valid YAML: the option keeps its value"));
                 return;

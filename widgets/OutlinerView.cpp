@@ -3,7 +3,7 @@
 #include "eval/Pickwalk.h"
 
 #include "base/Paths.h"
-#include "rigging/RigBuilder.h"
+#include "templates/HookPoints.h"
 
 #include <QHeaderView>
 #include <QIcon>
@@ -97,9 +97,9 @@ void OutlinerView::refresh(const model::GuideDocument& document, const templates
         items[instance.id] = item;
         if (!manifest)
             continue;
-        const std::vector<rigging::HookPoint> points = rigging::hookPoints(*manifest, instance);
-        for (const rigging::HookPoint& point : points) {
-            const bool named = std::any_of(points.begin(), points.end(), [&](const rigging::HookPoint& other) {
+        const std::vector<templates::HookPoint> points = templates::hookPoints(*manifest, instance);
+        for (const templates::HookPoint& point : points) {
+            const bool named = std::any_of(points.begin(), points.end(), [&](const templates::HookPoint& other) {
                 return other.joint == point.joint && other.label != "default";
             });
             const bool indexed = point.label.find('[') != std::string::npos; // one of a chain's joints
@@ -189,7 +189,7 @@ model::JointId OutlinerView::dropTarget(const QPoint& pos) const
     if (!instance)
         return model::kNoId;
     const templates::TemplateManifest* manifest = m_templates->find(instance->templateId);
-    return manifest ? rigging::hookPoints(*manifest, *instance).front().joint : instance->joints.front().id;
+    return manifest ? templates::hookPoints(*manifest, *instance).front().joint : instance->joints.front().id;
 }
 
 void OutlinerView::dropEvent(QDropEvent* event)
@@ -232,12 +232,12 @@ QMenu* OutlinerView::createContextMenu(model::InstanceId id, QWidget* parent)
         return menu;
     }
     const templates::TemplateManifest* manifest = m_templates->find(instance->templateId);
-    std::vector<rigging::HookPoint> hooks;
+    std::vector<templates::HookPoint> hooks;
     if (manifest)
-        hooks = rigging::hookPoints(*manifest, *instance);
+        hooks = templates::hookPoints(*manifest, *instance);
     else
         hooks.push_back({"default", instance->joints.front().id});
-    for (const rigging::HookPoint& hook : hooks) {
+    for (const templates::HookPoint& hook : hooks) {
         QMenu* at = add->addMenu(QIcon(), QString::fromStdString(hook.label));
         at->setObjectName(QString::fromStdString("hook:" + hook.label));
         addTemplateEntries(at, hook.joint);

@@ -6,7 +6,9 @@
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
-#include "io/YamlSupport.h"
+#include "io/ShapeFile.h"
+#include "io/TemplateFolders.h"
+#include "io/YamlText.h"
 #include "templates/ManifestDump.h"
 #include "templates/ShapeIcon.h"
 
@@ -128,7 +130,7 @@ int runBuild(const std::vector<std::string>& args)
     if (!parseBuildArguments(args, b))
         return 2;
     Diagnostics templateDiagnostics;
-    auto templates = templates::TemplateRegistry::loadDefault(templateDiagnostics);
+    auto templates = io::loadDefaultTemplates(templateDiagnostics);
     print(templateDiagnostics);
     auto guide = io::readGuideFile(b.guide);
     print(guide.diagnostics());
@@ -168,7 +170,7 @@ int runCheckTemplates(const std::vector<std::string>& args)
         folders = {builtinTemplatesDirectory()};
     folders.insert(folders.end(), args.begin(), args.end());
     templates::TemplateRegistry registry;
-    const Diagnostics diagnostics = registry.scan(folders, iconsDirectory());
+    const Diagnostics diagnostics = io::scanTemplates(registry, folders, iconsDirectory());
     auto listed = [&](const templates::TemplateManifest& m) {
         if (args.empty())
             return true;
@@ -201,7 +203,7 @@ int runDescribeTemplate(const std::vector<std::string>& args)
         return 2;
     }
     Diagnostics diagnostics;
-    auto registry = templates::TemplateRegistry::loadDefault(diagnostics);
+    auto registry = io::loadDefaultTemplates(diagnostics);
     print(diagnostics);
     const templates::TemplateManifest* m = registry->find(args[0]);
     if (!m) {
@@ -228,7 +230,7 @@ int runShapeIcons(const std::vector<std::string>& args)
         directory = (std::filesystem::path(dataDirectory()) / "templates" / "shapes").string();
     templates::ShapeLibrary library;
     Diagnostics diagnostics;
-    library.loadDirectory(directory, diagnostics);
+    io::loadShapeDirectory(library, directory, diagnostics);
     print(diagnostics);
     int status = hasErrors(diagnostics) ? 1 : 0;
     const std::filesystem::path icons = std::filesystem::path(directory) / "icons";

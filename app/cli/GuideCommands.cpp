@@ -2,8 +2,10 @@
 #include "cli/Commands.h"
 
 #include "rigging/RigBuilder.h"
+#include "templates/HookPoints.h"
 #include "edit/GuideEdits.h"
 #include "io/GuideFile.h"
+#include "io/TemplateFolders.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -84,7 +86,7 @@ int runAdd(const std::vector<std::string>& args)
     if (path.empty() || templateId.empty()) { std::cerr << usage(); return 2; }
 
     Diagnostics templateDiagnostics;
-    auto templates = templates::TemplateRegistry::loadDefault(templateDiagnostics);
+    auto templates = io::loadDefaultTemplates(templateDiagnostics);
     auto guide = io::readGuideFile(path);
     print(guide.diagnostics());
     if (!guide)
@@ -101,7 +103,7 @@ int runAdd(const std::vector<std::string>& args)
         const auto* manifest = templates->find(parent->templateId);
         std::string labels;
         if (manifest)
-            for (const auto& hook : rigging::hookPoints(*manifest, *parent)) {
+            for (const auto& hook : templates::hookPoints(*manifest, *parent)) {
                 labels += (labels.empty() ? "" : ", ") + hook.label;
                 if (hook.label == label) hookJoint = hook.joint;
             }

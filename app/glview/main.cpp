@@ -5,6 +5,7 @@
 
 #include "rigging/RigBuilder.h"
 #include "io/GuideFile.h"
+#include "io/TemplateFolders.h"
 
 #include <iostream>
 
@@ -19,7 +20,7 @@ int main(int argc, char** argv)
     if (!guide)
         return 1;
     rs::Diagnostics diagnostics;
-    auto templates = rs::templates::TemplateRegistry::loadDefault(diagnostics);
+    auto templates = rs::io::loadDefaultTemplates(diagnostics);
     const rs::model::Rig rig = rs::rigging::buildRig(*guide, *templates);
     std::cerr << rs::formatAll(diagnostics) << rs::formatAll(rig.diagnostics);
     std::string error;

@@ -1,7 +1,6 @@
 #include "io/YamlSupport.h"
 
 #include <cctype>
-#include <charconv>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -93,41 +92,6 @@ Result<YAML::Node> loadYamlFile(const std::string& path)
     if (!text)
         return Result<YAML::Node>::failure(makeError({path, 0, 0}, "cannot open file"));
     return loadYamlText(*text, path);
-}
-
-std::optional<bool> parseBool(const std::string& t)
-{
-    if (t == "on" || t == "true" || t == "yes" || t == "True" || t == "TRUE" || t == "On" || t == "Yes")
-        return true;
-    if (t == "off" || t == "false" || t == "no" || t == "False" || t == "FALSE" || t == "Off" || t == "No")
-        return false;
-    return std::nullopt;
-}
-
-std::optional<long long> parseInteger(const std::string& t)
-{
-    long long value = 0;
-    const char* begin = t.data();
-    const char* end = t.data() + t.size();
-    if (begin != end && *begin == '+')
-        ++begin;
-    auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end || begin == end)
-        return std::nullopt;
-    return value;
-}
-
-std::optional<double> parseNumber(const std::string& t)
-{
-    double value = 0;
-    const char* begin = t.data();
-    const char* end = t.data() + t.size();
-    if (begin != end && *begin == '+')
-        ++begin;
-    auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end || begin == end)
-        return std::nullopt;
-    return value;
 }
 
 void YamlReader::error(const YAML::Node& node, const std::string& message)
@@ -230,32 +194,14 @@ std::optional<Value> readValue(YamlReader& r, const YAML::Node& node, const std:
     return Value(text);
 }
 
-std::optional<std::vector<std::string>> parseFlowList(const std::string& text, std::string& error)
+bool isValidYaml(const std::string& text)
 {
-    std::vector<std::string> items;
-    YAML::Node node;
     try {
-        node = YAML::Load(text);
-    } catch (const YAML::Exception& e) {
-        error = e.msg;
-        return std::nullopt;
+        YAML::Load(text);
+        return true;
+    } catch (const YAML::Exception&) {
+        return false;
     }
-    if (node.IsNull())
-        return items;
-    if (node.IsScalar())
-        return std::vector<std::string>{node.Scalar()};
-    if (!node.IsSequence()) {
-        error = "expected a list";
-        return std::nullopt;
-    }
-    for (const auto& item : node) {
-        if (!item.IsScalar()) {
-            error = "list items must be plain values";
-            return std::nullopt;
-        }
-        items.push_back(item.Scalar());
-    }
-    return items;
 }
 
 std::string quoteIfNeeded(const std::string& text)

@@ -1,9 +1,12 @@
 #pragma once
-// yaml-cpp helpers shared by the readers in core. Internal to core: only .cpp
-// files include this header, so YAML::Node never leaks into a public header.
+// yaml-cpp helpers shared by the readers in io/. Internal to io: only io/ .cpp
+// files include this header, so YAML::Node never leaks out of io (the layering
+// test checks it). The scalars (parseBool, parseNumber...) come from base/TextScalars.h.
 #include "base/Diagnostic.h"
 #include "base/Math.h"
 #include "base/Result.h"
+#include "base/TextScalars.h"
+#include "io/YamlText.h"
 #include "model/Value.h"
 
 #include <yaml-cpp/yaml.h>
@@ -13,9 +16,6 @@
 #include <vector>
 
 namespace rs::io {
-
-// The whole file as bytes, or nullopt when it cannot be opened.
-std::optional<std::string> readTextFile(const std::string& path);
 
 // Parses a whole file; syntax errors become "file:line:col: error: ...".
 Result<YAML::Node> loadYamlFile(const std::string& path);
@@ -51,15 +51,5 @@ private:
 // Infers a value's type from a plain scalar (on/off, int, float, else text) or a
 // 3-number list; quoted scalars are always text.
 std::optional<Value> readValue(YamlReader& r, const YAML::Node& node, const std::string& what);
-// Items of a flow-YAML list given as text ("[L, R]"); a plain scalar is one item,
-// an empty text none. Nested lists and maps are refused.
-std::optional<std::vector<std::string>> parseFlowList(const std::string& text, std::string& error);
-// Quotes text that would otherwise read back as another type or break YAML.
-std::string quoteIfNeeded(const std::string& text);
-
-// Scalar classification following YAML 1.1 as Mikan's manifests use it (on/off, yes/no).
-std::optional<bool> parseBool(const std::string& text);
-std::optional<long long> parseInteger(const std::string& text);
-std::optional<double> parseNumber(const std::string& text);
 
 } // namespace rs::io

@@ -1,6 +1,6 @@
 #include "rigging/BranchStage.h"
 
-#include "io/YamlSupport.h"
+#include "base/TextScalars.h"
 
 #include <algorithm>
 
@@ -60,7 +60,7 @@ ExpandedGuide expandBranches(const model::GuideDocument& guide, const templates:
         if (manifest && manifest->findOpt("branches")) {
             std::string error;
             const std::string text = optionText(authored, manifest, "branches");
-            if (auto list = io::parseFlowList(text, error)) branches = *list;
+            if (auto list = parseFlowList(text, error)) branches = *list;
             else diagnostics.push_back(makeWarning({}, "instance '" + authored.name + "': option 'branches' = '" + text +
                                                            "' is not a YAML list (" + error + "); built once"));
         }

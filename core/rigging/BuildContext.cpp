@@ -1,7 +1,7 @@
 #include "rigging/BuildContext.h"
 
 #include "rigging/RigAssembly.h"
-#include "io/YamlSupport.h"
+#include "base/TextScalars.h"
 #include "templates/Structure.h"
 
 #include <algorithm>
@@ -59,7 +59,7 @@ std::optional<std::vector<std::string>> BuildContext::optionList(const std::stri
 {
     const std::string text = optionString(name);
     std::string error;
-    auto items = io::parseFlowList(text, error);
+    auto items = parseFlowList(text, error);
     if (!items)
         this->error("option '" + name + "' = '" + text + "' is not a YAML list: " + error, name);
     return items;

@@ -491,23 +491,4 @@ Result<model::TemplateInstance> regenerateGuide(const model::GuideDocument& guid
     return out;
 }
 
-std::vector<HookPoint> hookPoints(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance)
-{
-    std::vector<HookPoint> out;
-    templates::StructureResolver resolver(manifest, instance);
-    for (const templates::UiHook& hook : manifest.hooks) {
-        auto joints = resolver.address(hook.structure);
-        if (!joints)
-            continue;
-        if (joints->size() == 1)
-            out.push_back({hook.label, joints->front()});
-        else
-            for (std::size_t i = 0; i < joints->size(); ++i)
-                out.push_back({hook.label + "[" + std::to_string(i) + "]", (*joints)[i]});
-    }
-    if (out.empty() && !instance.joints.empty()) // every joint is a hook; offer the root at least
-        out.push_back({"default", instance.joints.front().id});
-    return out;
-}
-
 } // namespace rs::rigging

@@ -57,12 +57,4 @@ Result<model::TemplateInstance> regenerateGuide(const model::GuideDocument& guid
                                                 const std::map<std::string, Value>& options,
                                                 const BuilderRegistry& builders = BuilderRegistry::builtin());
 
-// An attach point offered to child templates (manifest `ui.hooks`); a hook whose
-// address spans several joints expands to "label[i]".
-struct HookPoint {
-    std::string label;
-    model::JointId joint = model::kNoId;
-};
-std::vector<HookPoint> hookPoints(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance);
-
 } // namespace rs::rigging

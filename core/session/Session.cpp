@@ -1,6 +1,7 @@
 #include "session/Session.h"
 
 #include "edit/GuideEdits.h"
+#include "rigging/RigBuilder.h"
 
 #include <algorithm>
 #include <chrono>

@@ -20,7 +20,7 @@
 #include "eval/Pickwalk.h"
 #include "eval/PoseTools.h"
 #include "model/Rig.h"
-#include "rigging/RigBuilder.h"
+#include "session/MirroredGuides.h"
 #include "templates/TemplateRegistry.h"
 
 #include <functional>
@@ -56,6 +56,9 @@ struct Selection {
 };
 
 enum class Mode { Guide, Rig };
+// How far an explicit build is: the fraction done (0 to 1) and the stage (the
+// same function type as rigging::BuildProgress, so the builder takes it as is).
+using BuildProgress = std::function<void(double fraction, const std::string& stage)>;
 enum class PoseTool { ResetSelected, ResetAll, Mirror, Flip, IkToFk, FkToIk };
 
 class Session {
@@ -70,6 +73,8 @@ public:
     edit::History& history() { return m_history; }
     const edit::History& history() const { return m_history; }
     const templates::TemplateRegistry& templates() const { return *m_templates; }
+    // The guide joints of the mirrored branch copies, for drawing (SessionGuide.cpp).
+    std::vector<MirroredGuideJoint> mirroredGuideJoints() const;
     // Replaces the open document (open, new, recover): selection, rig and history start over.
     void replaceDocument(model::GuideDocument document);
     // A reloaded template library; a built rig is rebuilt with it.
@@ -81,7 +86,7 @@ public:
     // Where build and evaluation messages go (the editor's log, the CLI's stderr).
     using Reporter = std::function<void(const Diagnostics&)>;
     void setReporter(Reporter reporter) { m_reporter = std::move(reporter); }
-    void setBuildProgress(rigging::BuildProgress progress) { m_progress = std::move(progress); }
+    void setBuildProgress(BuildProgress progress) { m_progress = std::move(progress); }
 
     // Builds the rig from the document, compiles and poses it; returns the time
     // in milliseconds. From then on every guide change rebuilds it (live).
@@ -180,7 +185,7 @@ private:
     Change m_batched;
     int m_nextListener = 1;
     Reporter m_reporter;
-    rigging::BuildProgress m_progress;
+    BuildProgress m_progress;
 
     std::optional<model::Rig> m_rig;
     bool m_rigStale = false;

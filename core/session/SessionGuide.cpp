@@ -10,6 +10,11 @@
 
 namespace rs::session {
 
+std::vector<MirroredGuideJoint> Session::mirroredGuideJoints() const
+{
+    return session::mirroredGuideJoints(m_document, *m_templates);
+}
+
 void Session::selectGuideJoints(const std::vector<model::JointId>& joints, bool add)
 {
     Selection s = add ? m_selection : Selection{};

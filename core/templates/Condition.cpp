@@ -1,6 +1,6 @@
 #include "templates/Condition.h"
 
-#include "io/YamlSupport.h"
+#include "base/TextScalars.h"
 
 #include <cctype>
 #include <vector>
@@ -76,8 +76,8 @@ private:
         if (t == "(" || t == ")" || t == "==" || t == "!=" || t == "and" || t == "or" || t == "not") { fail("unexpected '" + t + "'"); return {}; }
         if (t.front() == '\'' || t.front() == '"') return t.substr(1, t.size() - 2);
         if (auto it = m_options.find(t); it != m_options.end()) return formatValue(it->second);
-        if (io::parseNumber(t)) return t;
-        if (auto b = io::parseBool(t)) return *b ? "on" : "off";
+        if (parseNumber(t)) return t;
+        if (auto b = parseBool(t)) return *b ? "on" : "off";
         if (!bareWordIsText && (std::isalpha(static_cast<unsigned char>(t.front())) || t.front() == '_')) { fail("unknown option '" + t + "'"); return {}; }
         return t;
     }

@@ -1,8 +1,8 @@
 #pragma once
 // The controller shapes library: templates/shapes/<name>.yml, each a list of
 // NURBS curves (degree 1-3, optionally periodic, optional per-curve colour),
-// unit-sized and Y-up (a circle lies in the XZ plane).
-#include "base/Diagnostic.h"
+// unit-sized and Y-up (a circle lies in the XZ plane). The data only: the files
+// are read by io/ShapeFile.
 #include "base/Math.h"
 #include "templates/Color.h"
 
@@ -28,10 +28,6 @@ struct Shape {
 
 class ShapeLibrary {
 public:
-    // Loads every *.yml in the folder; later folders override earlier names.
-    void loadDirectory(const std::string& directory, Diagnostics& diagnostics);
-    // The *.yml files of a shapes folder, sorted.
-    static std::vector<std::string> filesIn(const std::string& directory);
     void add(Shape shape); // replaces a shape of the same name
     const Shape* find(const std::string& name) const;
     std::vector<std::string> names() const;
@@ -41,10 +37,6 @@ public:
 private:
     std::map<std::string, Shape> m_shapes;
 };
-
-std::optional<Shape> readShapeFile(const std::string& file, Diagnostics& diagnostics);
-// `file` names the shape (its stem) and the diagnostics.
-std::optional<Shape> readShapeText(const std::string& text, const std::string& file, Diagnostics& diagnostics);
 
 // Samples a curve into a polyline. Periodic curves use uniform knots over the
 // control points wrapped by `degree`; open curves of degree > 1 use clamped knots.

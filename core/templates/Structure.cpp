@@ -1,6 +1,6 @@
 #include "templates/Structure.h"
 
-#include "io/YamlSupport.h"
+#include "base/TextScalars.h"
 
 #include <algorithm>
 #include <cctype>
@@ -27,7 +27,7 @@ std::optional<std::vector<JointId>> applySelector(const std::vector<JointId>& li
         return list;
     const auto colon = selector.find(':');
     if (colon == std::string::npos) {
-        auto index = io::parseInteger(trim(selector));
+        auto index = parseInteger(trim(selector));
         if (!index) { error = "bad index '[" + selector + "]'"; return std::nullopt; }
         long long i = *index < 0 ? n + *index : *index;
         if (i < 0 || i >= n) { error = "index [" + selector + "] is out of range (" + std::to_string(n) + " joints)"; return std::nullopt; }
@@ -35,7 +35,7 @@ std::optional<std::vector<JointId>> applySelector(const std::vector<JointId>& li
     }
     auto bound = [&](const std::string& text, long long fallback) -> std::optional<long long> {
         if (trim(text).empty()) return fallback;
-        auto v = io::parseInteger(trim(text));
+        auto v = parseInteger(trim(text));
         if (!v) return std::nullopt;
         long long i = *v < 0 ? n + *v : *v;
         return std::clamp(i, 0LL, n);
@@ -49,7 +49,7 @@ std::optional<std::vector<JointId>> applySelector(const std::vector<JointId>& li
     return out;
 }
 
-bool isInteger(const std::string& text) { return io::parseInteger(text).has_value(); }
+bool isInteger(const std::string& text) { return parseInteger(text).has_value(); }
 
 std::optional<std::string> checkSelector(const std::string& selector)
 {

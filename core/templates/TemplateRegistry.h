@@ -1,14 +1,13 @@
 #pragma once
-// All known templates and shapes. A templates folder holds
-// <category>/<module>/template.yml plus a shapes/ library; folders scanned later
-// override earlier ones (user folders over built-ins). Broken manifests are left
-// out and reported; the rest stay usable.
+// All known templates and shapes, keyed by id and name. The data only: the
+// folders (<category>/<module>/template.yml plus a shapes/ library) are read by
+// io/TemplateFolders, which fills a registry; folders read later override
+// earlier ones (user folders over built-ins).
 #include "base/Diagnostic.h"
 #include "templates/Manifest.h"
 #include "templates/ShapeLibrary.h"
 
 #include <map>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,18 +15,21 @@ namespace rs::templates {
 
 class TemplateRegistry {
 public:
-    // Replaces the content with what the folders hold; returns every diagnostic.
-    Diagnostics scan(const std::vector<std::string>& folders, const std::string& iconsDirectory);
+    // Empties the registry; icons are then looked up in `iconsDirectory`.
+    void reset(const std::string& iconsDirectory);
+    // Adds a manifest, replacing one with the same id.
+    void add(TemplateManifest manifest);
+    // Problems only the whole library shows: unknown shapes, missing icons (warnings).
+    Diagnostics crossCheck() const;
 
     const TemplateManifest* find(const std::string& id) const;
     std::vector<const TemplateManifest*> all() const; // sorted by id
     std::vector<std::string> categories() const;
     const ShapeLibrary& shapes() const { return m_shapes; }
+    ShapeLibrary& shapes() { return m_shapes; }
+    const std::string& iconsDirectory() const { return m_iconsDirectory; }
     // The icon's SVG path, or the fallback icon when the manifest's is missing.
     std::string iconPath(const TemplateManifest& manifest) const;
-
-    // Convenience: scans templateSearchPath() and iconsDirectory().
-    static std::shared_ptr<TemplateRegistry> loadDefault(Diagnostics& diagnostics);
 
 private:
     std::map<std::string, TemplateManifest> m_manifests;

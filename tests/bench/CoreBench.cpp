@@ -3,6 +3,7 @@
 #include "eval/RigProgram.h"
 #include "io/RigExport.h"
 #include "io/GuideFile.h"
+#include "io/TemplateFolders.h"
 #include "io/RigDump.h"
 #include "model/Skeleton.h"
 #include "session/Session.h"
@@ -33,7 +34,7 @@ const templates::TemplateRegistry& registry()
 {
     static const auto r = [] {
         auto out = std::make_shared<templates::TemplateRegistry>();
-        out->scan({kSource + "/templates"}, kSource + "/resources/icons");
+        io::scanTemplates(*out, {kSource + "/templates"}, kSource + "/resources/icons");
         return out;
     }();
     return *r;
@@ -64,7 +65,7 @@ void BM_ScanTemplates(benchmark::State& state)
 {
     for (auto _ : state) {
         templates::TemplateRegistry r;
-        benchmark::DoNotOptimize(r.scan({kSource + "/templates"}, kSource + "/resources/icons"));
+        benchmark::DoNotOptimize(io::scanTemplates(r, {kSource + "/templates"}, kSource + "/resources/icons"));
     }
 }
 BENCHMARK(BM_ScanTemplates)->Unit(benchmark::kMillisecond);
@@ -92,7 +93,7 @@ void BM_ScanTemplateLibrary(benchmark::State& state)
     std::size_t templates = 0, shapes = 0;
     for (auto _ : state) {
         templates::TemplateRegistry r;
-        benchmark::DoNotOptimize(r.scan({folder.string()}, kSource + "/resources/icons"));
+        benchmark::DoNotOptimize(io::scanTemplates(r, {folder.string()}, kSource + "/resources/icons"));
         templates = r.all().size();
         shapes = r.shapes().size();
     }

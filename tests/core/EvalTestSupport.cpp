@@ -1,6 +1,6 @@
 #include "EvalTestSupport.h"
 
-#include "io/YamlSupport.h"
+#include "io/YamlText.h"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 // conditions (with an enum option given by index), and ids that only the
 // builder creates (skin.last.up), which the manifest can still place.
 #include "base/Paths.h"
+#include "io/TemplateFolders.h"
 #include "rigging/RigBuilder.h"
 #include "rigging/TemplateBuilder.h"
 #include "core/TestSupport.h"
@@ -58,7 +59,7 @@ hierarchy:
   skin.last.up: {parent: skin.up.1}
   skin.dn.0: {parent: skin.last.up}
 )";
-        const Diagnostics d = registry.scan({builtinTemplatesDirectory(), folder}, iconsDirectory());
+        const Diagnostics d = io::scanTemplates(registry, {builtinTemplatesDirectory(), folder}, iconsDirectory());
         ASSERT_FALSE(hasErrors(d)) << formatAll(d);
         builders.add("test.limb", std::make_unique<TwoSegmentBuilder>());
     }

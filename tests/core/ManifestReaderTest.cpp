@@ -1,6 +1,6 @@
 #include "core/TestSupport.h"
-#include "io/YamlSupport.h"
-#include "templates/ManifestReader.h"
+#include "io/ManifestReader.h"
+#include "io/TemplateFolders.h"
 #include "templates/TemplateRegistry.h"
 
 #include <cstdlib>
@@ -15,7 +15,7 @@ using namespace rs::templates;
 namespace {
 Result<TemplateManifest> read(const std::string& text)
 {
-    return readManifestText(text, "tpl/template.yml", "arm", "test");
+    return io::readManifestText(text, "tpl/template.yml", "arm", "test");
 }
 } // namespace
 
@@ -100,7 +100,7 @@ TEST(ManifestReader, OverridesOnePropertyOfACommonOption)
     EXPECT_EQ(branches->value, Value(std::string("[L, R]")));
     EXPECT_TRUE(branches->yaml) << "the other properties come from the common option";
     EXPECT_EQ(r->opts.front().name, "branches");
-    EXPECT_EQ(r->opts.size(), commonOptions().size() + 1);
+    EXPECT_EQ(r->opts.size(), io::commonOptions().size() + 1);
 }
 
 TEST(ManifestReader, RejectsAnEnumValueThatIsNoLabel)
@@ -119,7 +119,7 @@ TEST(TemplateRegistry, ScansUserFoldersFromTheTemplatePathOverBuiltins)
     std::ofstream(user / "core" / "joints" / "template.yml") << "name: bones\nstructure:\n  chain: /*\n";
     ::setenv("RIGSMITH_TEMPLATE_PATH", ("/nonexistent/folder:" + user.string()).c_str(), 1);
     Diagnostics d;
-    auto registry = TemplateRegistry::loadDefault(d);
+    auto registry = io::loadDefaultTemplates(d);
     ::unsetenv("RIGSMITH_TEMPLATE_PATH");
     ASSERT_NE(registry->find("prop.lamp"), nullptr);
     EXPECT_EQ(registry->find("prop.lamp")->desc, "A lamp.");
@@ -127,19 +127,6 @@ TEST(TemplateRegistry, ScansUserFoldersFromTheTemplatePathOverBuiltins)
     EXPECT_NE(registry->find("world.character"), nullptr);
     ASSERT_FALSE(d.empty());
     EXPECT_EQ(d[0].format(), "/nonexistent/folder: warning: template folder does not exist");
-}
-
-TEST(YamlSupport, ParsesTheFlowListsOfYamlOptions)
-{
-    std::string error;
-    EXPECT_EQ(*io::parseFlowList("[L, R]", error), (std::vector<std::string>{"L", "R"}));
-    EXPECT_EQ(*io::parseFlowList("[hook, world, '*::space.cog']", error), (std::vector<std::string>{"hook", "world", "*::space.cog"}));
-    EXPECT_EQ(*io::parseFlowList("up", error), (std::vector<std::string>{"up"}));
-    EXPECT_TRUE(io::parseFlowList("", error)->empty());
-    EXPECT_FALSE(io::parseFlowList("[a, [b]]", error));
-    EXPECT_EQ(error, "list items must be plain values");
-    EXPECT_FALSE(io::parseFlowList("[a, b", error));
-    EXPECT_FALSE(io::parseFlowList("{a: 1}", error));
 }
 
 TEST(TemplateRegistry, AMissingIconFallsBackWithAWarningAtItsLine)
@@ -150,7 +137,7 @@ TEST(TemplateRegistry, AMissingIconFallsBackWithAWarningAtItsLine)
     std::ofstream(folder + "/extra/odd/template.yml") << "name: odd\nui:\n  icon: no_such_icon\n";
     TemplateRegistry registry;
     const std::string icons = std::string(RIGSMITH_SOURCE_DIR) + "/resources/icons";
-    const Diagnostics d = registry.scan({folder}, icons);
+    const Diagnostics d = io::scanTemplates(registry, {folder}, icons);
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
     EXPECT_EQ(d[0].format(), folder + "/extra/odd/template.yml:3:9: warning: icon 'no_such_icon' not found in " + icons +
                                  " (the default icon is used)");

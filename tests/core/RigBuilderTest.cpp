@@ -3,7 +3,7 @@
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
 #include "model/Skeleton.h"
-#include "templates/ManifestReader.h"
+#include "io/ManifestReader.h"
 
 #include <gtest/gtest.h>
 
@@ -103,7 +103,7 @@ TEST(RigBuilder, SkipsAnUnknownTemplateAndAttachesItsChildrenAbove)
 
 TEST(RigBuilder, FallsBackToTheJointChainBuilderForDataOnlyManifests)
 {
-    auto manifest = templates::readManifestText("name: tail\nstructure:\n  chain: /*\n", "tail.yml", "rig", "tail");
+    auto manifest = io::readManifestText("name: tail\nstructure:\n  chain: /*\n", "tail.yml", "rig", "tail");
     ASSERT_TRUE(manifest.ok());
     Diagnostics d;
     const auto& registry = rigging::BuilderRegistry::builtin();

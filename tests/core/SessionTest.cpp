@@ -319,3 +319,24 @@ TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
         expectLiveRigIsAFullBuild(s, label + "redo all");
     }
 }
+
+TEST(Session, MirroredGuideJointsAreTheAuthoredBranchReflected)
+{
+    // What the viewport draws for the `.R` copies: the authored arm's joints
+    // reflected across x, owned by the authored instance.
+    session::Session s(templatesForSession());
+    s.replaceDocument(test::loadSample("biped"));
+    const model::TemplateInstance& arm = *s.document().instanceNamed("arm");
+    const std::vector<session::MirroredGuideJoint> mirrored = s.mirroredGuideJoints();
+    std::vector<Vec3> armCopy;
+    for (const auto& j : mirrored)
+        if (j.owner == arm.id)
+            armCopy.push_back(j.position);
+    ASSERT_EQ(armCopy.size(), arm.joints.size());
+    for (std::size_t i = 0; i < arm.joints.size(); ++i) {
+        const Vec3 authored = translationOf(s.document().jointWorldMatrix(arm.joints[i].id));
+        EXPECT_NEAR(glm::distance(armCopy[i], Vec3(-authored.x, authored.y, authored.z)), 0.0, 1e-9) << i;
+    }
+    for (const auto& j : mirrored)
+        EXPECT_NE(s.document().instance(j.owner), nullptr) << "owned by an authored instance";
+}

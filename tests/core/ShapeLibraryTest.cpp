@@ -2,6 +2,7 @@
 #include "templates/Color.h"
 #include "templates/ShapeIcon.h"
 #include "templates/ShapeLibrary.h"
+#include "io/ShapeFile.h"
 
 #include <gtest/gtest.h>
 
@@ -52,7 +53,7 @@ TEST(ShapeLibrary, ReportsBadShapeFilesWithPositions)
     const std::string path = test::temporaryPath("bad.yml");
     std::ofstream(path) << "- degree: 5\n  points: [[0, 0, 0], [1, 0, 0]]\n- points: [[0, 0], [1, 0, 0]]\n  color: blurple\n";
     Diagnostics d;
-    EXPECT_FALSE(readShapeFile(path, d));
+    EXPECT_FALSE(io::readShapeFile(path, d));
     ASSERT_EQ(d.size(), 3u) << formatAll(d);
     EXPECT_EQ(d[0].format(), path + ":1:11: error: curve 0.degree must be 1, 2 or 3");
     EXPECT_EQ(d[1].format(), path + ":3:12: error: curve 1 point must be a list of 3 numbers, got a list of 2 items");

@@ -1,6 +1,7 @@
 // Shape placement at build: parent, point, aim/aim_axis/up_axis/do_aim, axis,
 // clone, reference and wildcard expansion, checked on built controller curves.
 #include "base/Paths.h"
+#include "io/TemplateFolders.h"
 #include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 
@@ -66,7 +67,7 @@ shapes:
     axis: z
   extra: {shape: cube, size: 0.25, reference: ctrls.3}
 )";
-        Diagnostics d = registry.scan({builtinTemplatesDirectory(), folder}, iconsDirectory());
+        Diagnostics d = io::scanTemplates(registry, {builtinTemplatesDirectory(), folder}, iconsDirectory());
         ASSERT_FALSE(hasErrors(d)) << formatAll(d);
     }
 
@@ -142,7 +143,7 @@ TEST_F(ShapeStage, ExpandsWildcardsPerIndexAndTurnsTheLibraryAxis)
 TEST_F(ShapeStage, ReportsAnUnresolvableShapeAddressAndKeepsTheController)
 {
     std::ofstream(folder + "/test/shaped/template.yml") << "base: core.joints\nshapes:\n  ctrls.0: {shape: circle, parent: nowhere}\n";
-    registry.scan({builtinTemplatesDirectory(), folder}, iconsDirectory());
+    io::scanTemplates(registry, {builtinTemplatesDirectory(), folder}, iconsDirectory());
     const auto rig = build();
     ASSERT_EQ(rig.diagnostics.size(), 1u) << formatAll(rig.diagnostics);
     EXPECT_EQ(rig.diagnostics[0].message, "instance 's' (test.shaped): shapes.ctrls.0.parent: unknown structure tag 'nowhere'");

@@ -1,4 +1,4 @@
-#include "templates/ManifestReader.h"
+#include "io/ManifestReader.h"
 #include "templates/Structure.h"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@ model::TemplateInstance limb()
 
 TemplateManifest manifest(const std::string& structure)
 {
-    auto r = readManifestText("structure:\n" + structure, "m.yml", "leg", "test");
+    auto r = io::readManifestText("structure:\n" + structure, "m.yml", "leg", "test");
     EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics());
     return r.take();
 }

@@ -7,7 +7,9 @@
 #include "core/TestSupport.h"
 #include "io/GuideFile.h"
 #include "templates/ManifestDump.h"
-#include "templates/ManifestReader.h"
+#include "io/ManifestReader.h"
+#include "io/ShapeFile.h"
+#include "templates/HookPoints.h"
 #include "templates/ShapeLibrary.h"
 #include "templates/Structure.h"
 
@@ -36,7 +38,7 @@ std::string caseName(const ::testing::TestParamInfo<std::string>& info) { return
 Result<templates::TemplateManifest> readCaseManifest(const std::string& suite, const std::string& name, const std::string& module)
 {
     const std::string text = test::readText(test::dataPath(suite + "/" + name + "/template.yml"));
-    return templates::readManifestText(text, name + "/template.yml", "test", module);
+    return io::readManifestText(text, name + "/template.yml", "test", module);
 }
 
 std::string diagnosticLines(const Diagnostics& diagnostics)
@@ -93,7 +95,7 @@ TEST_P(StructureGolden, ResolvesEveryTagAndHook)
                 out << (i ? ", " : "") << (*joints)[i];
             out << "]\n";
         }
-        for (const rigging::HookPoint& hook : rigging::hookPoints(*manifest, instance))
+        for (const templates::HookPoint& hook : templates::hookPoints(*manifest, instance))
             out << "  hook " << hook.label << ": " << hook.joint << '\n';
     }
     test::expectMatchesGolden(out.str(), "Structure/" + GetParam() + "/expected.txt");
@@ -109,7 +111,7 @@ TEST_P(MalformedCorpus, GivesTheExactMessageAndNeverCrashes)
     Diagnostics diagnostics;
     bool loaded = false;
     if (std::filesystem::exists(dir + "/shape.yml")) {
-        loaded = templates::readShapeText(test::readText(dir + "/shape.yml"), GetParam() + "/shape.yml", diagnostics).has_value();
+        loaded = io::readShapeText(test::readText(dir + "/shape.yml"), GetParam() + "/shape.yml", diagnostics).has_value();
     } else {
         auto manifest = readCaseManifest("Malformed", GetParam(), "case");
         loaded = manifest.ok();

@@ -1,6 +1,7 @@
 #include "core/TestSupport.h"
 
 #include "io/GuideFile.h"
+#include "io/TemplateFolders.h"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +28,7 @@ const templates::TemplateRegistry& builtinTemplates()
 {
     static const auto registry = [] {
         auto r = std::make_shared<templates::TemplateRegistry>();
-        const auto d = r->scan({std::string(RIGSMITH_SOURCE_DIR) + "/templates"}, std::string(RIGSMITH_SOURCE_DIR) + "/resources/icons");
+        const auto d = io::scanTemplates(*r, {std::string(RIGSMITH_SOURCE_DIR) + "/templates"}, std::string(RIGSMITH_SOURCE_DIR) + "/resources/icons");
         EXPECT_FALSE(hasErrors(d)) << formatAll(d);
         return r;
     }();

@@ -96,3 +96,18 @@ TEST(Picking, CvModeShowsTheSelectedControllersCvsAndPicksThemFirst)
     EXPECT_EQ(boxPickCvs(f.scene, f.camera, 800, 600, lo - 2.0, hi + 2.0).size(), count);
     EXPECT_TRUE(boxPickCvs(f.scene, f.camera, 800, 600, {0, 0}, {4, 4}).empty());
 }
+
+TEST(Scene, DrawsTheMirroredGuidesItIsGivenWithTheGuidesOnly)
+{
+    Fixture f;
+    EXPECT_TRUE(f.scene.mirrorJoints.empty()) << "none given, none drawn";
+    const std::vector<session::MirroredGuideJoint> mirrored =
+        session::mirroredGuideJoints(f.guide, test::builtinTemplates());
+    ASSERT_FALSE(mirrored.empty());
+    const Scene guides = makeScene(f.guide, &f.rig, {}, nullptr, mirrored);
+    ASSERT_EQ(guides.mirrorJoints.size(), mirrored.size());
+    EXPECT_EQ(guides.mirrorJoints[0].position, mirrored[0].position);
+    EXPECT_EQ(guides.mirrorJoints[0].owner, mirrored[0].owner);
+    const eval::EvalState pose; // Rig mode hides the guides, mirrored ones too
+    EXPECT_TRUE(makeScene(f.guide, &f.rig, {}, &pose, mirrored).mirrorJoints.empty());
+}

@@ -1,4 +1,4 @@
-#include "templates/ManifestReader.h"
+#include "io/ManifestReader.h"
 
 #include "io/YamlSupport.h"
 #include "templates/Condition.h"
@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <set>
 
-namespace rs::templates {
+namespace rs::io {
 
-using io::YamlReader;
+using namespace rs::templates;
 
 namespace {
 
@@ -491,4 +491,4 @@ Result<TemplateManifest> readManifest(const std::string& file, const std::string
     return readManifestText(*text, file, category, module);
 }
 
-} // namespace rs::templates
+} // namespace rs::io

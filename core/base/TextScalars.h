@@ -1,0 +1,25 @@
+#pragma once
+// The small text values of manifests and options, read without a YAML library so
+// every layer can use them: scalars as Mikan's YAML 1.1 types them (on/off,
+// yes/no, integers, numbers) and the flow lists of list options (`branches:
+// [L, R]`). io/ reads whole YAML files; these are the pieces below it.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs {
+
+// on/true/yes (also True, TRUE, On, Yes) and their opposites; nullopt otherwise.
+std::optional<bool> parseBool(const std::string& text);
+// Decimal, an optional leading '+' or '-', nothing else (no spaces, no 0x).
+std::optional<long long> parseInteger(const std::string& text);
+// As std::from_chars reads a double, with an optional leading '+'.
+std::optional<double> parseNumber(const std::string& text);
+
+// Items of a flow list given as text: "[L, R]", "['a', \"b\"]", "[]". A plain or
+// quoted scalar is one item; empty text (or ~, null) none. A trailing comma and
+// a "# comment" are allowed. Nested lists and maps, empty items, anchors,
+// aliases, tags and block-style YAML are refused: nullopt with `error` set.
+std::optional<std::vector<std::string>> parseFlowList(const std::string& text, std::string& error);
+
+} // namespace rs

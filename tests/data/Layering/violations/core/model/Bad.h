@@ -1,0 +1,3 @@
+#pragma once
+#include "base/Math.h"
+#include "rigging/RigBuilder.h"

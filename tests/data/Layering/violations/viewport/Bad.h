@@ -1,0 +1,4 @@
+#pragma once
+#include "Scene.h"
+#include "widgets/LogPanel.h"
+#include "model/Rig.h"

@@ -1,0 +1,3 @@
+#pragma once
+// allowed: a viewport header and the session
+#include "session/Session.h"

@@ -1,0 +1,4 @@
+#include "OutlinerView.h"
+#include <yaml-cpp/yaml.h>
+#include "ViewportWidget.h"
+#include "rigging/BranchStage.h"
