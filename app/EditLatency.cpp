@@ -84,9 +84,10 @@ int reportEditLatency(MainWindow& window, int drags)
         idle.push_back(timeToFrame(view, [] {}));
     std::vector<double> moves, commits;
     const int steps = 4; // mouse moves per drag
+    moves.reserve(std::size_t(drags * steps));
+    commits.reserve(std::size_t(drags));
     for (int d = 0; d < drags; ++d) {
         const Mat4 start = window.session().document().jointWorldMatrix(joint);
-        commits.reserve(std::size_t(drags));
         emit view->gizmoDragStarted(joint);
         for (int s = 1; s <= steps; ++s) {
             Mat4 world = start;

@@ -13,9 +13,13 @@ std::optional<bool> parseBool(const std::string& t)
     return std::nullopt;
 }
 
-std::optional<long long> parseInteger(const std::string& t)
+namespace {
+
+// The whole text as a number of type T (an optional leading '+'), else nullopt.
+template <class T>
+std::optional<T> parseWhole(const std::string& t)
 {
-    long long value = 0;
+    T value{};
     const char* begin = t.data();
     const char* end = t.data() + t.size();
     if (begin != end && *begin == '+')
@@ -26,18 +30,11 @@ std::optional<long long> parseInteger(const std::string& t)
     return value;
 }
 
-std::optional<double> parseNumber(const std::string& t)
-{
-    double value = 0;
-    const char* begin = t.data();
-    const char* end = t.data() + t.size();
-    if (begin != end && *begin == '+')
-        ++begin;
-    auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end || begin == end)
-        return std::nullopt;
-    return value;
-}
+} // namespace
+
+std::optional<long long> parseInteger(const std::string& t) { return parseWhole<long long>(t); }
+
+std::optional<double> parseNumber(const std::string& t) { return parseWhole<double>(t); }
 
 namespace {
 
