@@ -42,3 +42,48 @@ const char* constraintKindName(ConstraintKind kind)
 }
 
 } // namespace rs::model
+
+namespace rs::model {
+
+void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNodeIndex&)>& visit)
+{
+    for (RigNodeIndex& index : constraint.driven)
+        visit(index);
+    for (RigNodeIndex& index : constraint.targets)
+        visit(index);
+    auto ref = [&](AttributeRef& attribute) { visit(attribute.node); };
+    auto optionalRef = [&](std::optional<AttributeRef>& attribute) {
+        if (attribute)
+            visit(attribute->node);
+    };
+    std::visit(
+        [&](auto& settings) {
+            using T = std::decay_t<decltype(settings)>;
+            if constexpr (std::is_same_v<T, BlendConstraint>) {
+                ref(settings.weight);
+            } else if constexpr (std::is_same_v<T, IkConstraint>) {
+                optionalRef(settings.stretch);
+                optionalRef(settings.soft);
+            } else if constexpr (std::is_same_v<T, SplineConstraint>) {
+                optionalRef(settings.stretch);
+            } else if constexpr (std::is_same_v<T, SpaceConstraint>) {
+                ref(settings.choice);
+            } else if constexpr (std::is_same_v<T, DriveConstraint>) {
+                ref(settings.value);
+                std::visit(
+                    [&](auto& response) {
+                        if constexpr (!std::is_same_v<std::decay_t<decltype(response)>, DriveClamped>)
+                            ref(response.breakAngle);
+                    },
+                    settings.response);
+            } else {
+                // Parent, orient, point, scale, twist and aim read no attribute.
+                static_assert(std::is_same_v<T, ParentConstraint> || std::is_same_v<T, OrientConstraint> ||
+                              std::is_same_v<T, PointConstraint> || std::is_same_v<T, ScaleConstraint> ||
+                              std::is_same_v<T, TwistConstraint> || std::is_same_v<T, AimConstraint>);
+            }
+        },
+        constraint.settings);
+}
+
+} // namespace rs::model

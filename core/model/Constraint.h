@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -210,5 +211,10 @@ struct RigConstraint {
 
     ConstraintKind kind() const { return static_cast<ConstraintKind>(settings.index()); }
 };
+
+// Calls `visit` on every node index a constraint holds: driven, targets and
+// the node of every attribute its settings read (a rig copied or spliced
+// renumbers its nodes through this, so no kind's reference is missed).
+void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNodeIndex&)>& visit);
 
 } // namespace rs::model

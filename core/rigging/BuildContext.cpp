@@ -1,5 +1,6 @@
 #include "rigging/BuildContext.h"
 
+#include "rigging/Fragment.h"
 #include "rigging/RigAssembly.h"
 #include "base/TextScalars.h"
 #include "templates/Structure.h"
@@ -15,7 +16,18 @@ BuildContext::BuildContext(RigAssembly& assembly, const templates::TemplateManif
 {
 }
 
-const model::GuideDocument& BuildContext::guide() const { return m_assembly.guide; }
+const model::GuideDocument& BuildContext::guide() const
+{
+    if (m_record) // it may read anything: generated every time
+        m_record->replayable = false;
+    return m_assembly.guide;
+}
+
+void BuildContext::touch(model::RigNodeIndex index)
+{
+    if (m_record && index < m_firstNode)
+        m_record->replayable = false;
+}
 
 const Value& BuildContext::option(const std::string& name) const
 {
@@ -80,7 +92,10 @@ std::optional<std::vector<model::JointId>> BuildContext::structure(const std::st
 
 Mat4 BuildContext::guideWorldMatrix(model::JointId joint) const
 {
-    return m_assembly.guideWorldMatrix(m_assembly.authoredJoint(joint));
+    const Mat4 world = m_assembly.guideWorldMatrix(m_assembly.authoredJoint(joint));
+    if (m_record)
+        m_record->guideReads.emplace_back(joint, world);
+    return world;
 }
 
 std::vector<model::JointId> BuildContext::taggedJoints(const std::string& tag) const
@@ -94,7 +109,13 @@ std::vector<model::JointId> BuildContext::taggedJoints(const std::string& tag) c
 
 bool BuildContext::mirrored() const { return m_assembly.copyOf(m_instance.id).mirror != Mat4(1.0); }
 
-const model::RigNode& BuildContext::node(model::RigNodeIndex index) const { return m_assembly.rig.nodes.at(index); }
+const model::RigNode& BuildContext::node(model::RigNodeIndex index) const
+{
+    const model::RigNode& node = m_assembly.rig.nodes.at(index);
+    if (m_record && index < m_firstNode)
+        m_record->nodeReads.push_back({node, node.parent == model::kNoNode ? NodeKey{} : m_assembly.rig.nodes[node.parent].key});
+    return node;
+}
 
 Mat4 BuildContext::nodeWorld(model::RigNodeIndex index) const
 {
@@ -107,11 +128,16 @@ std::optional<model::RigNodeIndex> BuildContext::findNode(const std::string& tag
     return m_assembly.rig.find(m_assembly.keyOf(m_instance, tag));
 }
 
-void BuildContext::setHidden(model::RigNodeIndex index) { m_assembly.rig.nodes.at(index).hidden = true; }
+void BuildContext::setHidden(model::RigNodeIndex index)
+{
+    touch(index);
+    m_assembly.rig.nodes.at(index).hidden = true;
+}
 
 model::AttributeRef BuildContext::addAttribute(model::RigNodeIndex index, const std::string& name, double value, double min,
                                               double max)
 {
+    touch(index);
     auto& node = m_assembly.rig.nodes.at(index);
     node.attributes.push_back({name, std::clamp(value, min, max), min, max, {}});
     return {index, name};
@@ -128,6 +154,7 @@ model::AttributeRef BuildContext::addEnumAttribute(model::RigNodeIndex index, co
 
 model::ChannelSettings& BuildContext::channels(model::RigNodeIndex index)
 {
+    touch(index);
     return m_assembly.rig.nodes.at(index).channels;
 }
 
@@ -167,7 +194,11 @@ void BuildContext::defineSpace(const std::string& name, model::RigNodeIndex inde
 model::RigNodeIndex BuildContext::space(const std::string& name) const
 {
     auto it = m_assembly.spaces.find(name);
-    return it == m_assembly.spaces.end() ? model::kNoNode : it->second;
+    const model::RigNodeIndex node = it == m_assembly.spaces.end() ? model::kNoNode : it->second;
+    if (m_record)
+        m_record->spaceReads.emplace_back(name, node == model::kNoNode ? std::nullopt
+                                                                       : std::optional<NodeKey>(m_assembly.rig.nodes.at(node).key));
+    return node;
 }
 
 std::string BuildContext::nodeName(model::NameRole role, const std::string& token, std::optional<int> index) const

@@ -17,7 +17,8 @@
 
 namespace rs::rigging {
 
-class RigAssembly;
+struct RigAssembly;
+struct Fragment;
 
 class BuildContext {
 public:
@@ -90,7 +91,20 @@ public:
     void warning(const std::string& message, const std::string& option = {}) const;
     bool failed() const { return m_failed; }
 
+    // Live rebuilds (BuildCache.h): records into `fragment` what the builder
+    // reads beyond its own instance (guide matrices, nodes made before
+    // `firstNode`, named spaces), and marks it unreplayable if it changes a
+    // node made before `firstNode`.
+    void recordInto(Fragment* fragment, model::RigNodeIndex firstNode)
+    {
+        m_record = fragment;
+        m_firstNode = firstNode;
+    }
+
 private:
+    // A node made before this instance is about to be changed.
+    void touch(model::RigNodeIndex index);
+
     void report(Severity severity, const std::string& message, const std::string& option) const;
 
     RigAssembly& m_assembly;
@@ -99,6 +113,8 @@ private:
     std::map<std::string, Value> m_options;
     model::RigNodeIndex m_hookNode = model::kNoNode;
     mutable bool m_failed = false;
+    Fragment* m_record = nullptr;
+    model::RigNodeIndex m_firstNode = 0;
 };
 
 } // namespace rs::rigging

@@ -106,8 +106,8 @@ public:
     const char* name() const override { return "evaluation check"; }
     void finalize(RigAssembly& a) const override
     {
-        const auto program = eval::RigProgram::compile(a.rig);
-        for (const Diagnostic& d : program.diagnostics())
+        a.program = eval::RigProgram::compile(a.rig);
+        for (const Diagnostic& d : a.program->diagnostics())
             a.report(d.severity, nullptr, d.message);
     }
 };

@@ -2,6 +2,7 @@
 // Internal to rs::rigging: the rig under construction plus the lookup tables the
 // stages share (physical hooks per guide joint, virtual hooks per domain).
 #include "rigging/BranchStage.h"
+#include "eval/RigProgram.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
@@ -46,6 +47,9 @@ struct RigAssembly {
         std::string error;
     };
     std::unordered_map<std::string, Resolved> structureCache;
+    // The finished rig compiled by the evaluation check (a session takes it
+    // through its BuildCache instead of compiling the rig a second time).
+    std::optional<Result<eval::RigProgram>> program;
     const Resolved& structureTag(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
                                  const std::string& tag)
     {

@@ -1,5 +1,6 @@
 #include "rigging/RigBuilder.h"
 
+#include "rigging/Fragment.h"
 #include "rigging/RigAssembly.h"
 #include "templates/Structure.h"
 
@@ -263,6 +264,15 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress)
 {
+    return buildRig(guide, templates, builders, progress, nullptr);
+}
+
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* buildCache)
+{
+    BuildCache::Impl* cache = buildCache ? &buildCache->impl() : nullptr;
+    if (cache)
+        cache->begin(templates, builders, guide.naming);
     auto report = [&](double fraction, const std::string& stage) { if (progress) progress(fraction, stage); };
     report(0.0, "gather");
     Diagnostics branchDiagnostics;
@@ -304,28 +314,59 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     }
 
     // Stage 2: generate, root to leaf. A failing instance is rolled back whole.
+    // With a cache, a copy whose inputs are unchanged is replayed instead.
     std::vector<std::pair<InstanceRecord, const TemplateBuilder*>> built;
+    std::set<CopyKey> generatedCopies;
     for (std::size_t step = 0; step < plan.size(); ++step) {
         auto& [record, builder] = plan[step];
         report(0.1 + 0.6 * double(step) / double(plan.size()), "generate " + record.instance->name);
+        const RigNodeIndex hook = record.instance->parentJoint != model::kNoId ? a.physicalHookFor(record.instance->parentJoint) : 0;
+        const CopyKey copyKey = a.copyOf(record.instance->id).key();
+        Fragment* cached = nullptr;
+        if (cache) {
+            generatedCopies.insert(copyKey);
+            if (auto it = cache->fragments.find(copyKey); it != cache->fragments.end())
+                cached = &it->second;
+        }
+        if (cached && matches(*cached, a, record, builder, hook) && replay(*cached, a)) {
+            ++cache->stats.replayed;
+            if (cached->failed)
+                continue;
+            record.built = true;
+            a.records.push_back(record);
+            built.emplace_back(record, builder);
+            continue;
+        }
         BuildContext ctx(a, *record.manifest, *record.instance, record.options);
-        ctx.setHookNode(record.instance->parentJoint != model::kNoId ? a.physicalHookFor(record.instance->parentJoint) : 0);
-        const std::size_t nodesBefore = a.rig.nodes.size();
-        const std::size_t constraintsBefore = a.rig.constraints.size();
+        ctx.setHookNode(hook);
+        const AssemblySizes before{a.rig.nodes.size(), a.rig.constraints.size(), a.rig.diagnostics.size()};
         const auto spacesBefore = a.spaces;
+        Fragment fresh;
+        if (cache) {
+            captureInputs(fresh, a, record, builder, hook);
+            ctx.recordInto(&fresh, static_cast<RigNodeIndex>(before.nodes));
+        }
         builder->generate(ctx);
-        if (ctx.failed()) {
-            a.rig.truncate(nodesBefore);
-            a.rig.constraints.resize(constraintsBefore);
+        const bool failed = ctx.failed();
+        if (failed) {
+            a.rig.truncate(before.nodes);
+            a.rig.constraints.resize(before.constraints);
             for (const auto& joint : record.instance->joints) // setHook only takes the instance's own joints
                 a.hooks.erase(joint.id);
             a.spaces = spacesBefore;
-            continue;
+        } else {
+            record.built = true;
+            a.records.push_back(record);
+            built.emplace_back(record, builder);
         }
-        record.built = true;
-        a.records.push_back(record);
-        built.emplace_back(record, builder);
+        if (cache) {
+            captureOutputs(fresh, a, before, spacesBefore, failed);
+            cache->fragments[copyKey] = std::move(fresh);
+            ++cache->stats.generated;
+        }
     }
+    if (cache) // copies that are gone (an instance removed, a branch dropped)
+        std::erase_if(cache->fragments, [&](const auto& entry) { return !generatedCopies.count(entry.first); });
 
     // Stage 3: configure, root to leaf, now that every node exists.
     report(0.7, "configure");
@@ -348,6 +389,8 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     for (const auto& plugin : builtinPlugins())
         plugin->finalize(a);
     reportOrphanRecords(guide, a.rig);
+    if (cache)
+        cache->program = std::move(a.program);
     report(1.0, "done");
     return std::move(a.rig);
 }

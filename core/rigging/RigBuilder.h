@@ -5,6 +5,7 @@
 // controller shapes; build the virtual hierarchy per domain; check names.
 // Deterministic: the same guide gives the same rig, node for node.
 #include "base/Result.h"
+#include "rigging/BuildCache.h"
 #include "rigging/TemplateBuilder.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
@@ -24,6 +25,11 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 using BuildProgress = std::function<void(double fraction, const std::string& stage)>;
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress);
+// The same, replaying from `cache` every instance copy whose inputs did not
+// change since the cache's last build, and keeping what this build generates
+// for the next (BuildCache.h). The rig is the same as without a cache.
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* cache);
 
 // Defaults of `guides` and `opts` with the instance's overrides, coerced to the
 // manifest types (an int given for a float is accepted). Mismatches are reported

@@ -1,6 +1,7 @@
 #include "session/Session.h"
 
 #include "edit/GuideEdits.h"
+#include "rigging/BuildCache.h"
 #include "rigging/RigBuilder.h"
 
 #include <algorithm>
@@ -9,7 +10,8 @@
 
 namespace rs::session {
 
-Session::Session(std::shared_ptr<const templates::TemplateRegistry> templates) : m_templates(std::move(templates))
+Session::Session(std::shared_ptr<const templates::TemplateRegistry> templates)
+    : m_templates(std::move(templates)), m_buildCache(std::make_unique<rigging::BuildCache>())
 {
     m_history.addListener([this](const Change& change) { onHistoryChange(change); });
 }
@@ -87,6 +89,7 @@ void Session::replaceDocument(model::GuideDocument document)
     m_dragStart.reset();
     m_selection = {};
     m_rig.reset();
+    m_buildCache->clear();
     m_rigStale = false;
     compileRig();
     m_mode = Mode::Guide;
@@ -133,10 +136,13 @@ void Session::rebuild(bool reportDiagnostics, bool explicitBuild)
         for (const auto& cv : m_selection.cvs)
             if (cv.node < m_rig->nodes.size()) selectedCvs.emplace_back(m_rig->nodes[cv.node].key, cv);
     }
+    if (explicitBuild) // the rigger asked for a build: everything is generated again
+        m_buildCache->clear();
     m_rig = rigging::buildRig(m_document, *m_templates, rigging::BuilderRegistry::builtin(),
-                              explicitBuild ? m_progress : rigging::BuildProgress{}); // live rebuilds show no progress
+                              explicitBuild ? m_progress : rigging::BuildProgress{}, // live rebuilds show no progress
+                              m_buildCache.get());
     m_rigStale = false;
-    compileRig();
+    compileRig(m_buildCache->takeProgram());
     restoreSelection(selected, selectedCvs);
     m_lastBuildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // A live rebuild reports only messages that changed (an edit that fixes or
@@ -146,6 +152,12 @@ void Session::rebuild(bool reportDiagnostics, bool explicitBuild)
         report(m_rig->diagnostics);
     if (reportDiagnostics)
         m_reportedBuild = text;
+}
+
+Session::BuildReuse Session::lastBuildReuse() const
+{
+    const auto& stats = m_buildCache->lastBuild();
+    return {stats.replayed, stats.generated};
 }
 
 void Session::restoreSelection(const std::vector<NodeKey>& nodes, const std::vector<std::pair<NodeKey, model::CurveCv>>& cvs)
@@ -166,13 +178,13 @@ void Session::restoreSelection(const std::vector<NodeKey>& nodes, const std::vec
         }
 }
 
-void Session::compileRig()
+void Session::compileRig(std::optional<Result<eval::RigProgram>> program)
 {
     m_posing.reset();
     m_program.reset();
     if (!m_rig)
         return;
-    auto compiled = eval::RigProgram::compile(*m_rig);
+    auto compiled = program ? std::move(*program) : eval::RigProgram::compile(*m_rig);
     if (!compiled) {
         report(compiled.diagnostics());
         m_mode = Mode::Guide;

@@ -30,6 +30,10 @@
 #include <string>
 #include <vector>
 
+namespace rs::rigging {
+class BuildCache;
+}
+
 namespace rs::session {
 
 using edit::Change;
@@ -97,6 +101,13 @@ public:
     bool isLiveRebuild() const { return m_liveRebuild; }
     void setLiveRebuild(bool on);
     double lastBuildMilliseconds() const { return m_lastBuildMs; }
+    // How the last build used what the one before it generated: instance
+    // copies replayed unchanged, and generated (an explicit build generates all).
+    struct BuildReuse {
+        std::size_t replayed = 0;
+        std::size_t generated = 0;
+    };
+    BuildReuse lastBuildReuse() const;
 
     const eval::RigProgram* program() const { return m_program.get(); }
     const eval::Pose& pose() const { return m_pose; }
@@ -170,7 +181,8 @@ private:
     void replacePreview(const std::function<void()>& apply);
     const templates::TemplateManifest* manifestOf(model::InstanceId id) const;
     void rebuild(bool reportDiagnostics, bool explicitBuild = false);
-    void compileRig();
+    // Compiles the rig (or takes the program its build compiled) and poses it.
+    void compileRig(std::optional<Result<eval::RigProgram>> compiled = std::nullopt);
     void poseFromDocument();
     void previewPose(eval::Pose pose);
     Error commitPose(const eval::Pose& pose, const std::string& what);
@@ -187,6 +199,7 @@ private:
     Reporter m_reporter;
     BuildProgress m_progress;
 
+    std::unique_ptr<rigging::BuildCache> m_buildCache; // live rebuilds generate only the instances an edit touched
     std::optional<model::Rig> m_rig;
     bool m_rigStale = false;
     bool m_liveRebuild = true;

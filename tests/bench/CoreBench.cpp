@@ -133,6 +133,8 @@ void BM_SessionGuideJointDragToEvaluatedRig(benchmark::State& state)
         s.dragGuideTo(world);
         benchmark::DoNotOptimize(s.evaluation()->world.data());
     }
+    state.counters["copies_replayed"] = double(s.lastBuildReuse().replayed);
+    state.counters["copies_generated"] = double(s.lastBuildReuse().generated);
     s.endGuideDrag("bench");
 }
 BENCHMARK(BM_SessionGuideJointDragToEvaluatedRig)->Unit(benchmark::kMicrosecond);
@@ -150,6 +152,8 @@ void BM_SessionOptionChangeToEvaluatedRig(benchmark::State& state)
         s.setOption(spine, "stretch", Value(stretch));
         benchmark::DoNotOptimize(s.evaluation()->world.data());
     }
+    state.counters["copies_replayed"] = double(s.lastBuildReuse().replayed);
+    state.counters["copies_generated"] = double(s.lastBuildReuse().generated);
 }
 BENCHMARK(BM_SessionOptionChangeToEvaluatedRig)->Unit(benchmark::kMicrosecond);
 
