@@ -59,7 +59,11 @@ const RigAssembly::Resolved& RigAssembly::resolveStructure(const templates::Temp
     if (it == structureCache.end()) {
         Resolved r;
         const templates::StructureResolver resolver(manifest, instance);
-        r.joints = isTag ? resolver.tag(text, &r.error) : resolver.address(text, &r.error);
+        auto joints = isTag ? resolver.tag(text) : resolver.address(text);
+        if (joints)
+            r.joints = joints.take();
+        else
+            r.error = firstError(joints.diagnostics());
         it = structureCache.emplace(std::move(key), std::move(r)).first;
     }
     return it->second;
