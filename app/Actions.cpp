@@ -173,8 +173,7 @@ void MainWindow::createPoseActions()
         QAction* a = makeAction(this, name, text, shortcut);
         const PoseTool t = tool;
         connect(a, &QAction::triggered, this, [this, t] {
-            if (const auto error = m_session.applyPoseTool(t))
-                m_log->addMessage(QString::fromStdString(*error), Severity::Warning);
+            logStatus(m_session.applyPoseTool(t));
         });
         pose->addAction(a);
         if (t == PoseTool::ResetAll || t == PoseTool::Flip)

@@ -16,7 +16,7 @@ void MainWindow::connectOptions()
     connect(m_historyView, &widgets::HistoryView::jumpRequested, this,
             [this](int index) { m_session.history().jumpTo(std::size_t(index)); });
     connect(m_library, &widgets::TemplateLibrary::templateActivated, this, [this](const QString& id) {
-        logError(m_session.addTemplate(id.toStdString(), m_session.selection().joint));
+        logStatus(m_session.addTemplate(id.toStdString(), m_session.selection().joint));
     });
     m_historyView->refresh(m_session.history());
     m_library->refresh(m_session.templates());
@@ -25,21 +25,20 @@ void MainWindow::connectOptions()
                 // The editor's own widget already shows the value: its page is
                 // not rebuilt under the cursor (a spinner keeps turning).
                 m_optionsEditing = true;
-                const auto error = m_session.setOption(id, name, value);
+                const Status set = m_session.setOption(id, name, value);
                 m_optionsEditing = false;
                 const model::TemplateInstance* instance = m_session.document().instance(id);
                 if (instance && !instance->options.count(name))
                     refreshOptions(); // back to the default (its reset button): the widget shows it
                 else if (instance)
                     m_options->showChanged(*instance);
-                if (error) {
-                    m_log->addMessage(QString::fromStdString(*error), Severity::Error);
+                logStatus(set);
+                if (set.failed())
                     refreshOptions(); // show the stored value again
-                }
             });
     connect(m_options, &widgets::OptionsEditor::nameEdited, this,
             [this](model::InstanceId id, const std::string& token, const QString& name) {
-                logError(m_session.setNameOverride(id, token, name.toStdString()));
+                logStatus(m_session.setNameOverride(id, token, name.toStdString()));
             });
 }
 

@@ -107,17 +107,20 @@ model::InstanceId EditorSession::instanceNamed(const QString& name) const
     return instance ? instance->id : model::kNoId;
 }
 
-bool EditorSession::loadReference(const QString& path, Diagnostics& diagnostics)
+Status EditorSession::loadReference(const QString& path)
 {
     if (path.isEmpty())
-        return !setReferenceModel({}); // the change clears the view
+        return setReferenceModel({}); // the change clears the view
     const std::string absolute = std::filesystem::absolute(path.toStdString()).lexically_normal().string();
+    Diagnostics diagnostics;
     auto triangles = readReference(absolute, diagnostics);
     if (!triangles)
-        return false; // the shown model and the document stay
+        return Status::failure(std::move(diagnostics)); // the shown model and the document stay
     m_reference = std::make_shared<const std::vector<glm::vec3>>(std::move(*triangles));
     m_referencePath = absolute;
-    return !setReferenceModel(absolute);
+    if (Status set = setReferenceModel(absolute); set.failed())
+        return set;
+    return Status::success(std::move(diagnostics));
 }
 
 void EditorSession::syncReference()

@@ -58,8 +58,9 @@ public:
 
     // A reference model (FBX, OBJ, glTF...) shown see-through for placing
     // guides; empty path clears it. The guide keeps its path (one undo step).
-    // A file that fails to load is reported and changes nothing.
-    bool loadReference(const QString& path, Diagnostics& diagnostics);
+    // A file that fails to load fails (with the reader's diagnostics) and
+    // changes nothing; a success carries the reader's warnings.
+    Status loadReference(const QString& path);
     // Shared with the viewport's scene (uploaded to the GPU once per model); null without one.
     const std::shared_ptr<const std::vector<glm::vec3>>& referenceTriangles() const { return m_reference; }
 

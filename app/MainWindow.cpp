@@ -116,30 +116,30 @@ void MainWindow::connectDocument()
     connect(m_outliner, &widgets::OutlinerView::instanceSelected, this,
             [this](quint32 id) { m_session.select(Selection::ofInstance(id)); });
     connect(m_outliner, &widgets::OutlinerView::addTemplateRequested, this, [this](const QString& id, quint32 joint) {
-        logError(m_session.addTemplate(id.toStdString(), joint));
+        logStatus(m_session.addTemplate(id.toStdString(), joint));
     });
     connect(m_outliner, &widgets::OutlinerView::removeRequested, this, [this](const QList<quint32>& ids) {
-        logError(m_session.removeInstances({ids.begin(), ids.end()}));
+        logStatus(m_session.removeInstances({ids.begin(), ids.end()}));
     });
     connect(m_outliner, &widgets::OutlinerView::renameRequested, this, [this](quint32 id, const QString& name) {
-        if (const auto error = m_session.renameInstance(id, name.toStdString())) {
-            m_log->addMessage(QString::fromStdString(*error), Severity::Error);
+        if (const Status renamed = m_session.renameInstance(id, name.toStdString()); renamed.failed()) {
+            logStatus(renamed);
             refreshViews(); // put the old name back in the tree
         }
     });
     connect(m_outliner, &widgets::OutlinerView::branchesRequested, this, [this](quint32 id, const QString& branches) {
-        logError(m_session.setOption(id, "branches", Value(branches.toStdString())));
+        logStatus(m_session.setOption(id, "branches", Value(branches.toStdString())));
     });
     connect(m_outliner, &widgets::OutlinerView::duplicateRequested, this, [this](const QList<quint32>& ids) {
-        logError(m_session.duplicateInstances(std::vector<model::InstanceId>(ids.begin(), ids.end())));
+        logStatus(m_session.duplicateInstances(std::vector<model::InstanceId>(ids.begin(), ids.end())));
     });
     connect(m_outliner, &widgets::OutlinerView::reparentRequested, this, [this](quint32 id, quint32 joint) {
-        logError(m_session.reparentInstance(id, joint));
+        logStatus(m_session.reparentInstance(id, joint));
     });
     connect(m_outliner, &widgets::OutlinerView::hookSelected, this,
             [this](quint32 id, quint32 joint) { m_session.select(Selection::ofInstance(id, joint)); });
     connect(m_outliner, &widgets::OutlinerView::resetOptionsRequested, this, [this](quint32 id) {
-        logError(m_session.resetOptions(id));
+        logStatus(m_session.resetOptions(id));
     });
     connect(m_log, &widgets::LogPanel::subjectActivated, this,
             [this](const rs::Subject& subject) { m_session.selectSubject(subject); });
@@ -160,16 +160,9 @@ void MainWindow::setAutosaveEnabled(bool on)
         on ? timer->start(kAutosaveMilliseconds) : timer->stop();
 }
 
-void MainWindow::logError(const QString& error)
+void MainWindow::logStatus(const Status& status)
 {
-    if (!error.isEmpty())
-        m_log->addMessage(error, Severity::Error);
-}
-
-void MainWindow::logError(const session::Error& error)
-{
-    if (error)
-        m_log->addMessage(QString::fromStdString(*error), Severity::Error);
+    m_log->addDiagnostics(status.diagnostics());
 }
 
 void MainWindow::refreshViews()

@@ -77,8 +77,9 @@ private:
     void updateUndoActions();
     void updateTitle();
     void report(const QString& what, const Diagnostics& diagnostics);
-    void logError(const QString& error); // an edit's refusal message, when there is one
-    void logError(const session::Error& error);
+    // An edit's outcome: its diagnostics (a refusal's error, naming the instance,
+    // joint or node it is about, so its log line selects it) go to the log.
+    void logStatus(const Status& status);
     // Unsaved changes: asks Save / Discard / Cancel; true when the document may be replaced.
     bool maySwitchDocument(const QString& question);
 

@@ -62,7 +62,8 @@ void MainWindow::createViewActions()
         std::vector<model::InstanceId> ids = m_outliner->topSelectedInstances();
         if (ids.empty() && m_session.selection().instance != model::kNoId)
             ids.push_back(m_session.selection().instance);
-        logError(ids.empty() ? session::Error(tr("select the templates to duplicate").toStdString()) : m_session.duplicateInstances(ids));
+        logStatus(ids.empty() ? Status::refused(tr("select the templates to duplicate").toStdString())
+                             : m_session.duplicateInstances(ids));
     });
     QAction* reference = makeAction(this, "importReference", tr("Import &Reference Model..."), {});
     reference->setToolTip(tr("Show a model (FBX, OBJ, glTF...) see-through to place guides on"));
@@ -84,13 +85,14 @@ void MainWindow::createViewActions()
 
 bool MainWindow::loadReference(const QString& path)
 {
-    Diagnostics diagnostics;
-    const bool ok = m_session.loadReference(path, diagnostics);
+    const Status loaded = m_session.loadReference(path);
     if (!path.isEmpty())
-        report(ok ? tr("Reference model %1: %2 triangles").arg(path).arg(m_session.referenceTriangles() ? m_session.referenceTriangles()->size() / 3 : 0)
-                  : tr("Could not load the reference model %1").arg(path),
-               diagnostics);
-    return ok;
+        report(loaded.ok() ? tr("Reference model %1: %2 triangles").arg(path).arg(m_session.referenceTriangles() ? m_session.referenceTriangles()->size() / 3 : 0)
+                           : tr("Could not load the reference model %1").arg(path),
+               loaded.diagnostics());
+    else
+        logStatus(loaded);
+    return loaded.ok();
 }
 
 } // namespace rs::app

@@ -58,18 +58,18 @@ void MainWindow::connectViewport()
     connect(m_viewport, &ViewportWidget::gizmoDragFinished, this, [this, guideMode, shapeMode, cvMode](quint32 target) {
         const QString verb = kDragVerbs[int(m_viewport->gizmoMode())];
         if (cvMode()) {
-            logError(m_session.endCvDrag(verb.toStdString()));
+            logStatus(m_session.endCvDrag(verb.toStdString()));
             return;
         }
         if (shapeMode()) {
-            logError(m_session.endShapeDrag());
+            logStatus(m_session.endShapeDrag());
             return;
         }
         if (guideMode()) {
             const model::TemplateInstance* owner = m_session.document().ownerOf(target);
             const QString name = owner ? QString::fromStdString(owner->name) : QString();
             const std::size_t count = std::max<std::size_t>(1, m_session.selection().joints.size());
-            logError(m_session.endGuideDrag((count > 1 ? tr("%1 %2 guide joints").arg(verb).arg(count)
+            logStatus(m_session.endGuideDrag((count > 1 ? tr("%1 %2 guide joints").arg(verb).arg(count)
                                                        : tr("%1 guide joint of %2").arg(verb, name)).toStdString()));
             return;
         }
@@ -88,7 +88,7 @@ void MainWindow::connectRigMode()
     connect(m_viewport, &viewport::ViewportWidget::pickwalkRequested, this,
             [this](int direction) { m_session.pickwalk(eval::WalkDirection(direction)); });
     connect(m_channelBox, &widgets::ChannelBox::channelEdited, this, [this](int channel, double value, bool match) {
-        logError(m_session.setChannel(channel, value, match));
+        logStatus(m_session.setChannel(channel, value, match));
     });
 }
 

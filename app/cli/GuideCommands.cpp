@@ -122,8 +122,11 @@ int runAdd(const std::vector<std::string>& args)
         instance->joints.front().local.translate = *at;
     model::GuideDocument document = std::move(*guide);
     edit::History history(document);
-    if (auto error = edit::addInstance(history, std::move(*instance))) {
-        std::cerr << path << ": " << *error << '\n';
+    if (Status added = edit::addInstance(history, std::move(*instance)); added.failed()) {
+        Diagnostics refusal = added.takeDiagnostics();
+        for (Diagnostic& d : refusal)
+            if (d.where.file.empty()) d.where.file = path; // "biped.yml: error: an instance named 'arm' already exists"
+        print(refusal);
         return 1;
     }
     const auto d = io::saveGuideFile(document, path);

@@ -48,6 +48,13 @@ bool hasErrors(const Diagnostics& diagnostics)
                        [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
+std::string firstError(const Diagnostics& diagnostics)
+{
+    const auto error = std::find_if(diagnostics.begin(), diagnostics.end(),
+                                    [](const Diagnostic& d) { return d.severity == Severity::Error; });
+    return error == diagnostics.end() ? std::string() : error->message;
+}
+
 std::string formatAll(const Diagnostics& diagnostics)
 {
     std::string text;

@@ -32,6 +32,9 @@ using Diagnostics = std::vector<Diagnostic>;
 Diagnostic makeError(SourceLocation where, std::string message);
 Diagnostic makeWarning(SourceLocation where, std::string message);
 bool hasErrors(const Diagnostics& diagnostics);
+// The message of the first error ("" when there is none): for a caller that
+// puts a parser's complaint into its own, located message.
+std::string firstError(const Diagnostics& diagnostics);
 std::string formatAll(const Diagnostics& diagnostics);
 const char* severityName(Severity severity);
 

@@ -17,6 +17,13 @@ public:
         : m_value(std::move(value)), m_diagnostics(std::move(warnings)) {}
     static Result failure(Diagnostics diagnostics) { return Result(std::move(diagnostics)); }
     static Result failure(Diagnostic diagnostic) { return Result(Diagnostics{std::move(diagnostic)}); }
+    // A refusal with no file position, about `subject` (or nothing), as Status::refused.
+    static Result refused(std::string message, Subject subject = {})
+    {
+        Diagnostic d = makeError({}, std::move(message));
+        d.subject = std::move(subject);
+        return failure(std::move(d));
+    }
 
     bool ok() const { return m_value.has_value(); }
     explicit operator bool() const { return ok(); }

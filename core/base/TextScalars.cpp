@@ -217,10 +217,13 @@ private:
 
 } // namespace
 
-std::optional<std::vector<std::string>> parseFlowList(const std::string& text, std::string& error)
+Result<std::vector<std::string>> parseFlowList(const std::string& text)
 {
-    error.clear();
-    return FlowReader(text, error).read();
+    std::string error;
+    auto items = FlowReader(text, error).read();
+    if (!items)
+        return Result<std::vector<std::string>>::refused(error);
+    return std::move(*items);
 }
 
 } // namespace rs

@@ -3,6 +3,8 @@
 // every layer can use them: scalars as Mikan's YAML 1.1 types them (on/off,
 // yes/no, integers, numbers) and the flow lists of list options (`branches:
 // [L, R]`). io/ reads whole YAML files; these are the pieces below it.
+#include "base/Result.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,7 +21,8 @@ std::optional<double> parseNumber(const std::string& text);
 // Items of a flow list given as text: "[L, R]", "['a', \"b\"]", "[]". A plain or
 // quoted scalar is one item; empty text (or ~, null) none. A trailing comma and
 // a "# comment" are allowed. Nested lists and maps, empty items, anchors,
-// aliases, tags and block-style YAML are refused: nullopt with `error` set.
-std::optional<std::vector<std::string>> parseFlowList(const std::string& text, std::string& error);
+// aliases, tags and block-style YAML are refused: a failure whose error (no
+// file position; the caller knows where the text came from) says why.
+Result<std::vector<std::string>> parseFlowList(const std::string& text);
 
 } // namespace rs

@@ -1,61 +1,62 @@
 #pragma once
 // The edits a rigger makes to a guide, each validated and then pushed as one
 // undoable command ("AddInstance", "RenameInstance"...). A refused edit returns
-// an error message and changes nothing.
+// a failed Status and changes nothing; its error names what it is about (the
+// instance for an instance edit, the guide joint for a joint edit, the shape
+// for a shape edit), so the log can select it. An edit that changes nothing
+// and is not refused succeeds without pushing a step.
+#include "base/Status.h"
 #include "edit/History.h"
 
-#include <optional>
 #include <string>
 
 namespace rs::edit {
 
-using Error = std::optional<std::string>; // nullopt on success
-
 // Adds a fully formed instance (ids and joints prepared by rs::rigging::makeInstance).
-Error addInstance(History& history, model::TemplateInstance instance);
+Status addInstance(History& history, model::TemplateInstance instance);
 // Removes the instance and everything hanging below it.
-Error removeInstance(History& history, model::InstanceId id);
+Status removeInstance(History& history, model::InstanceId id);
 // Removes several instances (each with everything below it) as one undo step.
-Error removeInstances(History& history, const std::vector<model::InstanceId>& ids);
-Error renameInstance(History& history, model::InstanceId id, const std::string& newName);
+Status removeInstances(History& history, const std::vector<model::InstanceId>& ids);
+Status renameInstance(History& history, model::InstanceId id, const std::string& newName);
 // Copies the instances (each with everything hanging below it) in place, with
 // new ids and free names ("arm" -> "arm1"), as one undo step. `copies` gets the
 // ids of the new top instances, in order.
-Error duplicateInstances(History& history, const std::vector<model::InstanceId>& ids,
-                         std::vector<model::InstanceId>* copies = nullptr);
+Status duplicateInstances(History& history, const std::vector<model::InstanceId>& ids,
+                          std::vector<model::InstanceId>* copies = nullptr);
 // Re-hangs an instance (and what hangs below it) under another joint (kNoId:
 // top level), keeping its guide where it is in the world. Refused under its own
 // subtree.
-Error reparentInstance(History& history, model::InstanceId id, model::JointId hookJoint);
-Error setJointTransform(History& history, model::JointId joint, const Transform& local);
+Status reparentInstance(History& history, model::InstanceId id, model::JointId hookJoint);
+Status setJointTransform(History& history, model::JointId joint, const Transform& local);
 // `value` equal to `defaultValue` removes the stored option (instances keep only
 // values that differ from the defaults).
-Error setOption(History& history, model::InstanceId id, const std::string& option, const Value& value,
-                const Value& defaultValue);
+Status setOption(History& history, model::InstanceId id, const std::string& option, const Value& value,
+                 const Value& defaultValue);
 
 // A per-instance name override of a manifest name token; an empty name (or the
 // template's default) removes the override. Names are letters, digits and _.
-Error setNameOverride(History& history, model::InstanceId id, const std::string& token, const std::string& name,
-                      const std::string& defaultName);
+Status setNameOverride(History& history, model::InstanceId id, const std::string& token, const std::string& name,
+                       const std::string& defaultName);
 
 // A controller shape's edit (`tag` as "ctrls.ik") in the controller's space;
 // the identity removes the edit. One undo step named `what` ("Edit shape <tag>" when empty).
-Error setShapeEdit(History& history, model::InstanceId id, const std::string& tag, const model::ShapeEdit& edit,
-                   const std::string& what = {});
+Status setShapeEdit(History& history, model::InstanceId id, const std::string& tag, const model::ShapeEdit& edit,
+                    const std::string& what = {});
 
 // Replaces an instance (same id) as one undo step named `what`: used when its
 // guide joints are regenerated. Refused when a child instance hangs under a
 // joint the new one no longer has, or a joint id belongs to another instance.
-Error replaceInstance(History& history, model::TemplateInstance instance, const std::string& what);
+Status replaceInstance(History& history, model::TemplateInstance instance, const std::string& what);
 
 // Replaces the document's test pose (one undo step per pose tool or gizmo drag);
 // `what` names the step ("Rotate c_arm1_L", "Mirror pose"). Refused when
 // nothing changes, so no empty step lands on the stack.
-Error setPose(History& history, model::PoseValues pose, const std::string& what);
+Status setPose(History& history, model::PoseValues pose, const std::string& what);
 
 // The reference model shown while placing guides (a file path; empty clears
 // it). One undo step; no step when it does not change. The file is not read here.
-Error setReferenceModel(History& history, const std::string& path);
+Status setReferenceModel(History& history, const std::string& path);
 
 bool isValidInstanceName(const std::string& name);
 

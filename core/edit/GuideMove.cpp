@@ -75,22 +75,22 @@ Transform localFor(const GuideDocument& document, JointId joint, const Mat4& wor
     return localTransformOf(glm::inverse(document.parentWorldMatrix(joint)) * world);
 }
 
-Error setJointTransforms(History& history, const std::vector<JointTransform>& transforms, const std::string& what)
+Status setJointTransforms(History& history, const std::vector<JointTransform>& transforms, const std::string& what)
 {
     const GuideDocument& d = history.document();
     std::vector<SetJointTransforms::JointChange> changes;
     for (const JointTransform& t : transforms) {
         const model::TemplateInstance* owner = d.ownerOf(t.joint);
         if (!owner)
-            return "no joint with id " + std::to_string(t.joint);
+            return Status::refused("no joint with id " + std::to_string(t.joint), Subject::ofJoint(model::kNoId, t.joint));
         const Transform before = owner->joint(t.joint)->local;
         if (!(before == t.local))
             changes.push_back({owner->id, t.joint, before, t.local});
     }
     if (changes.empty())
-        return "the joints did not move";
+        return Status::refused("the joints did not move");
     history.push(std::make_unique<SetJointTransforms>(std::move(changes), what));
-    return std::nullopt;
+    return {};
 }
 
 JointId mirrorJointOf(const GuideDocument& document, JointId joint)

@@ -28,8 +28,9 @@ Transform localTransformOf(const Mat4& local);
 Transform localFor(const model::GuideDocument& document, model::JointId joint, const Mat4& world);
 
 // Several joints' local transforms as one undo step named `what`; unchanged
-// joints are left out and nothing changes at all is refused.
-Error setJointTransforms(History& history, const std::vector<JointTransform>& transforms, const std::string& what);
+// joints are left out and nothing changes at all is refused. A joint not in
+// the document is refused, naming that guide joint.
+Status setJointTransforms(History& history, const std::vector<JointTransform>& transforms, const std::string& what);
 
 // The joint on the other side: the same place (index) in the instance whose
 // name swaps the side token (arm_L <-> arm_R). kNoId when there is none.

@@ -7,7 +7,7 @@ namespace rs::edit {
 
 namespace {
 
-Result<CvDrag> failure(const std::string& message) { return Result<CvDrag>::failure(makeError({}, message)); }
+Result<CvDrag> failure(const std::string& message, Subject subject = {}) { return Result<CvDrag>::refused(message, std::move(subject)); }
 
 // Offsets closer to zero than float noise are dropped so files keep clean values.
 Vec3 cleaned(Vec3 v)
@@ -30,15 +30,19 @@ Result<CvDrag> CvDrag::begin(const model::GuideDocument& document, const model::
     if (cvs.empty())
         return failure("no CVs selected");
     const model::RigNodeIndex index = cvs.front().node;
-    if (index >= rig.nodes.size() || rig.nodes[index].kind != model::RigNodeKind::Controller)
+    if (index >= rig.nodes.size())
         return failure("CVs can only be edited on a controller's shape");
     const model::RigNode& node = rig.nodes[index];
+    if (node.kind != model::RigNodeKind::Controller)
+        return failure("CVs can only be edited on a controller's shape", Subject::ofNode(node.key));
     for (const model::CurveCv& cv : cvs) {
         if (cv.node != index)
-            return failure("the selected CVs are on several controllers; edit one controller's shape at a time");
+            return failure("the selected CVs are on several controllers; edit one controller's shape at a time",
+                           Subject::ofShape(node.key));
         if (cv.curve < 0 || std::size_t(cv.curve) >= node.curves.size() || cv.cv < 0 ||
             std::size_t(cv.cv) >= node.curves[cv.curve].cvs.size())
-            return failure("'" + node.name + "' has no CV " + std::to_string(cv.cv) + " on curve " + std::to_string(cv.curve));
+            return failure("'" + node.name + "' has no CV " + std::to_string(cv.cv) + " on curve " + std::to_string(cv.curve),
+                           Subject::ofShape(node.key));
     }
     std::sort(cvs.begin(), cvs.end());
     cvs.erase(std::unique(cvs.begin(), cvs.end()), cvs.end());
@@ -48,7 +52,8 @@ Result<CvDrag> CvDrag::begin(const model::GuideDocument& document, const model::
     const bool paired = node.twin != model::kNoNode && node.mirrorPlane >= 0 &&
                         (node.shapeFromTwin || rig.nodes[node.twin].shapeFromTwin);
     if (d.m_onCopy && !paired)
-        return failure("the shape of '" + node.name + "' is mirrored from the other side; edit its CVs there");
+        return failure("the shape of '" + node.name + "' is mirrored from the other side; edit its CVs there",
+                       Subject::ofShape(node.key));
     if (paired) {
         d.m_twin = node.twin;
         d.m_reflection[node.mirrorPlane][node.mirrorPlane] = -1.0;
@@ -57,7 +62,7 @@ Result<CvDrag> CvDrag::begin(const model::GuideDocument& document, const model::
     const model::RigNode& authored = d.m_onCopy ? rig.nodes[node.twin] : node;
     const model::TemplateInstance* instance = document.instance(authored.key.instance);
     if (!instance)
-        return failure("'" + node.name + "' belongs to no template instance of the guide");
+        return failure("'" + node.name + "' belongs to no template instance of the guide", Subject::ofNode(node.key));
     d.m_instance = instance->id;
     d.m_tag = authored.key.tag;
     if (const auto edit = instance->shapes.find(d.m_tag); edit != instance->shapes.end())
@@ -131,11 +136,11 @@ std::map<model::RigNodeIndex, std::vector<model::ControllerCurve>> CvDrag::previ
     return out;
 }
 
-Error CvDrag::commit(History& history, const Mat4& change, const std::string& verb) const
+Status CvDrag::commit(History& history, const Mat4& change, const std::string& verb) const
 {
     const model::ShapeEdit edit = editFor(change);
     if (edit == m_start)
-        return std::nullopt;
+        return {};
     const std::string what = m_cvs.size() == 1 ? "CV " + std::to_string(m_cvs.front().cv)
                                                 : std::to_string(m_cvs.size()) + " CVs";
     return setShapeEdit(history, m_instance, m_tag, edit, verb + " " + what + " of " + m_tag);

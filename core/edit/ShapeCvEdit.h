@@ -24,7 +24,8 @@ class CvDrag {
 public:
     // Starts a drag of `cvs` (one controller's) of `rig`, built from `document`.
     // Fails when the CVs are of several controllers or out of range, or the
-    // controller has no instance in the document to keep the edit.
+    // controller has no instance in the document to keep the edit; the error
+    // names the controller's shape (or node).
     static Result<CvDrag> begin(const model::GuideDocument& document, const model::Rig& rig,
                                 std::vector<model::CurveCv> cvs);
 
@@ -36,8 +37,8 @@ public:
     // its mirrored twin for `change`, to preview without rebuilding.
     std::map<model::RigNodeIndex, std::vector<model::ControllerCurve>> previewFor(const Mat4& change) const;
     // Records `editFor(change)` as one undo step ("Move 3 CVs of ctrls.ik of
-    // arm"); a drag that moved nothing records nothing.
-    Error commit(History& history, const Mat4& change, const std::string& verb = "Move") const;
+    // arm"); a drag that moved nothing records nothing. Refusals as setShapeEdit's.
+    Status commit(History& history, const Mat4& change, const std::string& verb = "Move") const;
 
     model::InstanceId instance() const { return m_instance; }
     const std::string& tag() const { return m_tag; }

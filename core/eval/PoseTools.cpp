@@ -35,6 +35,14 @@ model::RigNodeIndex fkFor(const std::vector<const model::RigConstraint*>& blends
     return model::kNoNode;
 }
 
+// A pose tool refused on `node` (a match on a node that is no limb's).
+Result<Pose> refusedAt(const model::RigNode& node, std::string message)
+{
+    return Result<Pose>::refused(std::move(message), Subject::ofNode(node.key));
+}
+
+Result<Pose> noSuchNode(model::RigNodeIndex node) { return Result<Pose>::refused("the rig has no node " + std::to_string(node)); }
+
 } // namespace
 
 const EvalState& Posing::evaluate(const Pose& pose)
@@ -132,14 +140,14 @@ Pose Posing::placeAt(const Pose& pose, model::RigNodeIndex node, const Mat4& wor
     return out;
 }
 
-std::optional<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node, std::string& error)
+Result<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node)
 {
+    if (node >= m_rig.nodes.size())
+        return noSuchNode(node);
     const CopyKey instance = m_rig.nodes[node].key.copy();
     const auto blends = limbBlends(m_rig, instance);
-    if (!limbIk(m_rig, instance) || blends.empty()) {
-        error = "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match";
-        return std::nullopt;
-    }
+    if (!limbIk(m_rig, instance) || blends.empty())
+        return refusedAt(m_rig.nodes[node], "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match");
     // Where the IK chain is now (it does not depend on the FK controls).
     evaluate(pose);
     std::vector<std::pair<model::RigNodeIndex, Mat4>> targets;
@@ -156,25 +164,23 @@ std::optional<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node, s
     return out;
 }
 
-std::optional<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node, std::string& error)
+Result<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node)
 {
+    if (node >= m_rig.nodes.size())
+        return noSuchNode(node);
     const CopyKey instance = m_rig.nodes[node].key.copy();
     const auto* ik = limbIk(m_rig, instance);
     const auto blends = limbBlends(m_rig, instance);
-    if (!ik || blends.empty() || ik->targets.size() != 2) {
-        error = "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match";
-        return std::nullopt;
-    }
+    if (!ik || blends.empty() || ik->targets.size() != 2)
+        return refusedAt(m_rig.nodes[node], "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match");
     const auto fkRoot = fkFor(blends, ik->driven.front()), fkMid = fkFor(blends, ik->driven[1]),
                fkEnd = fkFor(blends, ik->driven.back());
     model::RigNodeIndex control = ik->targets[0];
     while (control != model::kNoNode && m_rig.nodes[control].kind != model::RigNodeKind::Controller)
         control = m_rig.nodes[control].parent;
     const auto pole = ik->targets[1];
-    if (fkRoot == model::kNoNode || fkMid == model::kNoNode || fkEnd == model::kNoNode || control == model::kNoNode) {
-        error = "'" + m_rig.nodes[node].path + "': the IK chain has no FK twin or no IK control";
-        return std::nullopt;
-    }
+    if (fkRoot == model::kNoNode || fkMid == model::kNoNode || fkEnd == model::kNoNode || control == model::kNoNode)
+        return refusedAt(m_rig.nodes[node], "'" + m_rig.nodes[node].path + "': the IK chain has no FK twin or no IK control");
     evaluate(pose);
     const auto& w = m_state.world;
     const Affine effector = w[fkEnd] * m_program.restWorld(fkEnd).inverse() * m_program.restWorld(ik->targets[0]);

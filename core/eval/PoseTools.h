@@ -4,6 +4,7 @@
 // where it is, and placing a control at a world transform (what a gizmo drag
 // does). Each takes a pose and returns a new one, so the caller records the
 // change as one undoable edit (rs::edit::SetPose). Locked channels never change.
+#include "base/Result.h"
 #include "eval/RigProgram.h"
 
 #include <optional>
@@ -35,9 +36,10 @@ public:
     Pose placeAt(const Pose& pose, model::RigNodeIndex node, const Mat4& world);
     // Snaps the FK controls of the limb `node` belongs to onto its IK chain and
     // switches the limb to FK (ik_blend 0); the other way round for fkToIk.
-    // nullopt with `error` set when the node's instance has no IK limb.
-    std::optional<Pose> ikToFk(const Pose& pose, model::RigNodeIndex node, std::string& error);
-    std::optional<Pose> fkToIk(const Pose& pose, model::RigNodeIndex node, std::string& error);
+    // Fails, naming the node, when its instance has no IK limb (or the node is
+    // not in the rig).
+    Result<Pose> ikToFk(const Pose& pose, model::RigNodeIndex node);
+    Result<Pose> fkToIk(const Pose& pose, model::RigNodeIndex node);
     // Sets `channel` (a space enum) to `value`; with `keepPlace` the controls it
     // moves are placed back where they were, so nothing jumps.
     Pose switchSpace(const Pose& pose, int channel, double value, bool keepPlace);

@@ -29,6 +29,7 @@ CompiledConstraint compileConstraint(const model::RigConstraint& rc, const model
     c.driven = rc.driven;
     c.targets = rc.targets;
     c.slot = int(before.size());
+    const std::size_t reported = diagnostics.size();
     bool ok = !c.driven.empty();
     if (!ok)
         diagnostics.push_back(makeError({}, "constraint '" + rc.path + "' drives no node"));
@@ -41,6 +42,9 @@ CompiledConstraint compileConstraint(const model::RigConstraint& rc, const model
             ok = false;
         }
     }
+    for (std::size_t i = reported; i < diagnostics.size(); ++i) // the log selects the constraint's node
+        if (diagnostics[i].subject.isNone())
+            diagnostics[i].subject = Subject::ofNode(rc.key);
     if (!ok) {
         c.driven.clear();
         return c;

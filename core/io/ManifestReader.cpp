@@ -342,11 +342,10 @@ private:
 
     void address(const YAML::Node& node, const std::string& what, const std::string& ownTag)
     {
-        std::string error;
         const std::string text = node.Scalar();
-        auto terms = parseAddress(text, error);
+        auto terms = parseAddress(text);
         if (!terms) {
-            m_r.error(node, what + ": " + error);
+            m_r.error(node, what + ": " + firstError(terms.diagnostics()));
             return;
         }
         if (terms->empty() && ownTag.empty())
@@ -362,9 +361,8 @@ private:
         std::map<std::string, Value> defaults;
         for (const Parameter& p : m_m.opts) defaults[p.name] = p.value;
         for (const Parameter& p : m_m.guides) defaults[p.name] = p.value;
-        std::string error;
-        if (!evaluateCondition(node.Scalar(), defaults, error))
-            m_r.error(node, what + ": condition '" + node.Scalar() + "': " + error);
+        if (const auto holds = evaluateCondition(node.Scalar(), defaults); !holds)
+            m_r.error(node, what + ": condition '" + node.Scalar() + "': " + firstError(holds.diagnostics()));
     }
 
     // A tag whose address leads back to itself can never resolve.
@@ -387,8 +385,8 @@ private:
     bool cycleFrom(const std::string& tag, std::vector<std::string>& path)
     {
         auto address = m_m.structureAddress(tag);
-        std::string error;
-        auto terms = address ? parseAddress(*address, error) : std::nullopt;
+        if (!address) return false;
+        auto terms = parseAddress(*address);
         if (!terms) return false;
         for (const AddressTerm& t : *terms) {
             if (t.base == "." || t.base[0] == '/' || !m_m.structureAddress(t.base)) continue;

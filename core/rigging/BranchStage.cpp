@@ -58,11 +58,14 @@ ExpandedGuide expandBranches(const model::GuideDocument& guide, const templates:
         const auto* manifest = templates.find(authored.templateId);
         std::vector<std::string> branches;
         if (manifest && manifest->findOpt("branches")) {
-            std::string error;
             const std::string text = optionText(authored, manifest, "branches");
-            if (auto list = parseFlowList(text, error)) branches = *list;
-            else diagnostics.push_back(makeWarning({}, "instance '" + authored.name + "': option 'branches' = '" + text +
-                                                           "' is not a YAML list (" + error + "); built once"));
+            if (auto list = parseFlowList(text)) {
+                branches = list.take();
+            } else {
+                diagnostics.push_back(makeWarning({}, "instance '" + authored.name + "': option 'branches' = '" + text +
+                                                          "' is not a YAML list (" + firstError(list.diagnostics()) + "); built once"));
+                diagnostics.back().subject = Subject::ofInstance(authored.id);
+            }
         }
         int plane = -1;
         if (branches.size() == 2) {

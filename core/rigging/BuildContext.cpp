@@ -70,11 +70,12 @@ std::string BuildContext::optionString(const std::string& name) const
 std::optional<std::vector<std::string>> BuildContext::optionList(const std::string& name) const
 {
     const std::string text = optionString(name);
-    std::string error;
-    auto items = parseFlowList(text, error);
-    if (!items)
-        this->error("option '" + name + "' = '" + text + "' is not a YAML list: " + error, name);
-    return items;
+    auto items = parseFlowList(text);
+    if (!items) {
+        this->error("option '" + name + "' = '" + text + "' is not a YAML list: " + firstError(items.diagnostics()), name);
+        return std::nullopt;
+    }
+    return items.take();
 }
 
 std::optional<std::vector<model::JointId>> BuildContext::structure(const std::string& tag) const

@@ -36,10 +36,10 @@ templates::HierarchyRule effectiveRule(RigAssembly& a, const InstanceRecord& r, 
 {
     templates::HierarchyRule rule = e.base;
     for (const auto& [expression, overrides] : e.conditional) {
-        std::string error;
-        auto holds = templates::evaluateCondition(expression, r.options, error);
+        const auto holds = templates::evaluateCondition(expression, r.options);
         if (!holds) {
-            a.report(Severity::Warning, r.instance, "hierarchy." + e.id + ": condition '" + expression + "': " + error);
+            a.report(Severity::Warning, r.instance,
+                     "hierarchy." + e.id + ": condition '" + expression + "': " + firstError(holds.diagnostics()));
             continue;
         }
         if (!*holds)

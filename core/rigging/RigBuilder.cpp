@@ -60,7 +60,11 @@ const RigAssembly::Resolved& RigAssembly::resolveStructure(const templates::Temp
     if (it == structureCache.end()) {
         Resolved r;
         const templates::StructureResolver resolver(manifest, instance);
-        r.joints = isTag ? resolver.tag(text, &r.error) : resolver.address(text, &r.error);
+        auto joints = isTag ? resolver.tag(text) : resolver.address(text);
+        if (joints)
+            r.joints = joints.take();
+        else
+            r.error = firstError(joints.diagnostics());
         it = structureCache.emplace(std::move(key), std::move(r)).first;
     }
     return it->second;
@@ -416,7 +420,7 @@ Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide, 
     if (parentJoint != model::kNoId) {
         const model::TemplateInstance* parent = guide.ownerOf(parentJoint);
         if (!parent)
-            return Result<model::TemplateInstance>::failure(makeError({}, "the hook joint does not exist"));
+            return Result<model::TemplateInstance>::refused("the hook joint does not exist", Subject::ofJoint(model::kNoId, parentJoint));
         instance.parent = parent->id;
         instance.parentJoint = parentJoint;
     }
@@ -498,10 +502,14 @@ Result<model::TemplateInstance> regenerateGuide(const model::GuideDocument& guid
 {
     const model::TemplateInstance* old = guide.instance(id);
     if (!old)
-        return Result<model::TemplateInstance>::failure(makeError({}, "no instance with id " + std::to_string(id)));
+        return Result<model::TemplateInstance>::refused("no instance with id " + std::to_string(id), Subject::ofInstance(id));
     auto made = makeInstance(guide, templates, old->templateId, model::kNoId, options, builders);
-    if (!made)
-        return made;
+    if (!made) { // refused options are this instance's
+        Diagnostics diagnostics = made.takeDiagnostics();
+        for (Diagnostic& d : diagnostics)
+            if (d.subject.isNone()) d.subject = Subject::ofInstance(id);
+        return Result<model::TemplateInstance>::failure(std::move(diagnostics));
+    }
     model::TemplateInstance fresh = made.take();
     const std::vector<int> match = matchJoints(old->joints, fresh.joints);
     std::map<JointId, std::size_t> freshIndex;

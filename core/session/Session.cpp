@@ -244,35 +244,36 @@ const templates::TemplateManifest* Session::manifestOf(model::InstanceId id) con
     return instance ? m_templates->find(instance->templateId) : nullptr;
 }
 
-Error Session::addTemplate(const std::string& templateId, model::JointId hookJoint)
+Status Session::addTemplate(const std::string& templateId, model::JointId hookJoint)
 {
     auto instance = rigging::makeInstance(m_document, *m_templates, templateId, hookJoint);
     if (!instance)
-        return instance.diagnostics().front().message;
+        return Status::failure(instance.takeDiagnostics());
     const model::InstanceId id = instance->id;
-    if (auto error = edit::addInstance(m_history, instance.take()))
-        return error;
+    Diagnostics warnings = instance.takeDiagnostics();
+    if (Status added = edit::addInstance(m_history, instance.take()); added.failed())
+        return added;
     select(Selection::ofInstance(id));
-    return std::nullopt;
+    return Status::success(std::move(warnings));
 }
 
-Error Session::removeInstances(const std::vector<model::InstanceId>& ids) { return edit::removeInstances(m_history, ids); }
+Status Session::removeInstances(const std::vector<model::InstanceId>& ids) { return edit::removeInstances(m_history, ids); }
 
-Error Session::renameInstance(model::InstanceId id, const std::string& name)
+Status Session::renameInstance(model::InstanceId id, const std::string& name)
 {
     return edit::renameInstance(m_history, id, name);
 }
 
-Error Session::setOption(model::InstanceId id, const std::string& name, const Value& value)
+Status Session::setOption(model::InstanceId id, const std::string& name, const Value& value)
 {
     const model::TemplateInstance* instance = m_document.instance(id);
     const templates::TemplateManifest* manifest = manifestOf(id);
     if (!manifest)
-        return "no template for this instance";
+        return Status::refused("no template for this instance", Subject::ofInstance(id));
     const templates::Parameter* guide = manifest->findGuide(name);
     const templates::Parameter* option = guide ? guide : manifest->findOpt(name);
     if (!option)
-        return manifest->id + " has no option '" + name + "'";
+        return Status::refused(manifest->id + " has no option '" + name + "'", Subject::ofInstance(id));
     if (!guide)
         return edit::setOption(m_history, id, name, value, option->value);
     auto options = instance->options;
@@ -281,48 +282,48 @@ Error Session::setOption(model::InstanceId id, const std::string& name, const Va
     else
         options[name] = value;
     if (options == instance->options)
-        return std::nullopt;
+        return {};
     auto regenerated = rigging::regenerateGuide(m_document, *m_templates, id, options);
     if (!regenerated)
-        return formatAll(regenerated.diagnostics());
+        return Status::failure(regenerated.takeDiagnostics());
     return edit::replaceInstance(m_history, regenerated.take(), "Set guide option " + name);
 }
 
-Error Session::resetOptions(model::InstanceId id)
+Status Session::resetOptions(model::InstanceId id)
 {
     const model::TemplateInstance* instance = m_document.instance(id);
     const templates::TemplateManifest* manifest = manifestOf(id);
     if (!manifest)
-        return "no template for this instance";
+        return Status::refused("no template for this instance", Subject::ofInstance(id));
     model::TemplateInstance reset = *instance;
     std::erase_if(reset.options, [&](const auto& entry) { return !manifest->findGuide(entry.first); });
     if (reset.options == instance->options)
-        return std::nullopt;
+        return {};
     return edit::replaceInstance(m_history, std::move(reset), "Reset options of " + instance->name);
 }
 
-Error Session::setNameOverride(model::InstanceId id, const std::string& token, const std::string& name)
+Status Session::setNameOverride(model::InstanceId id, const std::string& token, const std::string& name)
 {
     const templates::TemplateManifest* manifest = manifestOf(id);
     if (!manifest)
-        return "no template for this instance";
+        return Status::refused("no template for this instance", Subject::ofInstance(id));
     return edit::setNameOverride(m_history, id, token, name, manifest->defaultName(token));
 }
 
-Error Session::duplicateInstances(const std::vector<model::InstanceId>& ids)
+Status Session::duplicateInstances(const std::vector<model::InstanceId>& ids)
 {
     std::vector<model::InstanceId> copies;
-    if (auto error = edit::duplicateInstances(m_history, ids, &copies))
-        return error;
+    if (Status duplicated = edit::duplicateInstances(m_history, ids, &copies); duplicated.failed())
+        return duplicated;
     select(Selection::ofInstance(copies.back()));
-    return std::nullopt;
+    return {};
 }
 
-Error Session::reparentInstance(model::InstanceId id, model::JointId hookJoint)
+Status Session::reparentInstance(model::InstanceId id, model::JointId hookJoint)
 {
     return edit::reparentInstance(m_history, id, hookJoint);
 }
 
-Error Session::setReferenceModel(const std::string& path) { return edit::setReferenceModel(m_history, path); }
+Status Session::setReferenceModel(const std::string& path) { return edit::setReferenceModel(m_history, path); }
 
 } // namespace rs::session

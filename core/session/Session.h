@@ -14,6 +14,7 @@
 // Topic files: Session.cpp (documents, builds, events), SessionGuide.cpp
 // (guide authoring), SessionPose.cpp (rig mode), SessionShapes.cpp (shape and
 // CV editing).
+#include "base/Status.h"
 #include "edit/GuideMove.h"
 #include "edit/History.h"
 #include "edit/ShapeCvEdit.h"
@@ -38,7 +39,6 @@ namespace rs::session {
 
 using edit::Change;
 using edit::ChangeKind;
-using Error = edit::Error; // nullopt on success, else a message for the rigger
 
 struct Selection {
     model::InstanceId instance = model::kNoId;
@@ -122,17 +122,19 @@ public:
     Mode mode() const { return m_mode; }
     void setMode(Mode mode);
 
-    // --- template instances (Session.cpp)
-    Error addTemplate(const std::string& templateId, model::JointId hookJoint);
-    Error removeInstances(const std::vector<model::InstanceId>& ids);
-    Error renameInstance(model::InstanceId id, const std::string& name);
+    // --- template instances (Session.cpp). Every edit returns a Status: a
+    // refusal (from rs::edit, forwarded unchanged, or the session's own) names
+    // what it is about, an instance, a guide joint or a rig node.
+    Status addTemplate(const std::string& templateId, model::JointId hookJoint);
+    Status removeInstances(const std::vector<model::InstanceId>& ids);
+    Status renameInstance(model::InstanceId id, const std::string& name);
     // One option, one undo step; a guide parameter regenerates the joints.
-    Error setOption(model::InstanceId id, const std::string& name, const Value& value);
-    Error resetOptions(model::InstanceId id);
-    Error setNameOverride(model::InstanceId id, const std::string& token, const std::string& name);
-    Error duplicateInstances(const std::vector<model::InstanceId>& ids);
-    Error reparentInstance(model::InstanceId id, model::JointId hookJoint);
-    Error setReferenceModel(const std::string& path);
+    Status setOption(model::InstanceId id, const std::string& name, const Value& value);
+    Status resetOptions(model::InstanceId id);
+    Status setNameOverride(model::InstanceId id, const std::string& token, const std::string& name);
+    Status duplicateInstances(const std::vector<model::InstanceId>& ids);
+    Status reparentInstance(model::InstanceId id, model::JointId hookJoint);
+    Status setReferenceModel(const std::string& path);
 
     // --- guide authoring (SessionGuide.cpp): joints are clicked (add toggles)
     // or box-selected; a drag is one transaction, previews rebuild the rig live.
@@ -140,7 +142,7 @@ public:
     model::JointId gizmoJoint() const;
     void beginGuideDrag(model::JointId lead);
     void dragGuideTo(const Mat4& leadWorld);
-    Error endGuideDrag(const std::string& what);
+    Status endGuideDrag(const std::string& what);
     void setGuideDragOptions(edit::GuideDragOptions options) { m_guideDragOptions = options; }
     const edit::GuideDragOptions& guideDragOptions() const { return m_guideDragOptions; }
 
@@ -150,14 +152,14 @@ public:
     std::optional<Mat4> shapeFrame(model::RigNodeIndex node) const;
     void beginShapeDrag(model::RigNodeIndex node);
     void dragShapeTo(const Mat4& world);
-    Error endShapeDrag();
+    Status endShapeDrag();
     bool isCvMode() const { return m_cvMode; }
     void setCvMode(bool on);
     void selectCvs(const std::vector<model::CurveCv>& cvs, bool add);
     std::optional<Mat4> cvFrame() const;
     void beginCvDrag();
     void dragCvsTo(const Mat4& world);
-    Error endCvDrag(const std::string& verb);
+    Status endCvDrag(const std::string& verb);
 
     // --- rig mode (SessionPose.cpp)
     void selectControllers(const std::vector<model::RigNodeIndex>& nodes, bool add);
@@ -166,8 +168,8 @@ public:
     void beginDrag(model::RigNodeIndex node);
     void dragTo(model::RigNodeIndex node, const Mat4& world);
     void endDrag(model::RigNodeIndex node, const std::string& what);
-    Error setChannel(int channel, double value, bool matchSpace);
-    Error applyPoseTool(PoseTool tool);
+    Status setChannel(int channel, double value, bool matchSpace);
+    Status applyPoseTool(PoseTool tool);
 
 protected:
     // Every change, after the session has followed it (rebuilt, evaluated).
@@ -185,7 +187,7 @@ private:
     void compileRig(std::optional<Result<eval::RigProgram>> compiled = std::nullopt);
     void poseFromDocument();
     void previewPose(eval::Pose pose);
-    Error commitPose(const eval::Pose& pose, const std::string& what);
+    Status commitPose(const eval::Pose& pose, const std::string& what);
     std::optional<edit::CvDrag> selectedCvDrag() const;
     void restoreSelection(const std::vector<NodeKey>& nodes, const std::vector<std::pair<NodeKey, model::CurveCv>>& cvs);
 

@@ -67,13 +67,13 @@ void Session::dragGuideTo(const Mat4& leadWorld)
     });
 }
 
-Error Session::endGuideDrag(const std::string& what)
+Status Session::endGuideDrag(const std::string& what)
 {
     if (!m_guideDrag)
-        return std::nullopt;
+        return {};
     m_guideDrag.reset();
     m_history.commit(what); // a drag that moved nothing records nothing
-    return std::nullopt;
+    return {};
 }
 
 } // namespace rs::session

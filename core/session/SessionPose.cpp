@@ -17,13 +17,13 @@ void Session::previewPose(eval::Pose pose)
     emitChange(Change::of(ChangeKind::Evaluation));
 }
 
-Error Session::commitPose(const eval::Pose& pose, const std::string& what)
+Status Session::commitPose(const eval::Pose& pose, const std::string& what)
 {
     auto values = eval::valuesFromPose(*m_rig, m_program->channels(), pose, m_document.pose);
     if (values == m_document.pose) {
         poseFromDocument(); // a drag that ended where it began: show the stored pose
         emitChange(Change::of(ChangeKind::Evaluation));
-        return std::nullopt;
+        return {};
     }
     return edit::setPose(m_history, std::move(values), what);
 }
@@ -76,48 +76,43 @@ void Session::endDrag(model::RigNodeIndex, const std::string& what)
     commitPose(m_pose, what);
 }
 
-Error Session::setChannel(int channel, double value, bool matchSpace)
+Status Session::setChannel(int channel, double value, bool matchSpace)
 {
     if (!m_program || channel < 0 || std::size_t(channel) >= m_program->channels().size())
-        return "no such channel";
+        return Status::refused("no such channel");
     const eval::Channel& c = m_program->channels()[channel];
     const std::string name = m_rig->nodes[c.node].name + "." + c.name;
     if (c.locked)
-        return name + " is locked";
+        return Status::refused(name + " is locked", Subject::ofNode(m_rig->nodes[c.node].key));
     eval::Pose pose = c.isEnum() ? m_posing->switchSpace(m_pose, channel, value, matchSpace) : m_pose;
     if (!c.isEnum())
         pose[channel] = m_program->channels().clamp(channel, value);
     return commitPose(pose, "Set " + name);
 }
 
-Error Session::applyPoseTool(PoseTool tool)
+Status Session::applyPoseTool(PoseTool tool)
 {
     if (!m_posing)
-        return "build the rig first";
+        return Status::refused("build the rig first");
     const auto& selected = m_selection.nodes;
     const auto all = m_rig->sets.count("controllers") ? m_rig->sets.at("controllers") : std::vector<model::RigNodeIndex>{};
-    std::string error;
-    std::optional<eval::Pose> pose;
-    std::string what;
-    switch (tool) {
-    case PoseTool::ResetSelected: pose = m_posing->reset(m_pose, selected); what = "Reset selected"; break;
-    case PoseTool::ResetAll: pose = m_posing->reset(m_pose, {}); what = "Reset all"; break;
-    case PoseTool::Mirror: pose = m_posing->mirror(m_pose, selected.empty() ? all : selected); what = "Mirror pose"; break;
-    case PoseTool::Flip: pose = m_posing->flip(m_pose, selected.empty() ? all : selected); what = "Flip pose"; break;
-    case PoseTool::IkToFk:
-    case PoseTool::FkToIk:
-        if (m_selection.node == model::kNoNode)
-            return "select a control of the limb to match";
-        pose = tool == PoseTool::IkToFk ? m_posing->ikToFk(m_pose, m_selection.node, error)
-                                        : m_posing->fkToIk(m_pose, m_selection.node, error);
-        what = tool == PoseTool::IkToFk ? "Match FK to IK" : "Match IK to FK";
-        break;
-    }
     if (tool == PoseTool::ResetSelected && selected.empty())
-        return "select the controls to reset";
-    if (!pose)
-        return error;
-    return commitPose(*pose, what);
+        return Status::refused("select the controls to reset");
+    switch (tool) {
+    case PoseTool::ResetSelected: return commitPose(m_posing->reset(m_pose, selected), "Reset selected");
+    case PoseTool::ResetAll: return commitPose(m_posing->reset(m_pose, {}), "Reset all");
+    case PoseTool::Mirror: return commitPose(m_posing->mirror(m_pose, selected.empty() ? all : selected), "Mirror pose");
+    case PoseTool::Flip: return commitPose(m_posing->flip(m_pose, selected.empty() ? all : selected), "Flip pose");
+    case PoseTool::IkToFk:
+    case PoseTool::FkToIk: break;
+    }
+    if (m_selection.node == model::kNoNode)
+        return Status::refused("select a control of the limb to match");
+    auto matched = tool == PoseTool::IkToFk ? m_posing->ikToFk(m_pose, m_selection.node)
+                                            : m_posing->fkToIk(m_pose, m_selection.node);
+    if (!matched)
+        return Status::failure(matched.takeDiagnostics());
+    return commitPose(*matched, tool == PoseTool::IkToFk ? "Match FK to IK" : "Match IK to FK");
 }
 
 } // namespace rs::session

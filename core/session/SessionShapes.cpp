@@ -77,13 +77,13 @@ void Session::dragShapeTo(const Mat4& world)
     });
 }
 
-Error Session::endShapeDrag()
+Status Session::endShapeDrag()
 {
     if (!m_shapeDrag)
-        return std::nullopt;
+        return {};
     m_shapeDrag.reset();
     m_history.commit(); // the shape edit's own name: "Edit shape ctrls.ik of arm"
-    return std::nullopt;
+    return {};
 }
 
 void Session::setCvMode(bool on)
@@ -170,21 +170,21 @@ void Session::dragCvsTo(const Mat4& world)
     });
 }
 
-Error Session::endCvDrag(const std::string& verb)
+Status Session::endCvDrag(const std::string& verb)
 {
     if (!m_cvDrag)
-        return std::nullopt;
+        return {};
     const CvDragState state = *std::exchange(m_cvDrag, std::nullopt);
     if (state.change == Mat4(1.0)) {
         m_history.rollback();
-        return std::nullopt;
+        return {};
     }
     // The step is named as CvDrag names it ("Move 4 CVs of ctrls.ik"): the
     // last preview is replaced by the same edit under that name.
-    Error error;
-    replacePreview([&] { error = state.drag.commit(m_history, state.change, verb); });
+    Status committed;
+    replacePreview([&] { committed = state.drag.commit(m_history, state.change, verb); });
     m_history.commit();
-    return error;
+    return committed;
 }
 
 } // namespace rs::session

@@ -92,10 +92,13 @@ private:
 
 } // namespace
 
-std::optional<bool> evaluateCondition(const std::string& expression, const std::map<std::string, Value>& options,
-                                      std::string& error)
+Result<bool> evaluateCondition(const std::string& expression, const std::map<std::string, Value>& options)
 {
-    return Parser(expression, options).parse(error);
+    std::string error;
+    const std::optional<bool> holds = Parser(expression, options).parse(error);
+    if (!holds)
+        return Result<bool>::refused(error);
+    return *holds;
 }
 
 } // namespace rs::templates

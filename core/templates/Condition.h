@@ -5,6 +5,7 @@
 // unary := 'not' unary | '(' expr ')' | operand [('=='|'!=') operand];
 // an operand is an option name (its value) or a literal (number, on/off, text).
 // A lone option is true when it is on, non-zero or non-empty.
+#include "base/Result.h"
 #include "model/Value.h"
 
 #include <map>
@@ -13,8 +14,8 @@
 
 namespace rs::templates {
 
-// nullopt and `error` set when the expression is malformed or names an unknown option.
-std::optional<bool> evaluateCondition(const std::string& expression, const std::map<std::string, Value>& options,
-                                      std::string& error);
+// Fails (an error without a file position: the caller knows where the
+// expression was written) when it is malformed or names an unknown option.
+Result<bool> evaluateCondition(const std::string& expression, const std::map<std::string, Value>& options);
 
 } // namespace rs::templates

@@ -64,9 +64,7 @@ std::optional<std::string> checkSelector(const std::string& selector)
     return std::nullopt;
 }
 
-} // namespace
-
-std::optional<std::vector<AddressTerm>> parseAddress(const std::string& expression, std::string& error)
+std::optional<std::vector<AddressTerm>> parseTerms(const std::string& expression, std::string& error)
 {
     std::vector<AddressTerm> terms;
     if (trim(expression).empty())
@@ -104,6 +102,17 @@ std::optional<std::vector<AddressTerm>> parseAddress(const std::string& expressi
     return terms;
 }
 
+} // namespace
+
+Result<std::vector<AddressTerm>> parseAddress(const std::string& expression)
+{
+    std::string error;
+    auto terms = parseTerms(expression, error);
+    if (!terms)
+        return Result<std::vector<AddressTerm>>::refused(error);
+    return std::move(*terms);
+}
+
 std::vector<JointId> StructureResolver::chain() const
 {
     std::vector<JointId> out;
@@ -125,7 +134,7 @@ std::vector<JointId> StructureResolver::chain() const
 std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::string& expression, const std::string& ownTag,
                                                                 std::string& error) const
 {
-    auto terms = parseAddress(expression, error);
+    auto terms = parseTerms(expression, error);
     if (!terms)
         return std::nullopt;
     if (terms->empty()) { // explicit tag: the joints tagged with the tag itself
@@ -147,7 +156,7 @@ std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::strin
             else if (auto sel = applySelector(c, term.base.substr(1), error)) joints = *sel;
             else { error = "address '" + term.base + "': " + error; return std::nullopt; }
         } else {
-            auto sub = tag(term.base, &error);
+            auto sub = lookup(term.base, error);
             if (!sub) return std::nullopt;
             joints = *sub;
         }
@@ -161,9 +170,8 @@ std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::strin
     return result;
 }
 
-std::optional<std::vector<JointId>> StructureResolver::tag(const std::string& tagName, std::string* error) const
+std::optional<std::vector<JointId>> StructureResolver::lookup(const std::string& tagName, std::string& message) const
 {
-    std::string message;
     std::optional<std::vector<JointId>> out;
     std::optional<std::string> address;
     if (auto it = m_instance.structure.find(tagName); it != m_instance.structure.end())
@@ -187,16 +195,25 @@ std::optional<std::vector<JointId>> StructureResolver::tag(const std::string& ta
         if (!tagged.empty()) out = tagged;
         else message = "unknown structure tag '" + tagName + "'";
     }
-    if (!out && error) *error = message;
     return out;
 }
 
-std::optional<std::vector<JointId>> StructureResolver::address(const std::string& expression, std::string* error) const
+Result<std::vector<JointId>> StructureResolver::tag(const std::string& tagName) const
 {
-    std::string message;
-    auto out = evaluate(expression, "", message);
-    if (!out && error) *error = message;
-    return out;
+    std::string error;
+    auto joints = lookup(tagName, error);
+    if (!joints)
+        return Result<std::vector<JointId>>::refused(error);
+    return std::move(*joints);
+}
+
+Result<std::vector<JointId>> StructureResolver::address(const std::string& expression) const
+{
+    std::string error;
+    auto joints = evaluate(expression, "", error);
+    if (!joints)
+        return Result<std::vector<JointId>>::refused(error);
+    return std::move(*joints);
 }
 
 } // namespace rs::templates

@@ -8,7 +8,7 @@
 // forks; other templates' roots are never part of it (they belong to their own
 // instance). It never relies on sibling order. An instance may override any tag's
 // address. Unknown tags, bad syntax and cycles are reported.
-#include "base/Diagnostic.h"
+#include "base/Result.h"
 #include "model/GuideDocument.h"
 #include "templates/Manifest.h"
 
@@ -23,21 +23,23 @@ namespace rs::templates {
 struct AddressTerm {
     std::string text, base, selector;
 };
-// Syntax only; an empty address (explicit tag) gives no terms.
-std::optional<std::vector<AddressTerm>> parseAddress(const std::string& expression, std::string& error);
+// Syntax only; an empty address (explicit tag) gives no terms. A failure's
+// error has no file position: the caller knows where the address was written.
+Result<std::vector<AddressTerm>> parseAddress(const std::string& expression);
 
 class StructureResolver {
 public:
     StructureResolver(const TemplateManifest& manifest, const model::TemplateInstance& instance)
         : m_manifest(manifest), m_instance(instance) {}
 
-    // Joints of a structure tag; nullopt (with an error message) when it cannot resolve.
-    std::optional<std::vector<model::JointId>> tag(const std::string& tagName, std::string* error = nullptr) const;
+    // Joints of a structure tag; a failure (no file position) says why it cannot resolve.
+    Result<std::vector<model::JointId>> tag(const std::string& tagName) const;
     // Joints of an address expression as written in `ui.hooks` or `structure`.
-    std::optional<std::vector<model::JointId>> address(const std::string& expression, std::string* error = nullptr) const;
+    Result<std::vector<model::JointId>> address(const std::string& expression) const;
     std::vector<model::JointId> chain() const;
 
 private:
+    std::optional<std::vector<model::JointId>> lookup(const std::string& tagName, std::string& error) const;
     std::optional<std::vector<model::JointId>> evaluate(const std::string& expression, const std::string& ownTag,
                                                         std::string& error) const;
     const TemplateManifest& m_manifest;

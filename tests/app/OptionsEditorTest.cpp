@@ -117,7 +117,7 @@ TEST(OptionsEditor, NameOverridesRenameTheBuiltControls)
     ASSERT_TRUE(control.has_value());
     EXPECT_EQ(w.session().rig()->nodes[*control].name, "c_arm_hand_L");
 
-    EXPECT_TRUE(w.session().setNameOverride(arm, "ik", "bad name!")) << "refused, nothing changes";
+    EXPECT_TRUE(w.session().setNameOverride(arm, "ik", "bad name!").failed()) << "refused, nothing changes";
     EXPECT_EQ(w.session().history().size(), 1u);
     w.action("undo")->trigger();
     EXPECT_TRUE(w.session().document() == original);

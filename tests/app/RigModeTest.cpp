@@ -66,7 +66,7 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
     // The arm is in IK by default: switch it to FK through its switch control's channel.
     const auto settings = nodeId(w, "arm.L::ctrls.switch");
     const int blend = *w.session().program()->channels().find(settings, "ik_blend");
-    ASSERT_FALSE(w.session().setChannel(blend, 0.0, true));
+    ASSERT_TRUE(w.session().setChannel(blend, 0.0, true).ok());
     spin->setValue(45.0); // as if typed and confirmed
     EXPECT_EQ(w.session().history().undoText(), "Set c_arm2_L.rz");
     EXPECT_GT(glm::length(posedPosition(w, "arm.L::skin.limb.2") - restHand), 0.05); // the hand followed

@@ -9,24 +9,29 @@ TEST(Condition, EvaluatesBooleanExpressionsOverOptions)
 {
     const std::map<std::string, Value> options{{"clavicle", true}, {"unchain", false}, {"orient", std::string("auto")},
                                                {"count", 3LL}};
-    std::string error;
-    EXPECT_EQ(evaluateCondition("clavicle", options, error), true);
-    EXPECT_EQ(evaluateCondition("not unchain", options, error), true);
-    EXPECT_EQ(evaluateCondition("orient == auto", options, error), true);
-    EXPECT_EQ(evaluateCondition("orient != 'auto'", options, error), false);
-    EXPECT_EQ(evaluateCondition("clavicle and (unchain or count == 3)", options, error), true);
-    EXPECT_EQ(evaluateCondition("count", options, error), true);
+    auto value = [&](const std::string& expression) {
+        const auto holds = evaluateCondition(expression, options);
+        EXPECT_TRUE(holds) << expression << ": " << formatAll(holds.diagnostics());
+        return holds ? std::optional(*holds) : std::nullopt;
+    };
+    EXPECT_EQ(value("clavicle"), true);
+    EXPECT_EQ(value("not unchain"), true);
+    EXPECT_EQ(value("orient == auto"), true);
+    EXPECT_EQ(value("orient != 'auto'"), false);
+    EXPECT_EQ(value("clavicle and (unchain or count == 3)"), true);
+    EXPECT_EQ(value("count"), true);
 }
 
 TEST(Condition, RejectsUnknownOptionsAndBadSyntaxWithoutRunningAnything)
 {
     const std::map<std::string, Value> options{{"a", true}};
-    std::string error;
-    EXPECT_FALSE(evaluateCondition("b", options, error));
-    EXPECT_EQ(error, "unknown option 'b'");
-    EXPECT_FALSE(evaluateCondition("(a", options, error));
-    EXPECT_EQ(error, "missing ')'");
-    EXPECT_FALSE(evaluateCondition("a and", options, error));
-    EXPECT_EQ(error, "expression ends too early");
-    EXPECT_FALSE(evaluateCondition("__import__('os')", options, error));
+    auto errorOf = [&](const std::string& expression) {
+        const auto holds = evaluateCondition(expression, options);
+        EXPECT_FALSE(holds) << expression;
+        return firstError(holds.diagnostics());
+    };
+    EXPECT_EQ(errorOf("b"), "unknown option 'b'");
+    EXPECT_EQ(errorOf("(a"), "missing ')'");
+    EXPECT_EQ(errorOf("a and"), "expression ends too early");
+    EXPECT_NE(errorOf("__import__('os')"), "");
 }

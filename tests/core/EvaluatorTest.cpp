@@ -276,6 +276,8 @@ TEST(Evaluator, CompileRejectsEveryAttributeReferenceThatIsNotAnAttributeOfItsNo
     EXPECT_EQ(program.diagnostics()[0].message,
               "constraint 'world::cns.post_scale': its value attribute 'nothing' is not an attribute of node 'chest::ctrls.xform'");
     EXPECT_EQ(program.diagnostics()[1].message, "constraint 'test::cns.blend': its weight attribute 'ik_blend' names no node of the rig");
+    EXPECT_EQ(program.diagnostics()[0].subject, Subject::ofNode(rig.constraints.front().key)) << "the log selects the constraint";
+    EXPECT_FALSE(rig.constraints.front().key.isRoot());
 }
 
 TEST(Evaluator, ConstraintsWhoseSettingsDoNotFitAreSkippedWithAWarningEach)

@@ -18,14 +18,14 @@ TEST(GuideEdits, EveryEditUndoesBackToTheOriginalDocument)
     auto digit = rigging::makeInstance(doc, test::builtinTemplates(), "core.joints", arm->joints.back().id);
     ASSERT_TRUE(digit.ok());
     const model::InstanceId digitId = digit->id;
-    EXPECT_FALSE(edit::addInstance(history, digit.take()));
-    EXPECT_FALSE(edit::renameInstance(history, digitId, "finger_L"));
-    EXPECT_FALSE(edit::setOption(history, digitId, "do_skin", false, true));
+    EXPECT_TRUE(test::succeeded(edit::addInstance(history, digit.take())));
+    EXPECT_TRUE(test::succeeded(edit::renameInstance(history, digitId, "finger_L")));
+    EXPECT_TRUE(test::succeeded(edit::setOption(history, digitId, "do_skin", false, true)));
     const model::JointId joint = doc.instance(digitId)->joints.front().id;
     Transform moved;
     moved.translate = Vec3(0.1, 0, 0);
-    EXPECT_FALSE(edit::setJointTransform(history, joint, moved));
-    EXPECT_FALSE(edit::removeInstance(history, doc.instanceNamed("spine")->id));
+    EXPECT_TRUE(test::succeeded(edit::setJointTransform(history, joint, moved)));
+    EXPECT_TRUE(test::succeeded(edit::removeInstance(history, doc.instanceNamed("spine")->id)));
 
     EXPECT_EQ(doc.instances().size(), 1u) << "removing the spine removes everything hanging below it";
     EXPECT_EQ(history.size(), 5u);
@@ -47,7 +47,7 @@ TEST(GuideEdits, RemovingSeveralInstancesIsOneUndoStepEvenWhenOneHangsBelowAnoth
     const std::vector<model::InstanceId> ids{doc.instanceNamed("thumb")->id, doc.instanceNamed("arm")->id,
                                              doc.instanceNamed("leg")->id};
     const std::size_t armSubtree = doc.subtree(doc.instanceNamed("arm")->id).size();
-    ASSERT_FALSE(edit::removeInstances(history, ids));
+    ASSERT_TRUE(test::succeeded(edit::removeInstances(history, ids)));
     EXPECT_EQ(history.size(), 1u);
     EXPECT_EQ(history.undoText(), "Remove 3 templates");
     EXPECT_EQ(doc.instances().size(), original.instances().size() - armSubtree - 1);
@@ -57,8 +57,8 @@ TEST(GuideEdits, RemovingSeveralInstancesIsOneUndoStepEvenWhenOneHangsBelowAnoth
     EXPECT_EQ(doc, original) << "every instance back at its place";
     history.redo();
     EXPECT_EQ(doc.instanceNamed("thumb"), nullptr);
-    EXPECT_EQ(edit::removeInstances(history, {}), "no instance to remove");
-    EXPECT_EQ(edit::removeInstances(history, {ids[2]}), "no instance with id " + std::to_string(ids[2]));
+    EXPECT_EQ(test::refusal(edit::removeInstances(history, {})), "no instance to remove");
+    EXPECT_EQ(test::refusal(edit::removeInstances(history, {ids[2]})), "no instance with id " + std::to_string(ids[2]));
     EXPECT_EQ(history.size(), 1u);
 }
 
@@ -68,11 +68,11 @@ TEST(GuideEdits, RefusedEditsChangeNothing)
     const model::GuideDocument original = doc;
     edit::History history(doc);
     const model::InstanceId spine = doc.instanceNamed("spine")->id;
-    EXPECT_EQ(edit::renameInstance(history, spine, "neck"), "an instance named 'neck' already exists");
-    EXPECT_EQ(edit::renameInstance(history, spine, "2spine"),
+    EXPECT_EQ(test::refusal(edit::renameInstance(history, spine, "neck")), "an instance named 'neck' already exists");
+    EXPECT_EQ(test::refusal(edit::renameInstance(history, spine, "2spine")),
               "'2spine' is not a valid name (letters, digits and _, not starting with a digit)");
-    EXPECT_EQ(edit::setOption(history, spine, "number", std::string("many"), 3LL), "option 'number' takes a int, not a string");
-    EXPECT_EQ(edit::removeInstance(history, 999), "no instance with id 999");
+    EXPECT_EQ(test::refusal(edit::setOption(history, spine, "number", std::string("many"), 3LL)), "option 'number' takes a int, not a string");
+    EXPECT_EQ(test::refusal(edit::removeInstance(history, 999)), "no instance with id 999");
     EXPECT_EQ(history.size(), 0u);
     EXPECT_EQ(doc, original);
 }
@@ -83,7 +83,7 @@ TEST(GuideEdits, SettingTheDefaultValueRemovesTheStoredOption)
     edit::History history(doc);
     const model::InstanceId spine = doc.instanceNamed("spine")->id;
     ASSERT_TRUE(doc.instance(spine)->options.count("number"));
-    EXPECT_FALSE(edit::setOption(history, spine, "number", 3LL, 3LL));
+    EXPECT_TRUE(test::succeeded(edit::setOption(history, spine, "number", 3LL, 3LL)));
     EXPECT_FALSE(doc.instance(spine)->options.count("number"));
     history.undo();
     EXPECT_EQ(doc.instance(spine)->options.at("number"), Value(4LL));
@@ -100,7 +100,7 @@ TEST(GuideEdits, NewInstancesGetFreshIdsAUniqueNameAndDefaultJoints)
     EXPECT_EQ(a->parent, neck->id);
     EXPECT_EQ(a->joints.front().id, doc.nextJointId());
     edit::History history(doc);
-    ASSERT_FALSE(edit::addInstance(history, a.take()));
+    ASSERT_TRUE(test::succeeded(edit::addInstance(history, a.take())));
     auto b = rigging::makeInstance(doc, test::builtinTemplates(), "core.joints", model::kNoId);
     ASSERT_TRUE(b.ok());
     EXPECT_EQ(b->name, "joints1");
@@ -118,7 +118,7 @@ TEST(GuideEdits, AGuideParameterRegeneratesTheJointsKeepingTheOnesThatStillExist
 
     auto longer = rigging::regenerateGuide(document, test::builtinTemplates(), spine, {{"number", Value(7LL)}});
     ASSERT_TRUE(longer) << formatAll(longer.diagnostics());
-    ASSERT_FALSE(edit::replaceInstance(history, longer.take(), "Set guide option number"));
+    ASSERT_TRUE(test::succeeded(edit::replaceInstance(history, longer.take(), "Set guide option number")));
     const auto& joints = document.instance(spine)->joints;
     ASSERT_EQ(joints.size(), 7u);
     for (std::size_t k = 0; k < 4; ++k) {
@@ -142,8 +142,10 @@ TEST(GuideEdits, AGuideParameterRegeneratesTheJointsKeepingTheOnesThatStillExist
     EXPECT_EQ(shorter->joints.size(), 3u);
     edit::History other(document);
     document.instance(document.instanceNamed("neck")->id)->parentJoint = before[2].id;
-    const auto refused = edit::replaceInstance(other, shorter.take(), "Set guide option number");
-    ASSERT_TRUE(refused);
-    EXPECT_EQ(*refused, "'neck' hangs under a guide joint of 'spine' that would go away");
+    const Status refused = edit::replaceInstance(other, shorter.take(), "Set guide option number");
+    EXPECT_EQ(test::refusal(refused), "'neck' hangs under a guide joint of 'spine' that would go away");
+    ASSERT_FALSE(refused.diagnostics().empty());
+    EXPECT_EQ(refused.diagnostics().front().subject, Subject::ofInstance(document.instanceNamed("neck")->id))
+        << "names the instance that would lose its hook";
     EXPECT_EQ(document.instance(spine)->joints.size(), 5u);
 }

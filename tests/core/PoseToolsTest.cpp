@@ -88,25 +88,28 @@ TEST(PoseTools, IkToFkAndFkToIkMatchWithinTenMicrometres)
         std::vector<Mat4> before;
         r.evaluate(pose);
         for (int i = 0; i < 3; ++i) before.push_back(r.state().worldMatrix(r.index(limb + "::blend." + std::to_string(i))));
-        std::string error;
-        auto fk = r.posing->ikToFk(pose, r.index(limb + "::ctrls.switch"), error);
-        ASSERT_TRUE(fk) << error;
+        auto fk = r.posing->ikToFk(pose, r.index(limb + "::ctrls.switch"));
+        ASSERT_TRUE(fk) << formatAll(fk.diagnostics());
         EXPECT_EQ((*fk)[r.channel(limb + "::ctrls.switch", "ik_blend")], 0.0);
         r.evaluate(*fk);
         for (int i = 0; i < 3; ++i)
             EXPECT_LT(maxAbsDifference(r.state().worldMatrix(r.index(limb + "::blend." + std::to_string(i))), before[i]), 1e-5)
                 << limb << " FK " << i;
         // And back: the FK pose matched onto IK.
-        auto ik = r.posing->fkToIk(*fk, r.index(limb + "::ctrls.fk.1"), error);
-        ASSERT_TRUE(ik) << error;
+        auto ik = r.posing->fkToIk(*fk, r.index(limb + "::ctrls.fk.1"));
+        ASSERT_TRUE(ik) << formatAll(ik.diagnostics());
         r.evaluate(*ik);
         for (int i = 0; i < 3; ++i)
             EXPECT_LT(maxAbsDifference(r.state().worldMatrix(r.index(limb + "::blend." + std::to_string(i))), before[i]), 1e-5)
                 << limb << " IK " << i;
     }
-    std::string error;
-    EXPECT_FALSE(r.posing->ikToFk(r.defaults(), r.index("neck::ctrls.head"), error));
-    EXPECT_EQ(error, "'neck::ctrls.head' is not on an FK/IK limb to match");
+    const model::RigNodeIndex head = r.index("neck::ctrls.head");
+    const auto refused = r.posing->ikToFk(r.defaults(), head);
+    ASSERT_FALSE(refused);
+    ASSERT_EQ(refused.diagnostics().size(), 1u);
+    EXPECT_EQ(refused.diagnostics().front().message, "'neck::ctrls.head' is not on an FK/IK limb to match");
+    EXPECT_EQ(refused.diagnostics().front().subject, Subject::ofNode(r.rig.nodes[head].key)) << "names the head control";
+    EXPECT_FALSE(r.posing->fkToIk(r.defaults(), model::RigNodeIndex(r.rig.nodes.size()))) << "a node past the rig is refused";
 }
 
 TEST(PoseTools, SpaceSwitchWithMatchingKeepsTheHeadWhereItIs)
@@ -189,10 +192,11 @@ TEST(PoseTools, PoseEditsAreUndoableAndSavedWithTheGuide)
     edit::History history(guide);
     Pose pose = r.defaults();
     pose[r.channel("arm.L::ctrls.fk.0", "rz")] = 45.0;
-    ASSERT_FALSE(edit::setPose(history, eval::valuesFromPose(r.rig, r.program->channels(), pose, guide.pose), "Rotate c_arm1_L"));
+    ASSERT_TRUE(test::succeeded(
+        edit::setPose(history, eval::valuesFromPose(r.rig, r.program->channels(), pose, guide.pose), "Rotate c_arm1_L")));
     EXPECT_EQ(history.undoText(), "Rotate c_arm1_L");
     EXPECT_EQ(guide.pose.at(r.rig.nodes[r.index("arm.L::ctrls.fk.0")].key).at("rz"), 45.0);
-    EXPECT_TRUE(edit::setPose(history, guide.pose, "nothing")); // refused: no empty step
+    EXPECT_TRUE(edit::setPose(history, guide.pose, "nothing").failed()); // refused: no empty step
     const auto reread = io::readGuideText(io::writeGuideText(guide), "pose.yml");
     ASSERT_TRUE(reread.ok());
     EXPECT_EQ(reread->pose, guide.pose);

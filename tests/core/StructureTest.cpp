@@ -73,15 +73,13 @@ TEST(Structure, ReportsUnknownTagsBadIndicesAndCycles)
     m.structure = {{"chain", "/*"}, {"a", "b"}, {"b", "a"}, {"missing", ""}, {"far", "/9"}};
     const auto instance = limb();
     StructureResolver r(m, instance);
-    std::string error;
-    EXPECT_FALSE(r.tag("nope", &error));
-    EXPECT_EQ(error, "unknown structure tag 'nope'");
-    EXPECT_FALSE(r.tag("missing", &error));
-    EXPECT_EQ(error, "no guide joint is tagged 'missing'");
-    EXPECT_FALSE(r.tag("far", &error));
-    EXPECT_EQ(error, "address '/9': index [9] is out of range (5 joints)");
-    EXPECT_FALSE(r.tag("a", &error));
-    EXPECT_NE(error.find("refers to itself"), std::string::npos) << error;
-    EXPECT_FALSE(r.address("chain[1", &error));
-    EXPECT_EQ(error, "missing ']' in 'chain[1'");
+    auto errorOf = [](const Result<std::vector<model::JointId>>& joints) {
+        EXPECT_FALSE(joints);
+        return firstError(joints.diagnostics());
+    };
+    EXPECT_EQ(errorOf(r.tag("nope")), "unknown structure tag 'nope'");
+    EXPECT_EQ(errorOf(r.tag("missing")), "no guide joint is tagged 'missing'");
+    EXPECT_EQ(errorOf(r.tag("far")), "address '/9': index [9] is out of range (5 joints)");
+    EXPECT_NE(errorOf(r.tag("a")).find("refers to itself"), std::string::npos);
+    EXPECT_EQ(errorOf(r.address("chain[1")), "missing ']' in 'chain[1'");
 }

@@ -79,15 +79,14 @@ TEST_P(StructureGolden, ResolvesEveryTagAndHook)
         out << "instance " << instance.name << ":\n";
         templates::StructureResolver resolver(*manifest, instance);
         for (const auto& [tag, address] : manifest->structure) {
-            std::string error;
-            auto joints = resolver.tag(tag, &error);
+            auto joints = resolver.tag(tag);
             auto override = instance.structure.find(tag);
             if (override != instance.structure.end())
                 out << "  " << tag << " (instance override " << override->second << "): ";
             else
                 out << "  " << tag << " (" << (address.empty() ? "explicit" : address) << "): ";
             if (!joints) {
-                out << "error: " << error << '\n';
+                out << "error: " << firstError(joints.diagnostics()) << '\n';
                 continue;
             }
             out << '[';

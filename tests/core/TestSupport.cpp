@@ -76,4 +76,21 @@ std::string temporaryPath(const std::string& name)
     return (dir / name).string();
 }
 
+::testing::AssertionResult succeeded(const Status& status)
+{
+    if (status.ok())
+        return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "failed:\n" << status.message();
+}
+
+std::string refusal(const Status& status)
+{
+    if (status.ok())
+        return {};
+    for (const Diagnostic& d : status.diagnostics())
+        if (d.severity == Severity::Error)
+            return d.message;
+    return "(a failure without an error)";
+}
+
 } // namespace rs::test

@@ -1,8 +1,11 @@
 #pragma once
 // Shared helpers for core tests: paths of test data, samples and golden files.
+#include "base/Status.h"
 #include "model/GuideDocument.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
+
+#include <gtest/gtest.h>
 
 #include <memory>
 #include <string>
@@ -21,6 +24,10 @@ inline model::GuideDocument loadChains() { return loadGuide("RigBuilder/chains/g
 // Compares `actual` with the golden file; RIGSMITH_UPDATE_GOLDEN=1 rewrites it.
 void expectMatchesGolden(const std::string& actual, const std::string& goldenRelativePath);
 std::string temporaryPath(const std::string& name);
+// For ASSERT_TRUE: success, or a failure whose diagnostics become the test's message.
+::testing::AssertionResult succeeded(const Status& status);
+// The first error's message of a refused edit; "" when it succeeded.
+std::string refusal(const Status& status);
 // A rig node by id; fails the test (and returns an empty node) when it is missing.
 const model::RigNode& node(const model::Rig& rig, const std::string& id);
 

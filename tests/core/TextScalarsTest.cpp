@@ -16,17 +16,16 @@ using Items = std::vector<std::string>;
 
 std::optional<Items> flow(const std::string& text)
 {
-    std::string error;
-    auto items = parseFlowList(text, error);
-    EXPECT_EQ(items.has_value(), error.empty()) << "'" << text << "': an error message exactly when it fails";
-    return items;
+    auto items = parseFlowList(text);
+    EXPECT_EQ(items.ok(), firstError(items.diagnostics()).empty()) << "'" << text << "': an error message exactly when it fails";
+    return items ? std::optional(items.take()) : std::nullopt;
 }
 
 std::string errorOf(const std::string& text)
 {
-    std::string error;
-    EXPECT_FALSE(parseFlowList(text, error)) << text;
-    return error;
+    const auto items = parseFlowList(text);
+    EXPECT_FALSE(items) << text;
+    return firstError(items.diagnostics());
 }
 
 } // namespace
@@ -120,7 +119,8 @@ TEST(TextScalars, FlowListsReadAsYamlCppReadsThem)
             }
         } catch (const YAML::Exception&) {
         }
-        std::string error;
-        EXPECT_EQ(parseFlowList(text, error), expected) << "'" << text << "': " << error;
+        auto items = parseFlowList(text);
+        const std::string error = firstError(items.diagnostics());
+        EXPECT_EQ(items ? std::optional(items.take()) : std::nullopt, expected) << "'" << text << "': " << error;
     }
 }
