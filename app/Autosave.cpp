@@ -23,9 +23,10 @@ bool EditorSession::autosave(Diagnostics& diagnostics) const
 {
     if (history().isClean())
         return false;
-    diagnostics = io::saveGuideFile(document(), autosavePath().toStdString());
-    m_ownsAutosave = m_ownsAutosave || !hasErrors(diagnostics);
-    return !hasErrors(diagnostics);
+    const Status saved = io::saveGuideFile(document(), autosavePath().toStdString());
+    diagnostics = saved.diagnostics();
+    m_ownsAutosave = m_ownsAutosave || saved.ok();
+    return saved.ok();
 }
 
 void EditorSession::discardAutosave() const

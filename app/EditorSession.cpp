@@ -78,8 +78,9 @@ bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagno
 
 bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
 {
-    diagnostics = io::saveGuideFile(document(), path.toStdString());
-    if (hasErrors(diagnostics))
+    const Status saved = io::saveGuideFile(document(), path.toStdString());
+    diagnostics = saved.diagnostics();
+    if (saved.failed())
         return false;
     discardAutosave(); // the previous path's (or the untitled one's)
     m_filePath = path;

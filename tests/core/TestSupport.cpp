@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <csignal>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace rs::test {
@@ -74,6 +77,19 @@ std::string temporaryPath(const std::string& name)
     const auto dir = std::filesystem::temp_directory_path() / ("rigsmith-test-" + std::to_string(getpid()));
     std::filesystem::create_directories(dir);
     return (dir / name).string();
+}
+
+bool runWithFileSizeLimit(std::size_t limitBytes, const std::function<bool()>& write)
+{
+    const pid_t child = fork();
+    if (child == 0) {
+        std::signal(SIGXFSZ, SIG_IGN);
+        const rlimit limit{rlim_t(limitBytes), rlim_t(limitBytes)};
+        setrlimit(RLIMIT_FSIZE, &limit);
+        _exit(write() ? 0 : 1);
+    }
+    int status = 0;
+    return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 } // namespace rs::test

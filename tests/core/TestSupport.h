@@ -4,6 +4,8 @@
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -21,6 +23,10 @@ inline model::GuideDocument loadChains() { return loadGuide("RigBuilder/chains/g
 // Compares `actual` with the golden file; RIGSMITH_UPDATE_GOLDEN=1 rewrites it.
 void expectMatchesGolden(const std::string& actual, const std::string& goldenRelativePath);
 std::string temporaryPath(const std::string& name);
+// Runs `write` in a forked child whose files may not grow past `limitBytes`
+// (a write past it fails with EFBIG, SIGXFSZ ignored: a full disk without
+// mounting one); true when the child returned true.
+bool runWithFileSizeLimit(std::size_t limitBytes, const std::function<bool()>& write);
 // A rig node by id; fails the test (and returns an empty node) when it is missing.
 const model::RigNode& node(const model::Rig& rig, const std::string& id);
 
