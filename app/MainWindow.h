@@ -77,6 +77,8 @@ private:
     void updateUndoActions();
     void updateTitle();
     void report(const QString& what, const Diagnostics& diagnostics);
+    // A save or export that wrote nothing: the status bar, and a warning box for a rigger.
+    void showWriteFailure(const QString& what, const Diagnostics& diagnostics);
     void logError(const QString& error); // an edit's refusal message, when there is one
     void logError(const session::Error& error);
     // Unsaved changes: asks Save / Discard / Cancel; true when the document may be replaced.
