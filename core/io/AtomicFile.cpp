@@ -67,7 +67,9 @@ int createTemp(PendingFile& file, mode_t mode, int& error)
     const fs::path target(file.target);
     const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
     for (int attempt = 0; attempt < 100; ++attempt) {
-        const std::string temp = (folder / ("." + target.filename().string() + "." + randomSuffix() + ".tmp")).string();
+        std::string name(1, '.'); // built by appending: GCC 12 warns (-Wrestrict, falsely) on "." + string
+        name.append(target.filename().string()).append(1, '.').append(randomSuffix()).append(".tmp");
+        const std::string temp = (folder / name).string();
         const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
         if (fd >= 0) {
             file.temp = temp;
