@@ -37,6 +37,8 @@ EditorSession::EditorSession(QObject* parent) : QObject(parent), session::Sessio
     subscribe([this](const session::Change& change) {
         if (change.has(session::ChangeKind::Reference) || change.has(session::ChangeKind::Document))
             syncReference();
+        if (change.has(session::ChangeKind::History) && history().isClean())
+            discardAutosave(); // undone back to the saved state: the autosave would bring the undone edits back
         emit changed(change);
     });
 }
@@ -55,8 +57,11 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
 
 void EditorSession::replaceWith(model::GuideDocument document, const QString& path)
 {
-    m_ownsAutosave = false; // the previous guide's autosave stays to be offered when it is opened again
+    if (history().isClean())
+        discardAutosave(); // the guide as saved: its autosave holds nothing newer
+    m_ownsAutosave = false; // the previous guide's unsaved autosave stays to be offered when it is opened again
     m_filePath = path;
+    m_baseHash = contentHash(path);
     replaceDocument(std::move(document));
     history().setClean();
 }
@@ -78,11 +83,13 @@ bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagno
 
 bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
 {
-    diagnostics = io::saveGuideFile(document(), path.toStdString());
-    if (hasErrors(diagnostics))
+    const Status saved = io::saveGuideFile(document(), path.toStdString());
+    diagnostics = saved.diagnostics();
+    if (saved.failed())
         return false;
     discardAutosave(); // the previous path's (or the untitled one's)
     m_filePath = path;
+    m_baseHash = contentHash(path);
     history().setClean();
     m_ownsAutosave = false;
     return true;

@@ -8,6 +8,7 @@
 #include "io/ExportRequest.h"
 #include "session/Session.h"
 
+#include <QByteArray>
 #include <QMetaType>
 #include <QObject>
 #include <QString>
@@ -41,14 +42,26 @@ public:
 
     // Autosave (Autosave.cpp): the unsaved document goes to autosavePath()
     // ("<file>.autosave", or untitled.autosave.yml in the app data folder for an
-    // untitled guide), atomically. A save or a clean close removes it; one left
-    // behind means a crash, and opening the file offers to recover it.
+    // untitled guide), atomically, with the hash of the file it came from. A
+    // save, a clean close or undoing back to the saved state removes it; one left
+    // behind means a crash, and opening the file offers to recover it when it
+    // holds something newer than the file and came from the file as it is now.
+    // Recovery only reads: the guide opens unsaved, the file is untouched.
+    enum class Recovery {
+        None,         // no autosave
+        Offer,        // came from the file as it is, holds changes
+        NothingNewer, // the same guide as the file (or an empty untitled one): safe to delete
+        OtherVersion, // made from other bytes than the file has now: not offered, kept
+    };
     static QString autosavePathFor(const QString& path);
     QString autosavePath() const { return autosavePathFor(m_filePath); }
     bool autosave(Diagnostics& diagnostics) const;
     void discardAutosave() const;
-    static bool hasRecovery(const QString& path);
+    static Recovery recoveryState(const QString& path);
+    static bool hasRecovery(const QString& path); // recoveryState(path) == Offer
     bool recover(const QString& path, Diagnostics& diagnostics);
+    // SHA-256 (hex) of the file's bytes; "(untitled)" for no file.
+    static QByteArray contentHash(const QString& path);
 
     // Runs io::runExport on the built rig with the document's pose.
     Diagnostics exportRig(const io::ExportRequest& request, std::function<bool(double)> progress = {}) const;
@@ -77,6 +90,7 @@ private:
 
     Diagnostics m_templateDiagnostics;
     QString m_filePath;
+    QByteArray m_baseHash; // contentHash of m_filePath as opened or last saved
     mutable bool m_ownsAutosave = false;
     std::shared_ptr<const std::vector<glm::vec3>> m_reference;
     std::string m_referencePath; // what m_reference shows

@@ -52,6 +52,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
 void MainWindow::offerUntitledRecovery()
 {
+    if (EditorSession::recoveryState({}) == EditorSession::Recovery::NothingNewer)
+        QFile::remove(EditorSession::autosavePathFor({}));
     if (!EditorSession::hasRecovery({}))
         return;
     Diagnostics diagnostics;
@@ -185,6 +187,13 @@ void MainWindow::report(const QString& what, const Diagnostics& diagnostics)
     m_log->addDiagnostics(diagnostics);
 }
 
+void MainWindow::showWriteFailure(const QString& what, const Diagnostics& diagnostics)
+{
+    statusBar()->showMessage(what + " " + tr("(details in the build log)"), 15000);
+    if (isVisible() && !property("skipUnsavedPrompt").toBool()) // tests drive the editor without modal boxes
+        QMessageBox::warning(this, tr("Write failed"), what + "\n\n" + QString::fromStdString(formatAll(diagnostics)));
+}
+
 void MainWindow::reloadTemplates()
 {
     const Diagnostics diagnostics = m_session.reloadTemplates();
@@ -194,8 +203,16 @@ void MainWindow::reloadTemplates()
 
 bool MainWindow::openFile(const QString& path)
 {
-    Diagnostics diagnostics;
-    if (EditorSession::hasRecovery(path) && m_recoveryPrompt(path, EditorSession::autosavePathFor(path))) {
+    Diagnostics diagnostics, notes;
+    const QString autosave = EditorSession::autosavePathFor(path);
+    const auto recovery = EditorSession::recoveryState(path);
+    if (recovery == EditorSession::Recovery::NothingNewer)
+        QFile::remove(autosave); // the file has all it holds
+    if (recovery == EditorSession::Recovery::OtherVersion)
+        notes.push_back(makeWarning({autosave.toStdString(), 0, 0},
+                                    "an autosave made from another version of this file is kept here, not offered "
+                                    "(the file was saved since it was made)"));
+    if (recovery == EditorSession::Recovery::Offer && m_recoveryPrompt(path, autosave)) {
         const bool recovered = m_session.recover(path, diagnostics);
         report(recovered ? tr("Recovered unsaved changes of %1").arg(path) : tr("Could not recover %1").arg(path),
                diagnostics);
@@ -207,6 +224,7 @@ bool MainWindow::openFile(const QString& path)
         }
     }
     const bool ok = m_session.open(path, diagnostics);
+    diagnostics.insert(diagnostics.begin(), notes.begin(), notes.end());
     report(ok ? tr("Opened %1").arg(path) : tr("Could not open %1; the open guide is unchanged").arg(path), diagnostics);
     if (ok) {
         settings::addRecentFile(path);
@@ -236,6 +254,8 @@ bool MainWindow::saveFile(const QString& path)
     if (ok)
         settings::addRecentFile(path);
     report(ok ? tr("Saved %1").arg(path) : tr("Could not save %1").arg(path), diagnostics);
+    if (!ok)
+        showWriteFailure(tr("Could not save %1; the file on disk is unchanged.").arg(path), diagnostics);
     updateTitle();
     return ok;
 }
@@ -263,6 +283,8 @@ bool MainWindow::exportRig(const io::ExportRequest& request)
         dialog->showReport(diagnostics);
     const QString path = QString::fromStdString(request.path);
     report(hasErrors(diagnostics) ? tr("Export failed") : tr("Exported %1").arg(path), diagnostics);
+    if (hasErrors(diagnostics) && !dialog)
+        showWriteFailure(tr("Could not export %1.").arg(path), diagnostics);
     return !hasErrors(diagnostics);
 }
 

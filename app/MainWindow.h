@@ -80,6 +80,8 @@ private:
     // An edit's outcome: its diagnostics (a refusal's error, naming the instance,
     // joint or node it is about, so its log line selects it) go to the log.
     void logStatus(const Status& status);
+    // A save or export that wrote nothing: the status bar, and a warning box for a rigger.
+    void showWriteFailure(const QString& what, const Diagnostics& diagnostics);
     // Unsaved changes: asks Save / Discard / Cancel; true when the document may be replaced.
     bool maySwitchDocument(const QString& question);
 

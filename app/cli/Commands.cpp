@@ -3,6 +3,7 @@
 #include "base/Paths.h"
 #include "rigging/RigBuilder.h"
 #include "eval/PoseTools.h"
+#include "io/AtomicFile.h"
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
 #include "io/RigDump.h"
@@ -156,7 +157,7 @@ int runBuild(const std::vector<std::string>& args)
         if (b.dump == "-")
             std::cout << text;
         else
-            status = report(io::writeFileAtomically(b.dump, text), status);
+            status = report(io::writeFileAtomically(b.dump, text).diagnostics(), status);
     }
     return exportBuiltRig(rig, *guide, b.exportRequest, status);
 }
@@ -247,8 +248,8 @@ int runShapeIcons(const std::vector<std::string>& args)
                           << " (run rigsmith-cli shape-icons " << directory << ")\n";
                 status = 1;
             }
-        } else if (auto d = io::writeFileAtomically(file, svg); !d.empty()) {
-            print(d);
+        } else if (const Status written = io::writeFileAtomically(file, svg); written.failed()) {
+            print(written.diagnostics());
             status = 1;
         }
     }

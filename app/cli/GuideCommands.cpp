@@ -52,9 +52,9 @@ int runNew(const std::vector<std::string>& args)
     }
     model::GuideDocument document;
     document.name = name.empty() ? std::filesystem::path(path).stem().string() : name;
-    const auto d = io::saveGuideFile(document, path);
-    print(d);
-    return hasErrors(d) ? 1 : 0;
+    const Status saved = io::saveGuideFile(document, path);
+    print(saved.diagnostics());
+    return saved.failed() ? 1 : 0;
 }
 
 int runAdd(const std::vector<std::string>& args)
@@ -129,9 +129,9 @@ int runAdd(const std::vector<std::string>& args)
         print(refusal);
         return 1;
     }
-    const auto d = io::saveGuideFile(document, path);
-    print(d);
-    return hasErrors(d) ? 1 : 0;
+    const Status saved = io::saveGuideFile(document, path);
+    print(saved.diagnostics());
+    return saved.failed() ? 1 : 0;
 }
 
 } // namespace rs::cli

@@ -1,6 +1,6 @@
 #include "io/ExportRequest.h"
 
-#include "io/GuideFile.h"
+#include "io/AtomicFile.h"
 #include "io/NameMap.h"
 #include "io/RigExport.h"
 #include "model/Skeleton.h"
@@ -47,7 +47,7 @@ Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, cons
         auto prepared = prepareExport(rig, options);
         if (!prepared.scene)
             return prepared.report;
-        Diagnostics written = writeFileAtomically(request.referencePath, exportReferenceJson(*prepared.scene));
+        Diagnostics written = writeFileAtomically(request.referencePath, exportReferenceJson(*prepared.scene)).takeDiagnostics();
         report.insert(report.end(), written.begin(), written.end());
     }
     if (request.path.empty())

@@ -1,7 +1,7 @@
 #include "io/FbxExport.h"
 
 #include "io/FbxRepair.h"
-#include "io/GuideFile.h"
+#include "io/AtomicFile.h"
 
 #include <assimp/Exporter.hpp>
 #include <assimp/scene.h>
@@ -235,7 +235,7 @@ Diagnostics writeFbx(const ExportScene& scene, const std::string& path, const Co
         }
         return report;
     }
-    Diagnostics written = writeFileAtomically(path, repaired.take());
+    Diagnostics written = writeFileAtomically(path, repaired.take()).takeDiagnostics();
     report.insert(report.end(), written.begin(), written.end());
     return report;
 }

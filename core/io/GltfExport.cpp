@@ -1,6 +1,8 @@
 #include "io/GltfExport.h"
 
-#include "io/GuideFile.h"
+#include "io/AtomicFile.h"
+
+#include <nlohmann/json.hpp>
 
 #include <tiny_gltf.h>
 
@@ -259,17 +261,30 @@ Diagnostics writeGltf(const ExportScene& scene, const std::string& path, const s
 {
     tinygltf::Model m = buildModel(scene, generator);
     tinygltf::TinyGLTF writer;
+    std::ostringstream stream;
     if (std::filesystem::path(path).extension() == ".glb") {
-        std::ostringstream stream;
         if (!writer.WriteGltfSceneToStream(&m, stream, false, true))
             return {makeError({path, 0, 0}, "glTF serialisation failed")};
-        return writeFileAtomically(path, stream.str());
+        return writeFileAtomically(path, stream.str()).takeDiagnostics();
     }
-    // Text glTF: tinygltf writes the JSON and the .bin named by buffers[0].uri.
-    m.buffers[0].uri = std::filesystem::path(path).stem().string() + ".bin";
-    if (!writer.WriteGltfSceneToFile(&m, path, false, false, true, false))
-        return {makeError({path, 0, 0}, "cannot write the glTF file or its .bin")};
-    return {};
+    // Text glTF: the JSON names the .bin beside it. tinygltf would write both
+    // itself, unchecked and in place, so both are made in memory here (the
+    // buffer taken out first, so it is not base64-encoded into the JSON) and
+    // written together: neither replaces its file unless both were written.
+    const std::filesystem::path gltfPath(path);
+    const std::string binName = gltfPath.stem().string() + ".bin";
+    const std::vector<unsigned char> bin = std::move(m.buffers[0].data);
+    m.buffers[0].data.clear();
+    if (!writer.WriteGltfSceneToStream(&m, stream, true, false))
+        return {makeError({path, 0, 0}, "glTF serialisation failed")};
+    nlohmann::json json = nlohmann::json::parse(stream.str(), nullptr, false);
+    if (json.is_discarded() || !json.contains("buffers"))
+        return {makeError({path, 0, 0}, "glTF serialisation failed")};
+    json["buffers"][0]["uri"] = binName;
+    json["buffers"][0]["byteLength"] = bin.size();
+    const std::string text = json.dump(2);
+    const std::string_view binBytes(reinterpret_cast<const char*>(bin.data()), bin.size());
+    return writeFilesAtomically({{path, text}, {(gltfPath.parent_path() / binName).string(), binBytes}}).takeDiagnostics();
 }
 
 } // namespace rs::io

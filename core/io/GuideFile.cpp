@@ -1,17 +1,14 @@
 #include "io/GuideFile.h"
 
+#include "io/AtomicFile.h"
 #include "io/GuidePose.h"
 #include "io/YamlSupport.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
 #include <sstream>
-#include <unistd.h>
 
 namespace rs::io {
 
@@ -377,29 +374,7 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
     return out.str();
 }
 
-Diagnostics writeFileAtomically(const std::string& path, const std::string& bytes)
-{
-    const std::string temporary = path + ".saving~";
-    FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file)
-        return {makeError({path, 0, 0}, "cannot write: " + std::string(std::strerror(errno)))};
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size() && std::fflush(file) == 0 &&
-                         fsync(fileno(file)) == 0;
-    const int error = errno;
-    const bool closed = std::fclose(file) == 0;
-    if (!written || !closed) {
-        std::remove(temporary.c_str());
-        return {makeError({path, 0, 0}, "cannot write (the previous file is untouched): " + std::string(std::strerror(error)))};
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const int renameError = errno;
-        std::remove(temporary.c_str());
-        return {makeError({path, 0, 0}, "cannot replace the file: " + std::string(std::strerror(renameError)))};
-    }
-    return {};
-}
-
-Diagnostics saveGuideFile(const GuideDocument& document, const std::string& path)
+Status saveGuideFile(const GuideDocument& document, const std::string& path)
 {
     return writeFileAtomically(path, writeGuideText(document, fs::absolute(path).parent_path().string()));
 }

@@ -3,6 +3,7 @@
 // Writing is deterministic (fixed key order, shortest round-trip numbers), so a
 // file written by Rigsmith loads and saves back byte-identical.
 #include "base/Result.h"
+#include "base/Status.h"
 #include "model/GuideDocument.h"
 
 #include <string>
@@ -16,9 +17,8 @@ std::string writeGuideText(const model::GuideDocument& document);
 // With `directory` (where the file goes) the reference model's path is written relative to it.
 std::string writeGuideText(const model::GuideDocument& document, const std::string& directory);
 
-// Atomic: writes a temporary file next to `path`, flushes it, then renames it over
-// `path`, so a crash or a full disk never damages the previous file.
-Diagnostics saveGuideFile(const model::GuideDocument& document, const std::string& path);
-Diagnostics writeFileAtomically(const std::string& path, const std::string& bytes);
+// Atomic (io/AtomicFile.h): a crash, a full disk or a second writer never damages
+// the previous file; saving through a symlink writes its target, keeping its mode.
+Status saveGuideFile(const model::GuideDocument& document, const std::string& path);
 
 } // namespace rs::io

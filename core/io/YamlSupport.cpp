@@ -1,6 +1,8 @@
 #include "io/YamlSupport.h"
 
 #include <cctype>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -204,22 +206,75 @@ bool isValidYaml(const std::string& text)
     }
 }
 
-std::string quoteIfNeeded(const std::string& text)
+namespace {
+
+// Words a YAML 1.1 or 1.2 reader (or our own typed readers: parseBool, and
+// parseNumber, which takes nan and inf) types as null, a bool or a number,
+// compared lower-cased.
+bool isReservedWord(std::string lower)
 {
-    bool plain = !text.empty() && !parseBool(text) && !parseNumber(text) && text != "null" && text != "~" &&
-                 text.front() != ' ' && text.back() != ' ';
+    for (char& c : lower)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* word : {"null", "y", "n", "yes", "no", "true", "false", "on", "off", "nan", "inf", "infinity"})
+        if (lower == word)
+            return true;
+    return false;
+}
+
+// A scalar starting with a digit that some YAML reader may type as a number, a
+// time or a date (1e3, 0x1F, 0o17, 0b11, 1_000, 1:30, 2001-12-14): only digits,
+// hex letters, x/o/b and the separators _ . : + - appear in it.
+bool looksNumeric(const std::string& text)
+{
+    if (!std::isdigit(static_cast<unsigned char>(text.front())))
+        return false;
+    for (char c : text)
+        if (!std::isxdigit(static_cast<unsigned char>(c)) && !std::strchr("xXoObB_.:+-", c))
+            return false;
+    return true;
+}
+
+// Plain only when every YAML reader returns the same string: a letter, a digit,
+// '_' or '/' first, then letters, digits, '_', '.', '/', '-' and inner spaces;
+// no reserved word, nothing numeric. Anything else is double-quoted.
+bool canBePlain(const std::string& text)
+{
+    if (text.empty() || text.back() == ' ')
+        return false;
+    const unsigned char first = static_cast<unsigned char>(text.front());
+    if (!std::isalnum(first) && first != '_' && first != '/')
+        return false;
     for (char c : text)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-' || c == ' ' || c == '/'))
-            plain = false;
-    if (plain && (text.front() == '-' || text.front() == '.'))
-        plain = false;
-    if (plain)
+            return false;
+    if (text.find("  ") != std::string::npos) // folded by some readers
+        return false;
+    return !isReservedWord(text) && !looksNumeric(text) && !parseBool(text) && !parseNumber(text);
+}
+
+} // namespace
+
+std::string quoteIfNeeded(const std::string& text)
+{
+    if (canBePlain(text))
         return text;
     std::string quoted = "\"";
     for (char c : text) {
-        if (c == '"' || c == '\\') quoted += '\\';
-        if (c == '\n') { quoted += "\\n"; continue; }
-        quoted += c;
+        switch (c) {
+        case '"': quoted += "\\\""; break;
+        case '\\': quoted += "\\\\"; break;
+        case '\n': quoted += "\\n"; break;
+        case '\t': quoted += "\\t"; break;
+        case '\r': quoted += "\\r"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+                char escape[5];
+                std::snprintf(escape, sizeof escape, "\\x%02x", static_cast<unsigned char>(c));
+                quoted += escape;
+            } else {
+                quoted += c; // UTF-8 bytes as they are
+            }
+        }
     }
     return quoted + "\"";
 }

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 using namespace rs;
@@ -78,4 +79,34 @@ TEST(GltfExport, RefusesASkeletonWithSeveralRootsAndWritesNothing)
     EXPECT_EQ(d[0].format(), path + ": error: the skin hierarchy has 2 roots, an export skeleton needs one: "
                                     "sk_spine_hips (spine::skin.0), sk_neck1 (neck::skin.0)");
     EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// Issue 18 item 2: the .gltf + .bin pair is written whole or not at all.
+TEST(GltfExport, ATextGltfOnAFullDiskFailsAndKeepsThePreviousPair)
+{
+    const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const std::filesystem::path folder = test::temporaryPath("gltf-full");
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    const std::string gltf = (folder / "rig.gltf").string(), bin = (folder / "rig.bin").string();
+    ASSERT_TRUE(io::exportRig(rig, gltf).empty());
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadASCIIFromFile(&m, &error, &warning, gltf)) << error;
+    ASSERT_EQ(m.buffers.size(), 1u);
+    EXPECT_EQ(m.buffers[0].uri, "rig.bin");
+    EXPECT_EQ(m.buffers[0].data.size(), std::filesystem::file_size(bin));
+    EXPECT_EQ(m.skins.size(), 1u);
+
+    // Room for the smaller of the two files, not the larger.
+    const std::size_t limit = (std::filesystem::file_size(gltf) + std::filesystem::file_size(bin)) / 2;
+    std::ofstream(gltf, std::ios::binary) << "previous gltf\n";
+    std::ofstream(bin, std::ios::binary) << "previous bin\n";
+    const bool reported = test::runWithFileSizeLimit(limit, [&] { return hasErrors(io::exportRig(rig, gltf)); });
+    EXPECT_TRUE(reported) << "the write error is reported";
+    EXPECT_EQ(test::readText(gltf), "previous gltf\n");
+    EXPECT_EQ(test::readText(bin), "previous bin\n");
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()), 2)
+        << "no temp file is left behind";
 }

@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <csignal>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace rs::test {
@@ -91,6 +94,19 @@ std::string refusal(const Status& status)
         if (d.severity == Severity::Error)
             return d.message;
     return "(a failure without an error)";
+}
+
+bool runWithFileSizeLimit(std::size_t limitBytes, const std::function<bool()>& write)
+{
+    const pid_t child = fork();
+    if (child == 0) {
+        std::signal(SIGXFSZ, SIG_IGN);
+        const rlimit limit{rlim_t(limitBytes), rlim_t(limitBytes)};
+        setrlimit(RLIMIT_FSIZE, &limit);
+        _exit(write() ? 0 : 1);
+    }
+    int status = 0;
+    return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 } // namespace rs::test

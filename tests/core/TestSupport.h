@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -28,6 +30,10 @@ std::string temporaryPath(const std::string& name);
 ::testing::AssertionResult succeeded(const Status& status);
 // The first error's message of a refused edit; "" when it succeeded.
 std::string refusal(const Status& status);
+// Runs `write` in a forked child whose files may not grow past `limitBytes`
+// (a write past it fails with EFBIG, SIGXFSZ ignored: a full disk without
+// mounting one); true when the child returned true.
+bool runWithFileSizeLimit(std::size_t limitBytes, const std::function<bool()>& write);
 // A rig node by id; fails the test (and returns an empty node) when it is missing.
 const model::RigNode& node(const model::Rig& rig, const std::string& id);
 
