@@ -111,6 +111,10 @@ int reportEditLatency(MainWindow& window, int drags)
                                 {"preview_median_ms", ms(median(moves))},
                                 {"commit_median_ms", ms(median(commits))},
                                 {"idle_frame_median_ms", ms(median(idle))},
+                                // What an edit adds to a repaint: the session's rebuild, the views' refresh and the uploads.
+                                {"edit_over_idle_median_ms", ms(median(all) - median(idle))},
+                                {"viewport_px", {int(view->width() * view->devicePixelRatio()), int(view->height() * view->devicePixelRatio())}},
+                                {"window_px", {window.width(), window.height()}},
                                 {"build_ms", ms(window.session().lastBuildMilliseconds())},
                                 {"undo_steps", window.session().history().size()}};
     std::printf("%s\n", report.dump().c_str());
