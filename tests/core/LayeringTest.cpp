@@ -34,6 +34,7 @@ const std::vector<Layer> kCoreLayers = {
     {"base", {}},
     {"model", {"base"}},
     {"eval", {"base", "model"}},
+    {"skin", {"base", "model"}},
     {"templates", {"base", "model"}},
     {"rigging", {"base", "model", "eval", "templates"}},
     {"edit", {"base", "model", "eval"}},

@@ -1,0 +1,287 @@
+#include "skin/AutoWeights.h"
+
+#include "skin/Surface.h"
+#include "skin/Visibility.h"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numeric>
+
+namespace rs::skin {
+
+const char* bindMethodName(BindMethod method)
+{
+    switch (method) {
+    case BindMethod::Heat: return "heat";
+    case BindMethod::Envelope: return "envelope";
+    case BindMethod::Closest: return "closest";
+    }
+    return "heat";
+}
+
+std::optional<BindMethod> parseBindMethod(const std::string& text)
+{
+    for (BindMethod m : {BindMethod::Heat, BindMethod::Envelope, BindMethod::Closest})
+        if (text == bindMethodName(m))
+            return m;
+    return std::nullopt;
+}
+
+namespace {
+
+constexpr std::uint32_t kNone = std::uint32_t(-1);
+constexpr int kVisibilityTries = 8; // nearest bones tested for line of sight per vertex
+
+// Per surface vertex: bones by distance, the nearest one, the nearest visible one.
+struct Nearest {
+    std::uint32_t closest = kNone;
+    double closestDistance = 0.0;
+    std::uint32_t visible = kNone;
+    double visibleDistance = 0.0;
+};
+
+// Up to `limit` (bone, share) pairs, largest first.
+struct TopInfluences {
+    std::vector<std::pair<std::uint32_t, double>> items;
+    void offer(std::uint32_t bone, double share, std::size_t limit)
+    {
+        if (!(share > 0.0))
+            return;
+        if (items.size() == limit && share <= items.back().second)
+            return;
+        auto at = std::find_if(items.begin(), items.end(), [&](const auto& x) { return share > x.second; });
+        items.insert(at, {bone, share});
+        if (items.size() > limit)
+            items.pop_back();
+    }
+};
+
+double distanceTo(const SkinBone& bone, const Vec3& p) { return glm::length(p - nearestPointOn(bone, p)); }
+
+} // namespace
+
+Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<SkinBone>& bones, const BindOptions& options,
+                                    BindStats* statsOut)
+{
+    using Out = Result<model::MeshWeights>;
+    if (bones.empty())
+        return Out::failure(makeError({}, "the rig has no skin joint to bind to"));
+    if (options.maxInfluences < 1 || options.maxInfluences > 8)
+        return Out::failure(makeError({}, "--max-influences must be 1 to 8, not " + std::to_string(options.maxInfluences)));
+    if (!(options.pruneBelow >= 0.0 && options.pruneBelow < 1.0))
+        return Out::failure(makeError({}, "the prune threshold must be in [0, 1)"));
+    auto progress = [&](double fraction) { return !options.progress || options.progress(fraction); };
+    auto cancelled = [] { return Out::failure(makeError({}, "the bind was cancelled; the weights are unchanged")); };
+
+    Diagnostics notes;
+    BindStats stats;
+    stats.vertices = mesh.vertexCount();
+    const Surface surface = makeSurface(mesh);
+    const std::size_t n = surface.positions.size();
+    stats.surfaceVertices = n;
+    stats.parts = surface.partCount;
+    if (!progress(0.05))
+        return cancelled();
+
+    // Nearest bone and nearest visible bone of every surface vertex.
+    std::vector<Nearest> nearest(n);
+    const bool heat = options.method == BindMethod::Heat;
+    std::unique_ptr<Visibility> visibility = heat ? std::make_unique<Visibility>(surface) : nullptr;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& range) {
+        std::vector<std::pair<double, std::uint32_t>> order(bones.size());
+        for (std::size_t v = range.begin(); v != range.end(); ++v) {
+            const Vec3& p = surface.positions[v];
+            for (std::uint32_t b = 0; b < bones.size(); ++b)
+                order[b] = {distanceTo(bones[b], p), b};
+            const std::size_t tries = std::min<std::size_t>(bones.size(), kVisibilityTries);
+            std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(tries), order.end());
+            nearest[v].closest = order[0].second;
+            nearest[v].closestDistance = order[0].first;
+            if (!visibility || surface.area[v] <= 0.0)
+                continue;
+            for (std::size_t k = 0; k < tries; ++k)
+                if (visibility->clear(p, nearestPointOn(bones[order[k].second], p))) {
+                    nearest[v].visible = order[k].second;
+                    nearest[v].visibleDistance = order[k].first;
+                    break;
+                }
+        }
+    });
+    if (!progress(0.2))
+        return cancelled();
+
+    std::vector<TopInfluences> top(n);
+    const std::size_t limit = std::size_t(options.maxInfluences);
+    std::vector<bool> byClosest(n, false);
+
+    if (options.method == BindMethod::Closest) {
+        for (std::size_t v = 0; v < n; ++v)
+            top[v].offer(nearest[v].closest, 1.0, limit);
+    } else if (options.method == BindMethod::Envelope) {
+        tbb::parallel_for(std::size_t(0), n, [&](std::size_t v) {
+            for (std::uint32_t b = 0; b < bones.size(); ++b) {
+                const double d = std::max(distanceTo(bones[b], surface.positions[v]), 1e-6);
+                top[v].offer(b, 1.0 / (d * d), limit);
+            }
+        });
+    } else {
+        // Parts no vertex of which sees a bone cannot be heated: closest bone.
+        std::vector<bool> reachable(surface.partCount, false);
+        for (std::size_t v = 0; v < n; ++v)
+            if (nearest[v].visible != kNone)
+                reachable[surface.part[v]] = true;
+        std::vector<std::size_t> partSize(surface.partCount, 0);
+        for (std::size_t v = 0; v < n; ++v)
+            ++partSize[surface.part[v]];
+        for (std::size_t part = 0; part < surface.partCount; ++part)
+            if (!reachable[part]) {
+                ++stats.partsByClosestBone;
+                if (partSize[part] > 1) // single loose points need no note
+                    notes.push_back({Severity::Note, {}, "mesh '" + mesh.name + "': a part of " + std::to_string(partSize[part]) +
+                                                             " vertices sees no bone (inside another part, or only loose points); "
+                                                             "it takes its closest bone", {}});
+            }
+
+        // The solved vertices, renumbered.
+        std::vector<std::uint32_t> row(n, kNone);
+        std::vector<std::uint32_t> vertexOf;
+        for (std::uint32_t v = 0; v < n; ++v)
+            if (reachable[surface.part[v]]) {
+                row[v] = std::uint32_t(vertexOf.size());
+                vertexOf.push_back(v);
+            }
+        const auto m = Eigen::Index(vertexOf.size());
+        if (m > 0) {
+            double meanArea = 0.0;
+            for (std::uint32_t v : vertexOf)
+                meanArea += surface.area[v];
+            meanArea = std::max(meanArea / double(m), 1e-30);
+            double extent = 0.0;
+            for (const Vec3& p : surface.positions)
+                extent = std::max(extent, glm::length(p - surface.positions.front()));
+            const double minDistance = std::max(1e-4 * extent, 1e-9);
+            std::vector<Eigen::Triplet<double>> entries;
+            entries.reserve(std::size_t(m) + 4 * surface.edges.size());
+            std::vector<double> diagonal(std::size_t(m), 0.0), heatIn(std::size_t(m), 0.0);
+            for (const Surface::Edge& e : surface.edges) {
+                if (row[e.a] == kNone || e.weight <= 0.0)
+                    continue;
+                entries.emplace_back(Eigen::Index(row[e.a]), Eigen::Index(row[e.b]), -e.weight);
+                entries.emplace_back(Eigen::Index(row[e.b]), Eigen::Index(row[e.a]), -e.weight);
+                diagonal[row[e.a]] += e.weight;
+                diagonal[row[e.b]] += e.weight;
+            }
+            for (Eigen::Index r = 0; r < m; ++r) {
+                const std::uint32_t v = vertexOf[std::size_t(r)];
+                const double area = std::max(surface.area[v], 1e-6 * meanArea);
+                if (nearest[v].visible != kNone) {
+                    const double d = std::max(nearest[v].visibleDistance, minDistance);
+                    heatIn[std::size_t(r)] = area / (d * d);
+                }
+                // A tiny leak keeps the system definite where edges are missing.
+                entries.emplace_back(r, r, diagonal[std::size_t(r)] + heatIn[std::size_t(r)] + 1e-9 * area / (extent * extent + 1e-30));
+            }
+            Eigen::SparseMatrix<double> system(m, m);
+            system.setFromTriplets(entries.begin(), entries.end());
+            if (!progress(0.3))
+                return cancelled();
+
+            // Bones that heat some vertex; the others stay at zero everywhere.
+            std::vector<std::uint32_t> heated;
+            {
+                std::vector<bool> used(bones.size(), false);
+                for (std::uint32_t v : vertexOf)
+                    if (nearest[v].visible != kNone)
+                        used[nearest[v].visible] = true;
+                for (std::uint32_t b = 0; b < bones.size(); ++b)
+                    if (used[b])
+                        heated.push_back(b);
+            }
+            stats.bonesSolved = heated.size();
+
+            Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> cholesky(system);
+            const bool factored = cholesky.info() == Eigen::Success;
+            std::unique_ptr<Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper>> iterative;
+            if (!factored) {
+                notes.push_back({Severity::Note, {}, "mesh '" + mesh.name + "': the direct solver failed; solving iteratively", {}});
+                iterative = std::make_unique<Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper>>(system);
+                iterative->setTolerance(1e-8);
+            }
+            if (!progress(0.45))
+                return cancelled();
+
+            // Bones in blocks: solved in parallel, merged into each vertex's top influences in order.
+            const std::size_t block = 16;
+            std::atomic<bool> stop{false};
+            for (std::size_t first = 0; first < heated.size() && !stop; first += block) {
+                const std::size_t count = std::min(block, heated.size() - first);
+                std::vector<Eigen::VectorXd> solutions(count);
+                tbb::parallel_for(std::size_t(0), count, [&](std::size_t k) {
+                    const std::uint32_t bone = heated[first + k];
+                    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+                    for (Eigen::Index r = 0; r < m; ++r)
+                        if (nearest[vertexOf[std::size_t(r)]].visible == bone)
+                            rhs[r] = heatIn[std::size_t(r)];
+                    solutions[k] = factored ? Eigen::VectorXd(cholesky.solve(rhs)) : Eigen::VectorXd(iterative->solve(rhs));
+                });
+                for (std::size_t k = 0; k < count; ++k)
+                    for (Eigen::Index r = 0; r < m; ++r)
+                        top[vertexOf[std::size_t(r)]].offer(heated[first + k], std::min(solutions[k][r], 1.0), limit);
+                if (!progress(0.45 + 0.5 * double(first + count) / double(heated.size())))
+                    stop = true;
+            }
+            if (stop)
+                return cancelled();
+        }
+        for (std::size_t v = 0; v < n; ++v)
+            if (!reachable[surface.part[v]])
+                byClosest[v] = true;
+    }
+
+    // Per file vertex: its surface vertex's influences, pruned and normalised;
+    // a vertex the heat left (nearly) cold takes its nearest visible, else closest, bone.
+    model::MeshWeights weights;
+    for (const SkinBone& bone : bones)
+        weights.joints.push_back(bone.key);
+    std::vector<std::vector<std::pair<std::uint32_t, double>>> perSurface(n);
+    for (std::size_t v = 0; v < n; ++v) {
+        auto& items = top[v].items;
+        double sum = 0.0;
+        for (const auto& item : items)
+            sum += item.second;
+        if (!(sum > 1e-12) || byClosest[v]) {
+            const std::uint32_t bone = !byClosest[v] && nearest[v].visible != kNone ? nearest[v].visible : nearest[v].closest;
+            items = {{bone, 1.0}};
+            ++stats.verticesByClosestBone;
+            continue;
+        }
+        for (auto& item : items)
+            item.second /= sum;
+        const double keep = items.front().second;
+        std::erase_if(items, [&](const auto& item) { return item.second < options.pruneBelow && item.second < keep; });
+        sum = 0.0;
+        for (const auto& item : items)
+            sum += item.second;
+        for (auto& item : items)
+            item.second /= sum;
+    }
+    weights.offsets.reserve(mesh.vertexCount() + 1);
+    weights.offsets.push_back(0);
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        for (const auto& [bone, share] : top[surface.welded[v]].items)
+            weights.influences.push_back({bone, float(share)});
+        weights.offsets.push_back(std::uint32_t(weights.influences.size()));
+    }
+    if (statsOut)
+        *statsOut = stats;
+    progress(1.0);
+    return Out(std::move(weights), std::move(notes));
+}
+
+} // namespace rs::skin
