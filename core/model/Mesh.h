@@ -42,3 +42,32 @@ struct MeshWeights {
 };
 
 } // namespace rs::model
+
+namespace rs::model {
+
+struct Material {
+    std::string name;
+    Vec3 baseColor{0.8};
+    std::string texture; // base colour texture: a path relative to the model file, or "" (none / embedded)
+};
+
+// A joint of a skeleton the model file brings (a skinned character's own rig):
+// parents first, bind pose in the guide's world space.
+struct FileJoint {
+    std::string name;
+    int parent = -1;
+    Mat4 world{1.0};
+};
+
+// A character model as imported: its meshes (names and vertex order as the file
+// has them, transforms applied, metres, Y-up) and materials.
+struct Model {
+    std::string path;                 // as given
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<FileJoint> joints;    // the file's own skeleton, if it has one
+    double metresPerUnit = 1.0;       // the file's unit
+    bool zUp = false;                 // the file's up axis was +Z (turned to +Y)
+};
+
+} // namespace rs::model

@@ -94,21 +94,23 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
     const bool heat = options.method == BindMethod::Heat;
     std::unique_ptr<Visibility> visibility = heat ? std::make_unique<Visibility>(surface) : nullptr;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& range) {
-        std::vector<std::pair<double, std::uint32_t>> order(bones.size());
+        std::vector<std::pair<double, std::uint32_t>> order(bones.size()); // squared distance, bone
         for (std::size_t v = range.begin(); v != range.end(); ++v) {
             const Vec3& p = surface.positions[v];
-            for (std::uint32_t b = 0; b < bones.size(); ++b)
-                order[b] = {distanceTo(bones[b], p), b};
+            for (std::uint32_t b = 0; b < bones.size(); ++b) {
+                const Vec3 d = p - nearestPointOn(bones[b], p);
+                order[b] = {glm::dot(d, d), b};
+            }
             const std::size_t tries = std::min<std::size_t>(bones.size(), kVisibilityTries);
             std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(tries), order.end());
             nearest[v].closest = order[0].second;
-            nearest[v].closestDistance = order[0].first;
+            nearest[v].closestDistance = std::sqrt(order[0].first);
             if (!visibility || surface.area[v] <= 0.0)
                 continue;
             for (std::size_t k = 0; k < tries; ++k)
                 if (visibility->clear(p, nearestPointOn(bones[order[k].second], p))) {
                     nearest[v].visible = order[k].second;
-                    nearest[v].visibleDistance = order[k].first;
+                    nearest[v].visibleDistance = std::sqrt(order[k].first);
                     break;
                 }
         }

@@ -34,12 +34,12 @@ Result<std::vector<SkinBone>> skinBones(const model::Rig& rig)
 Vec3 nearestPointOn(const SkinBone& bone, const Vec3& p)
 {
     Vec3 best = bone.head;
-    double bestDistance = glm::length(p - bone.head);
+    double bestDistance = glm::dot(p - bone.head, p - bone.head); // squared
     for (const Vec3& tail : bone.tails) {
         const Vec3 d = tail - bone.head;
         const double t = std::clamp(glm::dot(p - bone.head, d) / std::max(glm::dot(d, d), 1e-30), 0.0, 1.0);
         const Vec3 q = bone.head + t * d;
-        const double distance = glm::length(p - q);
+        const double distance = glm::dot(p - q, p - q);
         if (distance < bestDistance) {
             bestDistance = distance;
             best = q;
