@@ -12,6 +12,7 @@ int runDescribeTemplate(const std::vector<std::string>& args);
 int runNew(const std::vector<std::string>& args);
 int runAdd(const std::vector<std::string>& args);
 int runShapeIcons(const std::vector<std::string>& args);
+int runSkin(const std::vector<std::string>& args);
 std::string usage();
 
 } // namespace rs::cli

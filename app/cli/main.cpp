@@ -26,6 +26,8 @@ int main(int argc, char** argv)
         return rs::cli::runAdd(args);
     if (command == "shape-icons")
         return rs::cli::runShapeIcons(args);
+    if (command == "skin")
+        return rs::cli::runSkin(args);
     std::cerr << "rigsmith-cli: unknown command '" << command << "'\n" << rs::cli::usage();
     return 2;
 }

@@ -23,6 +23,10 @@ struct Mesh {
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
+// Identifies a mesh's vertex count and triangles (not its positions): weights
+// stored for a mesh apply 1:1 only while this is unchanged.
+std::uint64_t topologyFingerprint(const Mesh& mesh);
+
 // One skin joint's share of a vertex.
 struct Influence {
     std::uint32_t joint = 0; // into MeshWeights::joints

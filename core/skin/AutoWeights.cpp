@@ -92,7 +92,7 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
     // Nearest bone and nearest visible bone of every surface vertex.
     std::vector<Nearest> nearest(n);
     const bool heat = options.method == BindMethod::Heat;
-    std::unique_ptr<Visibility> visibility = heat ? std::make_unique<Visibility>(surface) : nullptr;
+    std::unique_ptr<Visibility> visibility = heat ? std::make_unique<Visibility>(surface, options.occluders) : nullptr;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& range) {
         std::vector<std::pair<double, std::uint32_t>> order(bones.size()); // squared distance, bone
         for (std::size_t v = range.begin(); v != range.end(); ++v) {

@@ -26,6 +26,9 @@ struct BindOptions {
     BindMethod method = BindMethod::Heat;
     int maxInfluences = 4;    // 1 to 8
     double pruneBelow = 0.01; // a share below this goes to the others
+    // The model's other meshes: they hide bones too (a closed head hides the
+    // eyes inside it from every bone, so the eyes take their closest bone).
+    std::vector<const model::Mesh*> occluders;
     // Told the fraction done (0 to 1); returning false cancels the bind.
     std::function<bool(double)> progress;
 };

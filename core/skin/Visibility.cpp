@@ -2,7 +2,7 @@
 
 #include <embree3/rtcore.h>
 
-#include <stdexcept>
+#include <array>
 
 namespace rs::skin {
 
@@ -11,25 +11,45 @@ struct Visibility::Impl {
     RTCScene scene = nullptr;
 };
 
-Visibility::Visibility(const Surface& surface) : m(std::make_unique<Impl>())
+namespace {
+
+void attachTriangles(RTCDevice device, RTCScene scene, const std::vector<glm::vec3>& positions,
+                     const std::vector<std::array<std::uint32_t, 3>>& triangles)
+{
+    if (triangles.empty())
+        return;
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
+    for (std::size_t v = 0; v < positions.size(); ++v)
+        for (int k = 0; k < 3; ++k)
+            vertices[3 * v + std::size_t(k)] = positions[v][k];
+    auto* indices = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            indices[3 * t + std::size_t(k)] = triangles[t][std::size_t(k)];
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene, geometry);
+    rtcReleaseGeometry(geometry);
+}
+
+} // namespace
+
+Visibility::Visibility(const Surface& surface, const std::vector<const model::Mesh*>& occluders) : m(std::make_unique<Impl>())
 {
     m->device = rtcNewDevice("threads=1"); // queries run on the caller's threads
     m->scene = rtcNewScene(m->device);
-    if (!surface.triangles.empty()) {
-        RTCGeometry geometry = rtcNewGeometry(m->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                     3 * sizeof(float), surface.positions.size()));
-        for (std::size_t v = 0; v < surface.positions.size(); ++v)
-            for (int k = 0; k < 3; ++k)
-                vertices[3 * v + std::size_t(k)] = float(surface.positions[v][k]);
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                       3 * sizeof(unsigned), surface.triangles.size()));
-        for (std::size_t t = 0; t < surface.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k)
-                indices[3 * t + std::size_t(k)] = surface.triangles[t][std::size_t(k)];
-        rtcCommitGeometry(geometry);
-        rtcAttachGeometry(m->scene, geometry);
-        rtcReleaseGeometry(geometry);
+    std::vector<glm::vec3> positions(surface.positions.begin(), surface.positions.end());
+    attachTriangles(m->device, m->scene, positions, surface.triangles);
+    for (const model::Mesh* mesh : occluders) {
+        std::vector<std::array<std::uint32_t, 3>> triangles;
+        for (std::size_t t = 0; t + 2 < mesh->indices.size(); t += 3) {
+            const std::array<std::uint32_t, 3> tri{mesh->indices[t], mesh->indices[t + 1], mesh->indices[t + 2]};
+            if (tri[0] < mesh->positions.size() && tri[1] < mesh->positions.size() && tri[2] < mesh->positions.size())
+                triangles.push_back(tri);
+        }
+        attachTriangles(m->device, m->scene, mesh->positions, triangles);
     }
     rtcCommitScene(m->scene);
 }

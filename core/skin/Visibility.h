@@ -9,7 +9,9 @@ namespace rs::skin {
 
 class Visibility {
 public:
-    explicit Visibility(const Surface& surface);
+    // The surface's triangles, and those of `occluders` (the model's other
+    // meshes: a head hides the eyes inside it).
+    explicit Visibility(const Surface& surface, const std::vector<const model::Mesh*>& occluders = {});
     ~Visibility();
     Visibility(const Visibility&) = delete;
     Visibility& operator=(const Visibility&) = delete;

@@ -1,9 +1,8 @@
 // Automatic weights (issue 19): the human of Debian's assimp-testmodels
-// (HUMAN.blend, 14,444 welded vertices) bound to the biped sample's 87 skin
-// joints, and the same human subdivided to about 58k and 231k vertices
-// (Blender's bone heat fails on those). The human is scaled and moved onto the
-// biped (same height, feet on the ground, centred): a stand-in for a guide
-// fitted to it.
+// (Collada/human.zae: a body and eyes, 14,444 welded vertices) bound to the
+// biped sample's 87 skin joints, and the same human subdivided to about 57k and
+// 230k vertices (Blender's bone heat fails on those). The biped sample is not
+// fitted to this human: the figure is the binder's speed, not its quality.
 #include "io/GuideFile.h"
 #include "io/ModelImport.h"
 #include "io/TemplateFolders.h"
@@ -21,7 +20,7 @@ using namespace rs;
 namespace {
 
 const std::string kSource = RIGSMITH_SOURCE_DIR;
-const std::string kHuman = "/usr/share/assimp/models/BLEND/HUMAN.blend";
+const std::string kHuman = "/usr/share/assimp/models/Collada/human.zae";
 
 const std::vector<skin::SkinBone>& bipedBones()
 {
@@ -34,44 +33,25 @@ const std::vector<skin::SkinBone>& bipedBones()
     return bones;
 }
 
-// The human's meshes as one, welded, scaled and moved onto the biped's bones.
-model::Mesh humanOnBiped()
+// The human's meshes (body and eyes), each welded across its seams. The human
+// is 1.66 m tall and stands at the origin like the biped.
+std::vector<model::Mesh> humanMeshes()
 {
+    std::vector<model::Mesh> out;
     auto imported = io::importModel(kHuman);
-    model::Mesh joined;
-    joined.name = "human";
     if (!imported)
-        return joined;
+        return out;
     for (const auto& mesh : imported->meshes) {
-        const auto base = std::uint32_t(joined.positions.size());
-        joined.positions.insert(joined.positions.end(), mesh.positions.begin(), mesh.positions.end());
-        for (auto i : mesh.indices)
-            joined.indices.push_back(base + i);
+        const skin::Surface surface = skin::makeSurface(mesh);
+        model::Mesh welded;
+        welded.name = mesh.name;
+        for (const Vec3& p : surface.positions)
+            welded.positions.emplace_back(p);
+        for (const auto& t : surface.triangles)
+            welded.indices.insert(welded.indices.end(), t.begin(), t.end());
+        out.push_back(std::move(welded));
     }
-    const skin::Surface surface = skin::makeSurface(joined);
-    model::Mesh welded;
-    welded.name = "human";
-    for (const Vec3& p : surface.positions)
-        welded.positions.emplace_back(p);
-    for (const auto& t : surface.triangles)
-        welded.indices.insert(welded.indices.end(), t.begin(), t.end());
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const auto& p : welded.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    Vec3 boneLo(1e30), boneHi(-1e30);
-    for (const auto& bone : bipedBones()) {
-        boneLo = glm::min(boneLo, bone.head);
-        boneHi = glm::max(boneHi, bone.head);
-    }
-    const double height = (boneHi.y - 0.0) * 1.08; // the head joint sits below the top of the head
-    const double scale = height / double(hi.y - lo.y);
-    const Vec3 centre((lo.x + hi.x) * 0.5, lo.y, (lo.z + hi.z) * 0.5);
-    const Vec3 target((boneLo.x + boneHi.x) * 0.5, 0.0, (boneLo.z + boneHi.z) * 0.5);
-    for (auto& p : welded.positions)
-        p = glm::vec3((Vec3(p) - centre) * scale + target);
-    return welded;
+    return out;
 }
 
 // Each triangle split in four at its edge midpoints (shared between neighbours).
@@ -95,38 +75,51 @@ model::Mesh subdivide(const model::Mesh& mesh)
     return out;
 }
 
-const model::Mesh& human(int subdivisions)
+const std::vector<model::Mesh>& human(int subdivisions)
 {
-    static std::map<int, model::Mesh> meshes;
-    auto it = meshes.find(subdivisions);
-    if (it == meshes.end()) {
-        model::Mesh mesh = humanOnBiped();
+    static std::map<int, std::vector<model::Mesh>> models;
+    auto it = models.find(subdivisions);
+    if (it == models.end()) {
+        std::vector<model::Mesh> meshes = humanMeshes();
         for (int k = 0; k < subdivisions; ++k)
-            mesh = subdivide(mesh);
-        it = meshes.emplace(subdivisions, std::move(mesh)).first;
+            for (auto& mesh : meshes)
+                mesh = subdivide(mesh);
+        it = models.emplace(subdivisions, std::move(meshes)).first;
     }
     return it->second;
 }
 
+// The whole human (body, then eyes, each hidden by the other) bound by heat.
 void BM_AutoWeightsHumanBiped(benchmark::State& state)
 {
-    const model::Mesh& mesh = human(int(state.range(0)));
-    if (mesh.positions.empty()) {
+    const std::vector<model::Mesh>& meshes = human(int(state.range(0)));
+    if (meshes.empty()) {
         state.SkipWithError(("cannot read " + kHuman + " (install assimp-testmodels)").c_str());
         return;
     }
-    skin::BindStats stats;
+    std::size_t vertices = 0, solved = 0, parts = 0, byClosest = 0;
     for (auto _ : state) {
-        auto weights = skin::bindMesh(mesh, bipedBones(), {}, &stats);
-        benchmark::DoNotOptimize(weights.ok());
+        vertices = solved = parts = byClosest = 0;
+        for (const model::Mesh& mesh : meshes) {
+            skin::BindOptions options;
+            for (const model::Mesh& other : meshes)
+                if (&other != &mesh)
+                    options.occluders.push_back(&other);
+            skin::BindStats stats;
+            auto weights = skin::bindMesh(mesh, bipedBones(), options, &stats);
+            benchmark::DoNotOptimize(weights.ok());
+            vertices += stats.surfaceVertices;
+            solved = std::max(solved, stats.bonesSolved);
+            parts += stats.parts;
+            byClosest += stats.partsByClosestBone;
+        }
     }
-    state.counters["vertices"] = double(stats.surfaceVertices);
+    state.counters["vertices"] = double(vertices);
     state.counters["bones"] = double(bipedBones().size());
-    state.counters["bones_solved"] = double(stats.bonesSolved);
-    state.counters["parts"] = double(stats.parts);
-    state.counters["parts_by_closest_bone"] = double(stats.partsByClosestBone);
+    state.counters["bones_solved"] = double(solved);
+    state.counters["parts"] = double(parts);
+    state.counters["parts_by_closest_bone"] = double(byClosest);
 }
-BENCHMARK(BM_AutoWeightsHumanBiped)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)
-    ->ReportAggregatesOnly(false);
+BENCHMARK(BM_AutoWeightsHumanBiped)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 
 } // namespace

@@ -1,0 +1,134 @@
+// rigsmith-cli skin bind: automatic weights without a display.
+#include "cli/Commands.h"
+
+#include "io/GuideFile.h"
+#include "io/ModelImport.h"
+#include "io/TemplateFolders.h"
+#include "io/WeightsFile.h"
+#include "rigging/RigBuilder.h"
+#include "skin/AutoWeights.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+namespace rs::cli {
+
+namespace {
+
+void print(const Diagnostics& diagnostics)
+{
+    for (const auto& d : diagnostics)
+        std::cerr << d.format() << '\n';
+}
+
+} // namespace
+
+int runSkin(const std::vector<std::string>& args)
+{
+    if (args.empty() || args[0] != "bind") {
+        std::cerr << "rigsmith-cli skin: expected 'bind'\n" << usage();
+        return 2;
+    }
+    std::string guidePath, modelPath, output;
+    skin::BindOptions options;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const bool hasValue = i + 1 < args.size();
+        if (a == "--model" && hasValue) {
+            modelPath = args[++i];
+        } else if (a == "--method" && hasValue) {
+            const auto method = skin::parseBindMethod(args[++i]);
+            if (!method) {
+                std::cerr << "rigsmith-cli skin bind: --method is heat, envelope or closest, not '" << args[i] << "'\n";
+                return 2;
+            }
+            options.method = *method;
+        } else if (a == "--max-influences" && hasValue) {
+            char* end = nullptr;
+            const long n = std::strtol(args[++i].c_str(), &end, 10);
+            if (args[i].empty() || *end != '\0' || n < 1 || n > 8) {
+                std::cerr << "rigsmith-cli skin bind: --max-influences is a whole number from 1 to 8, not '" << args[i] << "'\n";
+                return 2;
+            }
+            options.maxInfluences = int(n);
+        } else if (a == "-o" && hasValue) {
+            output = args[++i];
+            if (output.empty()) {
+                std::cerr << "rigsmith-cli skin bind: -o needs a file name\n";
+                return 2;
+            }
+        } else if (guidePath.empty() && !a.empty() && a[0] != '-') {
+            guidePath = a;
+        } else {
+            std::cerr << "rigsmith-cli skin bind: unexpected argument '" << a << "'\n" << usage();
+            return 2;
+        }
+    }
+    if (guidePath.empty() || modelPath.empty()) {
+        std::cerr << usage();
+        return 2;
+    }
+    if (output.empty())
+        output = std::filesystem::path(guidePath).replace_extension(".weights").string();
+
+    Diagnostics templateDiagnostics;
+    auto templates = io::loadDefaultTemplates(templateDiagnostics);
+    auto guide = io::readGuideFile(guidePath);
+    print(guide.diagnostics());
+    if (!guide)
+        return 1;
+    const model::Rig rig = rigging::buildRig(*guide, *templates);
+    if (hasErrors(rig.diagnostics)) {
+        print(rig.diagnostics);
+        return 1;
+    }
+    auto bones = skin::skinBones(rig);
+    if (!bones) {
+        print(bones.diagnostics());
+        return 1;
+    }
+    auto model = io::importModel(modelPath);
+    if (!model) {
+        print(model.diagnostics());
+        return 1;
+    }
+    std::vector<io::BoundMesh> bound;
+    for (const model::Mesh& mesh : model->meshes) {
+        int shown = -1;
+        options.progress = [&](double fraction) {
+            const int percent = int(fraction * 100.0);
+            if (percent / 10 != shown / 10) {
+                shown = percent;
+                std::cerr << "\rbinding " << mesh.name << ": " << percent << "%" << std::flush;
+            }
+            return true;
+        };
+        options.occluders.clear();
+        for (const model::Mesh& other : model->meshes)
+            if (&other != &mesh)
+                options.occluders.push_back(&other);
+        const auto start = std::chrono::steady_clock::now();
+        skin::BindStats stats;
+        auto weights = skin::bindMesh(mesh, *bones, options, &stats);
+        std::cerr << '\n';
+        print(weights.diagnostics());
+        if (!weights)
+            return 1;
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        std::cout << mesh.name << ": " << mesh.vertexCount() << " vertices (" << stats.surfaceVertices << " welded, "
+                  << stats.parts << (stats.parts == 1 ? " part" : " parts") << ") bound to " << bones->size() << " skin joints by "
+                  << skin::bindMethodName(options.method) << " in " << int(ms) << " ms; " << stats.verticesByClosestBone
+                  << " vertices by their closest bone\n";
+        bound.push_back({mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), weights.take()});
+    }
+    const Status saved = io::saveWeightsFile(output, bound);
+    print(saved.diagnostics());
+    if (saved.failed())
+        return 1;
+    std::cout << "weights: " << output << '\n';
+    return 0;
+}
+
+} // namespace rs::cli

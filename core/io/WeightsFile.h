@@ -1,0 +1,39 @@
+#pragma once
+// Skin weight files (`<guide>.weights`): the bound meshes' weights, beside the
+// guide. Binary, little-endian, versioned and checksummed; written atomically.
+//
+//   "RSWEIGHT"  8 bytes
+//   u32 version (1), u32 mesh count
+//   per mesh:   str name, u32 vertex count, u64 topology fingerprint
+//               (model::topologyFingerprint), u32 joint count, per joint
+//               {u32 instance, str branch, str tag} (the skin joint's NodeKey),
+//               u32 influence count, u32 offsets[vertex count + 1],
+//               per influence {u32 joint, f32 weight}
+//   u64 FNV-1a checksum of every byte before it
+//   (str: u32 byte length, then UTF-8 bytes)
+//
+// Reading checks every count against the bytes left, every offset, joint index
+// and weight; a damaged file is an error naming the byte where it breaks.
+#include "base/Result.h"
+#include "base/Status.h"
+#include "model/Mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace rs::io {
+
+struct BoundMesh {
+    std::string name;
+    std::size_t vertexCount = 0;
+    std::uint64_t fingerprint = 0;
+    model::MeshWeights weights;
+};
+
+std::string writeWeights(const std::vector<BoundMesh>& meshes);
+Result<std::vector<BoundMesh>> readWeights(const std::string& bytes, const std::string& path);
+
+Status saveWeightsFile(const std::string& path, const std::vector<BoundMesh>& meshes);
+Result<std::vector<BoundMesh>> loadWeightsFile(const std::string& path);
+
+} // namespace rs::io
