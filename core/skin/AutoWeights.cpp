@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace rs::skin {
@@ -91,18 +92,46 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
 
     // Nearest bone and nearest visible bone of every surface vertex.
     std::vector<Nearest> nearest(n);
+    // Each bone's bounding sphere (centre, radius), to skip far bones quickly.
+    std::vector<std::pair<Vec3, double>> spheres;
+    for (const SkinBone& bone : bones) {
+        Vec3 lo = bone.head, hi = bone.head;
+        for (const Vec3& tail : bone.tails) {
+            lo = glm::min(lo, tail);
+            hi = glm::max(hi, tail);
+        }
+        const Vec3 centre = 0.5 * (lo + hi);
+        double radius = glm::length(bone.head - centre);
+        for (const Vec3& tail : bone.tails)
+            radius = std::max(radius, glm::length(tail - centre));
+        spheres.emplace_back(centre, radius);
+    }
     const bool heat = options.method == BindMethod::Heat;
     std::unique_ptr<Visibility> visibility = heat ? std::make_unique<Visibility>(surface, options.occluders) : nullptr;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& range) {
-        std::vector<std::pair<double, std::uint32_t>> order(bones.size()); // squared distance, bone
+        std::vector<std::pair<double, std::uint32_t>> order; // squared distance, bone
+        std::vector<std::pair<double, std::uint32_t>> bounds(bones.size()); // a lower bound of the distance, bone
+        const std::size_t tries = std::min<std::size_t>(bones.size(), kVisibilityTries);
         for (std::size_t v = range.begin(); v != range.end(); ++v) {
             const Vec3& p = surface.positions[v];
-            for (std::uint32_t b = 0; b < bones.size(); ++b) {
+            // Exact distances only to bones whose bounding sphere could beat the
+            // `tries` nearest found so far (bones in order of their lower bound).
+            for (std::uint32_t b = 0; b < bones.size(); ++b)
+                bounds[b] = {std::max(glm::length(p - spheres[b].first) - spheres[b].second, 0.0), b};
+            std::sort(bounds.begin(), bounds.end());
+            order.clear();
+            double kth = std::numeric_limits<double>::infinity();
+            for (const auto& [bound, b] : bounds) {
+                if (order.size() >= tries && bound * bound > kth)
+                    break;
                 const Vec3 d = p - nearestPointOn(bones[b], p);
-                order[b] = {glm::dot(d, d), b};
+                order.emplace_back(glm::dot(d, d), b);
+                if (order.size() >= tries) {
+                    std::nth_element(order.begin(), order.begin() + std::ptrdiff_t(tries - 1), order.end());
+                    kth = order[tries - 1].first;
+                }
             }
-            const std::size_t tries = std::min<std::size_t>(bones.size(), kVisibilityTries);
-            std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(tries), order.end());
+            std::sort(order.begin(), order.end());
             nearest[v].closest = order[0].second;
             nearest[v].closestDistance = std::sqrt(order[0].first);
             if (!visibility || surface.area[v] <= 0.0)
@@ -234,7 +263,8 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
                 });
                 for (std::size_t k = 0; k < count; ++k)
                     for (Eigen::Index r = 0; r < m; ++r)
-                        top[vertexOf[std::size_t(r)]].offer(heated[first + k], std::min(solutions[k][r], 1.0), limit);
+                        if (solutions[k][r] > 1e-6) // far below any share that survives pruning
+                            top[vertexOf[std::size_t(r)]].offer(heated[first + k], std::min(solutions[k][r], 1.0), limit);
                 if (!progress(0.45 + 0.5 * double(first + count) / double(heated.size())))
                     stop = true;
             }

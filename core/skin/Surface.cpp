@@ -60,12 +60,12 @@ Surface makeSurface(const model::Mesh& mesh)
         extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     const double minArea = 1e-14 * std::max(extent * extent, 1e-12);
 
-    std::unordered_map<std::uint64_t, double> edgeWeights;
-    edgeWeights.reserve(mesh.indices.size());
+    std::vector<std::pair<std::uint64_t, double>> halfEdges; // (a << 32 | b, weight), merged below
+    halfEdges.reserve(mesh.indices.size());
     auto addEdge = [&](std::uint32_t a, std::uint32_t b, double w) {
         if (a > b)
             std::swap(a, b);
-        edgeWeights[(std::uint64_t(a) << 32) | b] += w;
+        halfEdges.emplace_back((std::uint64_t(a) << 32) | b, w);
     };
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         std::array<std::uint32_t, 3> tri{};
@@ -98,10 +98,14 @@ Surface makeSurface(const model::Mesh& mesh)
             addEdge(tri[std::size_t((k + 1) % 3)], tri[std::size_t((k + 2) % 3)], 0.5 * std::clamp(cot, 0.0, 1e4));
         }
     }
-    s.edges.reserve(edgeWeights.size());
-    for (const auto& [key, weight] : edgeWeights)
+    std::sort(halfEdges.begin(), halfEdges.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (std::size_t i = 0; i < halfEdges.size();) {
+        const std::uint64_t key = halfEdges[i].first;
+        double weight = 0.0;
+        for (; i < halfEdges.size() && halfEdges[i].first == key; ++i)
+            weight += halfEdges[i].second;
         s.edges.push_back({std::uint32_t(key >> 32), std::uint32_t(key & 0xffffffffu), weight});
-    std::sort(s.edges.begin(), s.edges.end(), [](const auto& x, const auto& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+    }
 
     // Parts: vertices joined by a usable triangle.
     std::vector<std::uint32_t> parent(n);
