@@ -8,9 +8,11 @@
 #include "io/TemplateFolders.h"
 #include "rigging/RigBuilder.h"
 #include "skin/AutoWeights.h"
+#include "skin/Skinning.h"
 #include "skin/Surface.h"
 
 #include <benchmark/benchmark.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <filesystem>
 #include <map>
@@ -121,5 +123,48 @@ void BM_AutoWeightsHumanBiped(benchmark::State& state)
     state.counters["parts_by_closest_bone"] = double(byClosest);
 }
 BENCHMARK(BM_AutoWeightsHumanBiped)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+
+} // namespace
+
+namespace {
+
+// CPU skinning, issue 19's target: 100k vertices, 80 joints, 4 influences each.
+void BM_SkinningCpu(benchmark::State& state)
+{
+    const std::size_t vertices = 100000, joints = 80;
+    std::vector<glm::vec3> positions(vertices), normals(vertices, glm::vec3(0, 1, 0)), outPositions(vertices), outNormals(vertices);
+    model::MeshWeights weights;
+    weights.joints.resize(joints);
+    weights.offsets.push_back(0);
+    std::uint32_t seed = 12345;
+    auto next = [&] { return (seed = seed * 1664525u + 1013904223u) >> 8; };
+    for (std::size_t v = 0; v < vertices; ++v) {
+        positions[v] = glm::vec3(float(next() % 1000) * 1e-3f, float(next() % 1000) * 1e-3f, float(next() % 1000) * 1e-3f);
+        for (int k = 0; k < 4; ++k)
+            weights.influences.push_back({std::uint32_t(next() % joints), 0.25f});
+        weights.offsets.push_back(std::uint32_t(weights.influences.size()));
+    }
+    std::vector<Mat4> matrices(joints);
+    for (std::size_t j = 0; j < joints; ++j)
+        matrices[j] = glm::translate(Mat4(1.0), Vec3(0.01 * double(j), 0, 0)) * glm::rotate(Mat4(1.0), 0.02 * double(j), Vec3(0, 0, 1));
+    skin::SkinningJob job;
+    job.method = state.range(0) == 0 ? skin::SkinningMethod::Linear : skin::SkinningMethod::DualQuaternion;
+    job.positions = positions;
+    job.normals = normals;
+    job.weights = &weights;
+    job.skinMatrices = matrices;
+    job.outPositions = outPositions;
+    job.outNormals = outNormals;
+    if (job.validate().failed()) {
+        state.SkipWithError("invalid job");
+        return;
+    }
+    for (auto _ : state) {
+        job.run();
+        benchmark::DoNotOptimize(outPositions.data());
+    }
+    state.counters["vertices"] = double(vertices);
+}
+BENCHMARK(BM_SkinningCpu)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 } // namespace
