@@ -98,10 +98,12 @@ std::string writeWeights(const std::vector<BoundMesh>& meshes)
         w.raw(std::uint32_t(mesh.vertexCount));
         w.raw(mesh.fingerprint);
         w.raw(std::uint32_t(mesh.weights.joints.size()));
-        for (const NodeKey& key : mesh.weights.joints) {
+        for (std::size_t j = 0; j < mesh.weights.joints.size(); ++j) {
+            const NodeKey& key = mesh.weights.joints[j];
             w.raw(std::uint32_t(key.instance));
             w.text(key.branch);
             w.text(key.tag);
+            w.raw(std::int32_t(j < mesh.weights.parents.size() ? mesh.weights.parents[j] : -1));
         }
         w.raw(std::uint32_t(mesh.weights.influences.size()));
         for (std::uint32_t offset : mesh.weights.offsets)
@@ -135,15 +137,19 @@ Result<std::vector<BoundMesh>> readWeights(const std::string& bytes, const std::
         for (std::uint32_t m = 0; m < meshCount && r.error.empty(); ++m) {
             BoundMesh mesh;
             std::uint32_t vertices = 0, joints = 0, influences = 0;
-            if (!r.text(mesh.name) || !r.raw(vertices) || !r.raw(mesh.fingerprint) || !r.count(joints, 12))
+            if (!r.text(mesh.name) || !r.raw(vertices) || !r.raw(mesh.fingerprint) || !r.count(joints, 16))
                 break;
             mesh.vertexCount = vertices;
             for (std::uint32_t j = 0; j < joints && r.error.empty(); ++j) {
                 NodeKey key;
                 std::uint32_t instance = 0;
-                if (r.raw(instance) && r.text(key.branch) && r.text(key.tag)) {
+                std::int32_t parent = -1;
+                if (r.raw(instance) && r.text(key.branch) && r.text(key.tag) && r.raw(parent)) {
+                    if (parent < -1 || parent >= std::int32_t(joints) || parent == std::int32_t(j))
+                        r.fail("mesh '" + mesh.name + "': joint " + std::to_string(j) + " has a parent it does not list");
                     key.instance = instance;
                     mesh.weights.joints.push_back(std::move(key));
+                    mesh.weights.parents.push_back(parent);
                 }
             }
             if (!r.error.empty() || !r.count(influences, 8))

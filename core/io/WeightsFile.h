@@ -6,7 +6,8 @@
 //   u32 version (1), u32 mesh count
 //   per mesh:   str name, u32 vertex count, u64 topology fingerprint
 //               (model::topologyFingerprint), u32 joint count, per joint
-//               {u32 instance, str branch, str tag} (the skin joint's NodeKey),
+//               {u32 instance, str branch, str tag (the skin joint's NodeKey),
+//               i32 parent (its skin parent's index, -1 for a root)},
 //               u32 influence count, u32 offsets[vertex count + 1],
 //               per influence {u32 joint, f32 weight}
 //   u64 FNV-1a checksum of every byte before it

@@ -37,6 +37,7 @@ struct Influence {
 // limit, summing to 1), keyed by skin joint identity so a rebuild keeps them.
 struct MeshWeights {
     std::vector<NodeKey> joints;          // the skin joints that may influence
+    std::vector<std::int32_t> parents;    // per joint: its skin parent (an index into joints), -1 for a root
     std::vector<std::uint32_t> offsets;   // vertex v's influences: [offsets[v], offsets[v + 1])
     std::vector<Influence> influences;
 

@@ -279,8 +279,10 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
     // Per file vertex: its surface vertex's influences, pruned and normalised;
     // a vertex the heat left (nearly) cold takes its nearest visible, else closest, bone.
     model::MeshWeights weights;
-    for (const SkinBone& bone : bones)
+    for (const SkinBone& bone : bones) {
         weights.joints.push_back(bone.key);
+        weights.parents.push_back(bone.parent);
+    }
     std::vector<std::vector<std::pair<std::uint32_t, double>>> perSurface(n);
     for (std::size_t v = 0; v < n; ++v) {
         auto& items = top[v].items;

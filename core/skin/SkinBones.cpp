@@ -17,6 +17,7 @@ Result<std::vector<SkinBone>> skinBones(const model::Rig& rig)
         bones[j].node = joints[j].node;
         bones[j].key = rig.nodes[joints[j].node].key;
         bones[j].head = translationOf(joints[j].bindWorld);
+        bones[j].parent = joints[j].parent;
     }
     for (std::size_t j = 0; j < joints.size(); ++j)
         if (joints[j].parent >= 0)

@@ -13,6 +13,7 @@ namespace rs::skin {
 struct SkinBone {
     NodeKey key;                    // the skin joint
     model::RigNodeIndex node = model::kNoNode;
+    int parent = -1;                // the parent skin joint's bone, -1 for the root
     Vec3 head{0.0};
     std::vector<Vec3> tails;        // segment ends; none: the bone is its head point
 };

@@ -6,6 +6,7 @@
 
 #include "rigging/RigBuilder.h"
 #include "skin/AutoWeights.h"
+#include "skin/Retarget.h"
 #include "skin/Surface.h"
 
 #include <gtest/gtest.h>
@@ -234,4 +235,46 @@ TEST(AutoWeights, TheBipedsSkinJointsAreItsBones)
     EXPECT_EQ(bones->size(), rig.skinJointCount());
     for (const SkinBone& b : *bones)
         EXPECT_EQ(rig.nodes[b.node].kind, model::RigNodeKind::Joint);
+}
+
+TEST(AutoWeights, WeightsFollowTheirJointsIntoAnotherBuildAndAGoneJointGivesItsShareToItsAncestor)
+{
+    const model::Mesh mesh = tube(2.0, 0.1, 21, 8);
+    const std::vector<SkinBone> before = {bone("root", {0, 0, 0}, {{0.7, 0, 0}}), bone("mid", {0.7, 0, 0}, {{1.4, 0, 0}}),
+                                          bone("tip", {1.4, 0, 0}, {{2, 0, 0}})};
+    std::vector<SkinBone> bones = before;
+    bones[1].parent = 0;
+    bones[2].parent = 1;
+    auto weights = skin::bindMesh(mesh, bones, {});
+    ASSERT_TRUE(weights.ok());
+    EXPECT_EQ(weights->parents, (std::vector<std::int32_t>{-1, 0, 1}));
+
+    // The next build lists the joints in another order: nothing changes but the indices.
+    std::vector<SkinBone> reordered = {bones[2], bones[0], bones[1]};
+    reordered[0].parent = 2;
+    reordered[1].parent = -1;
+    reordered[2].parent = 1;
+    auto moved = skin::retargetWeights(*weights, reordered, "tube");
+    ASSERT_TRUE(moved.ok());
+    EXPECT_TRUE(moved.diagnostics().empty());
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+        EXPECT_EQ(moved->joints[dominant(*moved, v)], weights->joints[dominant(*weights, v)]);
+
+    // "mid" is gone: its share goes to "root", its parent, and a note says so.
+    const std::vector<SkinBone> without = {bones[0], [&] { SkinBone t = bones[2]; t.parent = 0; return t; }()};
+    auto kept = skin::retargetWeights(*weights, without, "tube");
+    ASSERT_TRUE(kept.ok());
+    expectWellFormed(mesh, *kept, 4, "mid gone");
+    ASSERT_EQ(kept.diagnostics().size(), 1u);
+    EXPECT_NE(kept.diagnostics().front().message.find("its ancestor"), std::string::npos);
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        if (std::abs(mesh.positions[v].x - 1.05f) < 0.06f)
+            EXPECT_EQ(kept->joints[dominant(*kept, v)].tag, "root") << "the middle of the gone bone";
+        float tipBefore = 0.0f, tipAfter = 0.0f;
+        for (auto* i = weights->begin(v); i != weights->end(v); ++i)
+            if (weights->joints[i->joint].tag == "tip") tipBefore = i->weight;
+        for (auto* i = kept->begin(v); i != kept->end(v); ++i)
+            if (kept->joints[i->joint].tag == "tip") tipAfter = i->weight;
+        EXPECT_NEAR(tipAfter, tipBefore, 1e-6f) << "the surviving joints keep their shares";
+    }
 }
