@@ -46,9 +46,10 @@ std::string usage()
            "        generated mesh of about VERTICES vertices; --reference writes what was exported as JSON)\n"
            "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
            "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
-           "       rigsmith-cli skin bind GUIDE.yml --model FILE [--method heat|envelope|closest] [--max-influences N]\n"
-           "                          [-o WEIGHTS]   (automatic weights of every mesh of FILE for the guide's rig,\n"
-           "                          written to GUIDE.weights unless -o)\n"
+           "       rigsmith-cli model add GUIDE.yml FILE   (a character model: OBJ, FBX, glTF, Collada...)\n"
+           "       rigsmith-cli skin bind GUIDE.yml [--model FILE] [--method heat|envelope|closest] [--max-influences N]\n"
+           "                          [-o WEIGHTS]   (automatic weights of every mesh of the guide's models, or of FILE,\n"
+           "                          for the guide's rig, written to GUIDE.weights unless -o)\n"
            "       rigsmith-cli check-templates [DIR...]\n"
            "       rigsmith-cli describe-template ID   (what Rigsmith understood of every key)\n"
            "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";

@@ -13,6 +13,7 @@ int runNew(const std::vector<std::string>& args);
 int runAdd(const std::vector<std::string>& args);
 int runShapeIcons(const std::vector<std::string>& args);
 int runSkin(const std::vector<std::string>& args);
+int runModel(const std::vector<std::string>& args);
 std::string usage();
 
 } // namespace rs::cli

@@ -8,6 +8,7 @@
 #include "rigging/RigBuilder.h"
 #include "skin/AutoWeights.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -66,7 +67,7 @@ int runSkin(const std::vector<std::string>& args)
             return 2;
         }
     }
-    if (guidePath.empty() || modelPath.empty()) {
+    if (guidePath.empty()) {
         std::cerr << usage();
         return 2;
     }
@@ -89,12 +90,23 @@ int runSkin(const std::vector<std::string>& args)
         print(bones.diagnostics());
         return 1;
     }
-    auto model = io::importModel(modelPath);
+    std::vector<std::string> modelPaths = guide->models;
+    if (!modelPath.empty())
+        modelPaths = {modelPath};
+    if (modelPaths.empty()) {
+        std::cerr << guidePath << ": error: the guide has no model to bind; add one with 'rigsmith-cli model add " << guidePath
+                  << " FILE' or name one with --model\n";
+        return 1;
+    }
+    std::vector<io::BoundMesh> bound;
+    const auto weightsFolder = std::filesystem::absolute(output).parent_path();
+    for (const std::string& path : modelPaths) {
+    auto model = io::importModel(path);
     if (!model) {
         print(model.diagnostics());
         return 1;
     }
-    std::vector<io::BoundMesh> bound;
+    const std::string relativeModel = std::filesystem::absolute(path).lexically_relative(weightsFolder).string();
     for (const model::Mesh& mesh : model->meshes) {
         int shown = -1;
         options.progress = [&](double fraction) {
@@ -121,13 +133,47 @@ int runSkin(const std::vector<std::string>& args)
                   << stats.parts << (stats.parts == 1 ? " part" : " parts") << ") bound to " << bones->size() << " skin joints by "
                   << skin::bindMethodName(options.method) << " in " << int(ms) << " ms; " << stats.verticesByClosestBone
                   << " vertices by their closest bone\n";
-        bound.push_back({mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), weights.take()});
+        bound.push_back({relativeModel, mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), weights.take()});
+    }
     }
     const Status saved = io::saveWeightsFile(output, bound);
     print(saved.diagnostics());
     if (saved.failed())
         return 1;
     std::cout << "weights: " << output << '\n';
+    return 0;
+}
+
+int runModel(const std::vector<std::string>& args)
+{
+    if (args.size() != 3 || args[0] != "add") {
+        std::cerr << "rigsmith-cli model: expected 'add GUIDE FILE'\n" << usage();
+        return 2;
+    }
+    const std::string& guidePath = args[1];
+    auto guide = io::readGuideFile(guidePath);
+    print(guide.diagnostics());
+    if (!guide)
+        return 1;
+    auto model = io::importModel(args[2]);
+    print(model.diagnostics());
+    if (!model)
+        return 1;
+    const std::string absolute = std::filesystem::absolute(args[2]).lexically_normal().string();
+    if (std::find(guide->models.begin(), guide->models.end(), absolute) != guide->models.end()) {
+        std::cerr << guidePath << ": error: " << args[2] << " is already one of the guide's models\n";
+        return 1;
+    }
+    guide->models.push_back(absolute);
+    const Status saved = io::saveGuideFile(*guide, guidePath);
+    print(saved.diagnostics());
+    if (saved.failed())
+        return 1;
+    std::size_t vertices = 0;
+    for (const auto& mesh : model->meshes)
+        vertices += mesh.vertexCount();
+    std::cout << guidePath << ": added " << args[2] << " (" << model->meshes.size() << (model->meshes.size() == 1 ? " mesh, " : " meshes, ")
+              << vertices << " vertices)\n";
     return 0;
 }
 

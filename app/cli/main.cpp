@@ -28,6 +28,8 @@ int main(int argc, char** argv)
         return rs::cli::runShapeIcons(args);
     if (command == "skin")
         return rs::cli::runSkin(args);
+    if (command == "model")
+        return rs::cli::runModel(args);
     std::cerr << "rigsmith-cli: unknown command '" << command << "'\n" << rs::cli::usage();
     return 2;
 }

@@ -260,6 +260,15 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
         else if (key == "naming") readNaming(r, kv.second, doc.naming);
         else if (key == "pose" || key == "legacy_pose") readPose(r, kv.second, doc.pose, legacyPose);
         else if (key == "reference_model") { if (auto s = r.string(kv.second, "reference_model")) doc.referenceModel = *s; }
+        else if (key == "models") {
+            if (kv.second.IsNull()) continue;
+            if (!r.expectSequence(kv.second, "models")) continue;
+            for (const auto& item : kv.second)
+                if (auto s = r.string(item, "models")) {
+                    if (s->empty()) r.error(item, "a model path is empty");
+                    else doc.models.push_back(*s);
+                }
+        }
         else if (key == "instances") {
             if (kv.second.IsNull()) continue;
             if (!r.expectSequence(kv.second, "instances")) continue;
@@ -287,6 +296,10 @@ Result<GuideDocument> readGuideFile(const std::string& path)
         if (reference.is_relative())
             doc->referenceModel = (fs::absolute(path).parent_path() / reference).lexically_normal().string();
     }
+    if (doc)
+        for (std::string& model : doc->models)
+            if (fs::path(model).is_relative())
+                model = (fs::absolute(path).parent_path() / model).lexically_normal().string();
     return doc;
 }
 
@@ -316,6 +329,15 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
         if (!directory.empty() && fs::path(reference).is_absolute()) // kept relative so the guide and model move together
             reference = fs::path(reference).lexically_relative(fs::absolute(directory)).string();
         out << "reference_model: " << quoteIfNeeded(reference.empty() ? doc.referenceModel : reference) << "\n";
+    }
+    if (!doc.models.empty()) {
+        out << "models:\n";
+        for (const std::string& model : doc.models) {
+            std::string relative = model;
+            if (!directory.empty() && fs::path(model).is_absolute())
+                relative = fs::path(model).lexically_relative(fs::absolute(directory)).string();
+            out << "  - " << quoteIfNeeded(relative.empty() ? model : relative) << "\n";
+        }
     }
     out << "instances:" << (doc.instances().empty() ? " []\n" : "\n");
     for (const TemplateInstance& i : doc.instances()) {

@@ -94,6 +94,7 @@ std::string writeWeights(const std::vector<BoundMesh>& meshes)
     w.raw(kVersion);
     w.raw(std::uint32_t(meshes.size()));
     for (const BoundMesh& mesh : meshes) {
+        w.text(mesh.model);
         w.text(mesh.name);
         w.raw(std::uint32_t(mesh.vertexCount));
         w.raw(mesh.fingerprint);
@@ -133,11 +134,11 @@ Result<std::vector<BoundMesh>> readWeights(const std::string& bytes, const std::
     if (version != kVersion)
         return failure("weights file version " + std::to_string(version) + " is not one this Rigsmith reads (1)");
     std::vector<BoundMesh> meshes;
-    if (r.count(meshCount, 24)) {
+    if (r.count(meshCount, 28)) {
         for (std::uint32_t m = 0; m < meshCount && r.error.empty(); ++m) {
             BoundMesh mesh;
             std::uint32_t vertices = 0, joints = 0, influences = 0;
-            if (!r.text(mesh.name) || !r.raw(vertices) || !r.raw(mesh.fingerprint) || !r.count(joints, 16))
+            if (!r.text(mesh.model) || !r.text(mesh.name) || !r.raw(vertices) || !r.raw(mesh.fingerprint) || !r.count(joints, 16))
                 break;
             mesh.vertexCount = vertices;
             for (std::uint32_t j = 0; j < joints && r.error.empty(); ++j) {

@@ -4,7 +4,8 @@
 //
 //   "RSWEIGHT"  8 bytes
 //   u32 version (1), u32 mesh count
-//   per mesh:   str name, u32 vertex count, u64 topology fingerprint
+//   per mesh:   str model (its file, relative to the weights file), str name,
+//               u32 vertex count, u64 topology fingerprint
 //               (model::topologyFingerprint), u32 joint count, per joint
 //               {u32 instance, str branch, str tag (the skin joint's NodeKey),
 //               i32 parent (its skin parent's index, -1 for a root)},
@@ -25,7 +26,8 @@
 namespace rs::io {
 
 struct BoundMesh {
-    std::string name;
+    std::string model; // the model file, relative to the weights file's folder
+    std::string name;  // the mesh's name in it
     std::size_t vertexCount = 0;
     std::uint64_t fingerprint = 0;
     model::MeshWeights weights;

@@ -111,6 +111,10 @@ public:
     // A model shown see-through while placing guides (display only, not built).
     // An absolute path in memory; the guide file keeps it relative to itself.
     std::string referenceModel;
+    // The character's models (any format io::importModel reads), bound to the
+    // rig by skin weights kept beside the guide (`<guide>.weights`). Absolute
+    // paths in memory; the guide file keeps them relative to itself.
+    std::vector<std::string> models;
     bool operator==(const GuideDocument&) const = default;
 
 private:

@@ -14,6 +14,7 @@ namespace {
 std::vector<io::BoundMesh> sample()
 {
     io::BoundMesh mesh;
+    mesh.model = "models/human.fbx";
     mesh.name = "body";
     mesh.vertexCount = 3;
     mesh.fingerprint = 0x1234567890abcdefull;
@@ -33,6 +34,7 @@ TEST(WeightsFile, ARoundTripKeepsEveryWeightAndJoint)
     ASSERT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
     ASSERT_EQ(loaded->size(), 1u);
     const io::BoundMesh& mesh = loaded->front();
+    EXPECT_EQ(mesh.model, "models/human.fbx");
     EXPECT_EQ(mesh.name, "body");
     EXPECT_EQ(mesh.vertexCount, 3u);
     EXPECT_EQ(mesh.fingerprint, 0x1234567890abcdefull);

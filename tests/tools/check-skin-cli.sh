@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# rigsmith-cli model add + skin bind on a copy of a sample guide: the model is
+# kept relative to the guide, binding without --model binds it, the weights
+# land beside the guide, adding it twice is refused, a guide without a model
+# says how to add one.
+set -euo pipefail
+cli=$1
+sample=$2
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+mkdir -p "$dir/models"
+cp /usr/share/assimp/models/OBJ/box.obj "$dir/models/box.obj"
+cp "$sample" "$dir/guide.yml"
+"$cli" model add "$dir/guide.yml" "$dir/models/box.obj"
+grep -q '^  - models/box.obj$' "$dir/guide.yml" || { echo "the model path is not kept relative"; exit 1; }
+if "$cli" model add "$dir/guide.yml" "$dir/models/box.obj" 2>/dev/null; then echo "adding twice was accepted"; exit 1; fi
+"$cli" skin bind "$dir/guide.yml" --max-influences 2 > "$dir/out.txt"
+grep -q "bound to" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+test -s "$dir/guide.weights" || { echo "no weights beside the guide"; exit 1; }
+cp "$sample" "$dir/empty.yml"
+if "$cli" skin bind "$dir/empty.yml" 2> "$dir/err.txt"; then echo "a guide without a model bound"; exit 1; fi
+grep -q "model add" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
+echo "ok"
