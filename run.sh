@@ -15,8 +15,9 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )
-# Used by the test suite only: real consumers of our exports.
-TEST_PACKAGES=(blender python3-numpy)
+# Used by the test suite only: real consumers of our exports, and clang with
+# its runtime libraries (libFuzzer, sanitizers) for the fuzz targets.
+TEST_PACKAGES=(blender python3-numpy clang libclang-rt-dev)
 
 build_only=0
 editor_args=()
