@@ -246,7 +246,8 @@ void reportOrphanRecords(const model::GuideDocument& guide, model::Rig& rig)
         rig.diagnostics.push_back(makeWarning({}, "the test pose of '" + text + "' (an older guide's record) names no "
                                                   "instance of this guide; it is kept in the guide"));
     for (const model::TemplateInstance& instance : guide.instances())
-        for (const auto& [tag, edit] : instance.shapes)
+        for (const auto& shapeEdit : instance.shapes) { // not a structured binding: clang 14 cannot capture one
+            const std::string& tag = shapeEdit.first;
             if (!rig.find(NodeKey{instance.id, {}, tag}) && !std::any_of(rig.nodes.begin(), rig.nodes.end(), [&](const model::RigNode& n) {
                     return n.key.instance == instance.id && n.key.tag == tag;
                 })) {
@@ -255,6 +256,7 @@ void reportOrphanRecords(const model::GuideDocument& guide, model::Rig& rig)
                 d.subject = Subject::ofInstance(instance.id);
                 rig.diagnostics.push_back(std::move(d));
             }
+        }
 }
 
 } // namespace
