@@ -16,8 +16,10 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )
-# Used by the test suite only: real consumers of our exports.
-TEST_PACKAGES=(blender python3-numpy assimp-testmodels)
+# Used by the test suite only: real consumers of our exports, the meshes of
+# assimp-testmodels (a human to bind), and clang with its runtime libraries
+# (libFuzzer, sanitizers) for the fuzz targets.
+TEST_PACKAGES=(blender python3-numpy assimp-testmodels clang libclang-rt-dev)
 
 build_only=0
 editor_args=()

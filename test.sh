@@ -27,3 +27,19 @@ if [ "${RIGSMITH_SKIP_ASAN:-0}" != "1" ]; then
     ./build-asan/tests/rigsmith-core-tests --gtest_brief=1
   echo "AddressSanitizer core tests: $(( $(date +%s) - start )) s"
 fi
+
+# libFuzzer over every file reader (guides, manifests, conditions, shapes):
+# a separate small clang build of the core layers they need, with ASan + UBSan,
+# each target run for RIGSMITH_FUZZ_SECONDS (30) over its corpus in
+# tests/fuzz/<target>/corpus. Skipped when clang is missing (run.sh
+# --with-test-tools installs it).
+if [ "${RIGSMITH_SKIP_FUZZ:-0}" != "1" ] && command -v clang++ >/dev/null; then
+  start=$(date +%s)
+  cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DRIGSMITH_FUZZ=ON \
+    -DRIGSMITH_BUILD_GUI=OFF -DRIGSMITH_BUILD_TESTS=OFF > /dev/null
+  cmake --build build-fuzz --target fuzz-targets
+  tests/fuzz/run.sh build-fuzz "${RIGSMITH_FUZZ_SECONDS:-30}"
+  echo "fuzzing: $(( $(date +%s) - start )) s"
+elif [ "${RIGSMITH_SKIP_FUZZ:-0}" != "1" ]; then
+  echo "fuzzing skipped: clang++ not found (./run.sh --build-only --with-test-tools installs it)"
+fi

@@ -1,6 +1,7 @@
 #include "cli/Commands.h"
 
 #include "base/Paths.h"
+#include "base/TextScalars.h"
 #include "rigging/RigBuilder.h"
 #include "eval/PoseTools.h"
 #include "io/AtomicFile.h"
@@ -86,13 +87,13 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
             }
             e.preset = *preset;
         } else if (a == "--proxy-mesh" && hasValue) {
-            char* end = nullptr;
-            const long n = std::strtol(args[++i].c_str(), &end, 10);
-            if (*end != '\0' || n <= 0) {
-                std::cerr << "rigsmith-cli: --proxy-mesh wants a positive vertex count, not '" << args[i] << "'\n";
+            const auto n = parseInteger(args[++i]); // digits only: no overflow, spaces or hex
+            if (!n || *n <= 0 || std::size_t(*n) > io::kMaxProxyVertices) {
+                std::cerr << "rigsmith-cli: --proxy-mesh wants a vertex count from 1 to " << io::kMaxProxyVertices
+                          << ", not '" << args[i] << "'\n";
                 return false;
             }
-            e.proxyVertices = std::size_t(n);
+            e.proxyVertices = std::size_t(*n);
         } else if ((a == "--dump" || a == "-o" || a == "--reference") && hasValue)
             (a == "--dump" ? b.dump : a == "-o" ? e.path : e.referencePath) = args[++i];
         else if (!a.empty() && a[0] != '-' && b.guide.empty())

@@ -7,7 +7,12 @@
 #include "io/GuideFile.h"
 #include "io/TemplateFolders.h"
 
+#include "base/TextScalars.h"
+
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <iostream>
@@ -22,17 +27,41 @@ void print(const Diagnostics& diagnostics)
         std::cerr << d.format() << '\n';
 }
 
+// Coordinates of --at, in metres: finite and within a kilometre of the origin.
+constexpr double kMaxCoordinate = 1000.0;
+
 // "on", "3", "0.25", "[L, R]", "chest": the YAML scalar types options use.
-Value parseOptionValue(const std::string& text)
+// Nullopt (with the reason) for a number that is not finite or does not fit.
+std::optional<Value> parseOptionValue(const std::string& text, std::string& error)
 {
     if (text == "on" || text == "true" || text == "yes") return true;
     if (text == "off" || text == "false" || text == "no") return false;
-    char* end = nullptr;
-    const long long i = std::strtoll(text.c_str(), &end, 10);
-    if (!text.empty() && end && *end == '\0') return i;
-    const double d = std::strtod(text.c_str(), &end);
-    if (!text.empty() && end && *end == '\0') return d;
+    if (auto i = parseInteger(text)) return *i;
+    // Digits that do not fit a long long are out of range, not a double.
+    const bool integral = text.find_first_not_of("+-0123456789") == std::string::npos &&
+                          text.find_first_of("0123456789") != std::string::npos;
+    if (auto d = parseNumber(text); d && !integral) {
+        if (std::isfinite(*d)) return *d;
+        error = "is not a finite number";
+        return std::nullopt;
+    }
+    char* end = nullptr; // parseNumber refuses a double that does not fit: tell that from text
+    errno = 0;
+    std::strtod(text.c_str(), &end);
+    if (integral || (end != text.c_str() && *end == '\0' && errno == ERANGE)) {
+        error = "is out of range";
+        return std::nullopt;
+    }
     return text;
+}
+
+// Names and values go into the guide and from there into exports, which want UTF-8.
+bool isUtf8Argument(const std::string& command, const std::string& flag, const std::string& value)
+{
+    if (invalidUtf8Offset(value) == std::string::npos)
+        return true;
+    std::cerr << "rigsmith-cli " << command << ": " << flag << " is not valid UTF-8\n";
+    return false;
 }
 
 } // namespace
@@ -41,7 +70,7 @@ int runNew(const std::vector<std::string>& args)
 {
     std::string path, name;
     for (std::size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == "--name" && i + 1 < args.size()) name = args[++i];
+        if (args[i] == "--name" && i + 1 < args.size()) { name = args[++i]; if (!isUtf8Argument("new", "--name", name)) return 2; }
         else if (path.empty() && !args[i].empty() && args[i][0] != '-') path = args[i];
         else { std::cerr << "rigsmith-cli new: unexpected argument '" << args[i] << "'\n" << usage(); return 2; }
     }
@@ -65,7 +94,7 @@ int runAdd(const std::vector<std::string>& args)
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         if (a == "--under" && i + 1 < args.size()) under = args[++i];
-        else if (a == "--name" && i + 1 < args.size()) name = args[++i];
+        else if (a == "--name" && i + 1 < args.size()) { name = args[++i]; if (!isUtf8Argument("add", "--name", name)) return 2; }
         else if (a == "--at" && i + 1 < args.size()) {
             double x, y, z;
             char tail;
@@ -73,12 +102,21 @@ int runAdd(const std::vector<std::string>& args)
                 std::cerr << "rigsmith-cli add: --at expects X,Y,Z, got '" << args[i] << "'\n";
                 return 2;
             }
+            if (!(std::abs(x) <= kMaxCoordinate && std::abs(y) <= kMaxCoordinate && std::abs(z) <= kMaxCoordinate)) {
+                std::cerr << "rigsmith-cli add: --at wants finite coordinates from -" << kMaxCoordinate << " to "
+                          << kMaxCoordinate << " metres, got '" << args[i] << "'\n";
+                return 2;
+            }
             at = Vec3(x, y, z);
         } else if (a == "--set" && i + 1 < args.size()) {
             const std::string pair = args[++i];
             const auto eq = pair.find('=');
             if (eq == std::string::npos || eq == 0) { std::cerr << "rigsmith-cli add: --set expects OPTION=VALUE, got '" << pair << "'\n"; return 2; }
-            options[pair.substr(0, eq)] = parseOptionValue(pair.substr(eq + 1));
+            if (!isUtf8Argument("add", "--set", pair)) return 2;
+            std::string why;
+            const auto value = parseOptionValue(pair.substr(eq + 1), why);
+            if (!value) { std::cerr << "rigsmith-cli add: --set " << pair.substr(0, eq) << ": '" << pair.substr(eq + 1) << "' " << why << "\n"; return 2; }
+            options[pair.substr(0, eq)] = *value;
         } else if (path.empty() && !a.empty() && a[0] != '-') path = a;
         else if (templateId.empty() && !a.empty() && a[0] != '-') templateId = a;
         else { std::cerr << "rigsmith-cli add: unexpected argument '" << a << "'\n" << usage(); return 2; }

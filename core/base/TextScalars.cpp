@@ -34,6 +34,30 @@ std::optional<T> parseWhole(const std::string& t)
 
 std::optional<long long> parseInteger(const std::string& t) { return parseWhole<long long>(t); }
 
+std::size_t invalidUtf8Offset(const std::string& text)
+{
+    // Table 3-7 of the Unicode standard: the second byte's range depends on the first.
+    const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
+    const std::size_t size = text.size();
+    for (std::size_t i = 0; i < size;) {
+        const unsigned char c = bytes[i];
+        if (c < 0x80) { ++i; continue; }
+        int length = 0;
+        unsigned char low = 0x80, high = 0xBF;
+        if (c >= 0xC2 && c <= 0xDF) length = 2;
+        else if (c >= 0xE0 && c <= 0xEF) { length = 3; if (c == 0xE0) low = 0xA0; if (c == 0xED) high = 0x9F; }
+        else if (c >= 0xF0 && c <= 0xF4) { length = 4; if (c == 0xF0) low = 0x90; if (c == 0xF4) high = 0x8F; }
+        else return i;
+        if (i + std::size_t(length) > size || bytes[i + 1] < low || bytes[i + 1] > high)
+            return i;
+        for (int k = 2; k < length; ++k)
+            if (bytes[i + std::size_t(k)] < 0x80 || bytes[i + std::size_t(k)] > 0xBF)
+                return i;
+        i += std::size_t(length);
+    }
+    return std::string::npos;
+}
+
 std::optional<double> parseNumber(const std::string& t) { return parseWhole<double>(t); }
 
 namespace {

@@ -18,6 +18,12 @@ std::optional<long long> parseInteger(const std::string& text);
 // As std::from_chars reads a double, with an optional leading '+'.
 std::optional<double> parseNumber(const std::string& text);
 
+// The byte offset of the first byte that does not begin a well-formed UTF-8
+// sequence (overlong forms, UTF-16 surrogates and code points past U+10FFFF
+// are ill-formed), or std::string::npos when the whole text is valid UTF-8.
+// Names end up in JSON (glTF) and XML-like formats that refuse anything else.
+std::size_t invalidUtf8Offset(const std::string& text);
+
 // Items of a flow list given as text: "[L, R]", "['a', \"b\"]", "[]". A plain or
 // quoted scalar is one item; empty text (or ~, null) none. A trailing comma and
 // a "# comment" are allowed. Nested lists and maps, empty items, anchors,

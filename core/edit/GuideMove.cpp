@@ -143,7 +143,8 @@ GuideDrag::GuideDrag(const GuideDocument& document, JointId lead, std::vector<Jo
             const bool taken = std::any_of(candidates.begin(), candidates.end(), [&](const auto& c) { return c.first == twin; });
             if (twin != model::kNoId && !taken) candidates.emplace_back(twin, j);
         }
-    for (const auto& [joint, mirrorOf] : candidates) {
+    for (const auto& candidate : candidates) {
+        const JointId joint = candidate.first, mirrorOf = candidate.second; // not a structured binding: clang 14 cannot capture one
         const bool follows = std::any_of(candidates.begin(), candidates.end(),
                                          [&](const auto& other) { return isBelow(document, joint, other.first); });
         if (follows)

@@ -7,9 +7,14 @@
 
 namespace rs::io {
 
-Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
-                      std::function<bool(double)> progress)
+namespace {
+
+Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
+                             std::function<bool(double)> progress)
 {
+    if (request.proxyVertices > kMaxProxyVertices)
+        return {makeError({request.path, 0, 0}, "a proxy mesh of " + std::to_string(request.proxyVertices) +
+                                                     " vertices is too large (at most " + std::to_string(kMaxProxyVertices) + ")")};
     ExportOptions options;
     options.preset = request.preset;
     options.controllers = request.controllers;
@@ -55,6 +60,18 @@ Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, cons
     Diagnostics exported = exportRig(rig, request.path, options);
     report.insert(report.end(), exported.begin(), exported.end());
     return report;
+}
+
+} // namespace
+
+Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
+                      std::function<bool(double)> progress)
+{
+    try { // the reference JSON and the proxy mesh are made here, outside exportRig's guard
+        return runExportOrThrow(rig, pose, request, std::move(progress));
+    } catch (const std::exception& e) {
+        return {makeError({request.path, 0, 0}, std::string("export failed: ") + e.what())};
+    }
 }
 
 } // namespace rs::io

@@ -13,6 +13,10 @@
 
 namespace rs::io {
 
+// The largest proxy mesh runExport generates (about 100 MB of vertex data);
+// a larger request is an error, not an allocation failure.
+constexpr std::size_t kMaxProxyVertices = 1'000'000;
+
 struct ExportRequest {
     std::string path;
     ExportPreset preset = ExportPreset::Gltf;
@@ -23,7 +27,7 @@ struct ExportRequest {
     bool fixNames = false;
     bool fixWeights = false;
     bool force = false;
-    std::size_t proxyVertices = 0;  // 0: no mesh; otherwise io::proxyMesh of about that many vertices
+    std::size_t proxyVertices = 0;  // 0: no mesh; otherwise io::proxyMesh of about that many vertices (≤ kMaxProxyVertices)
     std::string referencePath;      // when set, also writes exportReferenceJson there
 };
 

@@ -289,7 +289,7 @@ Result<GuideDocument> readGuideFile(const std::string& path)
 {
     auto text = readTextFile(path);
     if (!text)
-        return Result<GuideDocument>::failure(makeError({path, 0, 0}, "cannot open file"));
+        return Result<GuideDocument>::failure(text.takeDiagnostics());
     auto doc = readGuideText(*text, path);
     if (doc && !doc->referenceModel.empty()) { // relative to the guide file
         const fs::path reference(doc->referenceModel);

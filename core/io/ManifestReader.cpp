@@ -3,9 +3,11 @@
 #include "io/YamlSupport.h"
 #include "templates/Condition.h"
 #include "templates/Structure.h"
+#include "templates/TemplateRegistry.h"
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 namespace rs::io {
@@ -119,7 +121,10 @@ std::optional<Parameter> readParameter(YamlReader& r, const std::string& section
             if (c != d) r.warning(valueNode ? *valueNode : node, what + ".value " + formatNumber(d) + " is out of range, clamped to " + formatNumber(c));
             return c;
         };
-        if (auto* i = std::get_if<long long>(&p.value)) *i = static_cast<long long>(clampNumber(double(*i)));
+        if (auto* i = std::get_if<long long>(&p.value)) {
+            const double c = clampNumber(double(*i)); // saturated: a bound may not fit a long long
+            *i = c >= 9.2e18 ? std::numeric_limits<long long>::max() : c <= -9.2e18 ? std::numeric_limits<long long>::min() : static_cast<long long>(c);
+        }
         else if (auto* d = std::get_if<double>(&p.value)) *d = clampNumber(*d);
         else { r.error(node, what + " has min/max but its value is not a number"); ok = false; }
     }
@@ -252,7 +257,8 @@ bool readUi(YamlReader& r, const YAML::Node& node, TemplateManifest& m)
     for (const auto& kv : node) {
         const std::string key = kv.first.Scalar();
         if (key == "icon") {
-            if (auto s = r.string(kv.second, "ui.icon")) { m.icon = *s; m.iconWhere = io::locationOf(kv.second, r.file()); }
+            if (auto s = r.string(kv.second, "ui.icon"); s && isIconName(*s)) { m.icon = *s; m.iconWhere = io::locationOf(kv.second, r.file()); }
+            else if (s) { r.error(kv.second, "ui.icon must be a file name in the icons folder (letters, digits, _ - .), not a path"); ok = false; }
             else ok = false;
         }
         else if (key == "hooks") {
@@ -485,7 +491,7 @@ Result<TemplateManifest> readManifest(const std::string& file, const std::string
 {
     auto text = io::readTextFile(file);
     if (!text)
-        return Result<TemplateManifest>::failure(makeError({file, 0, 0}, "cannot open file"));
+        return Result<TemplateManifest>::failure(text.takeDiagnostics());
     return readManifestText(*text, file, category, module);
 }
 

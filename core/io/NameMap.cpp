@@ -42,7 +42,7 @@ Result<NameMap> readNameMap(const std::string& path)
 {
     auto text = readTextFile(path);
     if (!text)
-        return Result<NameMap>::failure(makeError({path, 0, 0}, "cannot open file"));
+        return Result<NameMap>::failure(text.takeDiagnostics());
     return readNameMapText(*text, path);
 }
 

@@ -3,6 +3,8 @@
 #include "io/FbxExport.h"
 #include "io/GltfExport.h"
 
+#include "base/TextScalars.h"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -19,8 +21,23 @@ std::optional<ExportFormat> exportFormatOf(const std::string& path)
     return std::nullopt;
 }
 
-Diagnostics exportRig(const model::Rig& rig, const std::string& path, const ExportOptions& options)
+namespace {
+
+// Readers refuse ill-formed UTF-8 at its line; a name made by an edit or an API
+// caller is caught here, by name, before a JSON writer throws over it.
+Diagnostics checkNames(const model::Rig& rig, const std::string& path)
 {
+    Diagnostics out;
+    for (const model::RigNode& node : rig.nodes)
+        if (invalidUtf8Offset(node.name) != std::string::npos)
+            out.push_back(makeError({path, 0, 0}, "the name of rig node '" + node.path + "' is not valid UTF-8; rename it"));
+    return out;
+}
+
+Diagnostics exportRigOrThrow(const model::Rig& rig, const std::string& path, const ExportOptions& options)
+{
+    if (Diagnostics names = checkNames(rig, path); !names.empty())
+        return names;
     const auto format = exportFormatOf(path);
     if (!format)
         return {makeError({path, 0, 0}, "unknown export format: use .glb, .gltf or .fbx")};
@@ -44,6 +61,17 @@ Diagnostics exportRig(const model::Rig& rig, const std::string& path, const Expo
     prepared.report.insert(prepared.report.end(), written.begin(), written.end());
     progress(1.0);
     return prepared.report;
+}
+
+} // namespace
+
+Diagnostics exportRig(const model::Rig& rig, const std::string& path, const ExportOptions& options)
+{
+    try { // nothing thrown by a writer (tinygltf, nlohmann-json, Assimp, allocation) crosses this boundary
+        return exportRigOrThrow(rig, path, options);
+    } catch (const std::exception& e) {
+        return {makeError({path, 0, 0}, std::string("export failed: ") + e.what())};
+    }
 }
 
 } // namespace rs::io

@@ -15,7 +15,8 @@ std::optional<Shape> readShapeFile(const std::string& file, Diagnostics& diagnos
 {
     auto text = readTextFile(file);
     if (!text) {
-        diagnostics.push_back(makeError({file, 0, 0}, "cannot open file"));
+        Diagnostics refused = text.takeDiagnostics();
+        diagnostics.insert(diagnostics.end(), refused.begin(), refused.end());
         return std::nullopt;
     }
     return readShapeText(*text, file, diagnostics);

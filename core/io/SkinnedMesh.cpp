@@ -108,7 +108,8 @@ SkinnedMesh proxyMesh(const model::Skeleton& skeleton, std::size_t targetVertice
     const auto bones = bonesOf(skeleton);
     if (bones.empty())
         return mesh;
-    const int rings = std::max(2, int(std::lround(double(targetVertices) / double(bones.size() * kTubeSides))));
+    const double perBone = std::min(double(targetVertices) / double(bones.size() * kTubeSides), 1e6); // int-safe
+    const int rings = std::max(2, int(std::lround(perBone)));
     mesh.positions.reserve(bones.size() * std::size_t(rings * kTubeSides));
     for (const Bone& bone : bones)
         appendTube(mesh, skeleton, bone, rings);

@@ -1,11 +1,16 @@
 #include "io/YamlSupport.h"
 
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <map>
-#include <sstream>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace rs::io {
 
@@ -22,27 +27,71 @@ std::string describeType(const YAML::Node& node)
     }
 }
 
-// yaml-cpp keeps both entries of a repeated key and lookups see only the first,
-// so a repeated key would silently lose the rigger's second value.
-void reportDuplicateKeys(const YAML::Node& node, const std::string& file, Diagnostics& out)
-{
-    if (node.IsMap()) {
-        std::map<std::string, int> seen;
-        for (const auto& kv : node) {
-            if (kv.first.IsScalar()) {
-                const int line = kv.first.Mark().line + 1;
-                auto [it, fresh] = seen.emplace(kv.first.Scalar(), line);
-                if (!fresh)
-                    out.push_back(makeError(locationOf(kv.first, file), "duplicate key '" + kv.first.Scalar() +
-                                                                            "' (first at line " + std::to_string(it->second) + ")"));
-            }
-            reportDuplicateKeys(kv.second, file, out);
+// One walk over the loaded document, before any reader sees it. yaml-cpp
+// shares the node of an anchor among its aliases, so a few lines of nested
+// aliases ("billion laughs") make a tree of billions of nodes: the walk counts
+// every node it visits and stops at a budget no alias-free text can reach.
+class DocumentCheck {
+public:
+    DocumentCheck(const std::string& file, std::size_t textBytes, Diagnostics& out)
+        : m_file(file), m_budget(2 * textBytes + 64), m_out(out) {}
+
+    // False when the document expands past the budget (the walk stopped).
+    bool run(const YAML::Node& root) { return walk(root); }
+
+private:
+    bool walk(const YAML::Node& node)
+    {
+        if (++m_visited > m_budget) {
+            m_out.push_back(makeError(locationOf(node, m_file),
+                                      "the YAML expands to more than " + std::to_string(m_budget) +
+                                          " values (aliases of aliases?); refused"));
+            return false;
         }
-    } else if (node.IsSequence()) {
-        for (const auto& item : node)
-            reportDuplicateKeys(item, file, out);
+        if (node.IsScalar()) {
+            scalar(node);
+        } else if (node.IsMap()) {
+            // yaml-cpp keeps both entries of a repeated key and lookups see only the
+            // first, so a repeated key would silently lose the rigger's second value.
+            std::map<std::string, int> seen;
+            for (const auto& kv : node) {
+                if (kv.first.IsScalar()) {
+                    const int line = kv.first.Mark().line + 1;
+                    auto [it, fresh] = seen.emplace(kv.first.Scalar(), line);
+                    if (!fresh)
+                        m_out.push_back(makeError(locationOf(kv.first, m_file),
+                                                  "duplicate key '" + kv.first.Scalar() + "' (first at line " +
+                                                      std::to_string(it->second) + ")"));
+                }
+                if (!walk(kv.first) || !walk(kv.second))
+                    return false;
+            }
+        } else if (node.IsSequence()) {
+            for (const auto& item : node)
+                if (!walk(item))
+                    return false;
+        }
+        return true;
     }
-}
+
+    // Names become JSON strings in glTF, which refuses ill-formed UTF-8: say so
+    // here, at the value's line, rather than fail (or throw) at export.
+    void scalar(const YAML::Node& node)
+    {
+        const std::string& text = node.Scalar();
+        if (const std::size_t at = invalidUtf8Offset(text); at != std::string::npos) {
+            char byte[8];
+            std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(text[at]));
+            m_out.push_back(makeError(locationOf(node, m_file), std::string("text is not valid UTF-8 (byte ") + byte +
+                                                                    " at offset " + std::to_string(at) + " of the value)"));
+        }
+    }
+
+    const std::string& m_file;
+    std::size_t m_budget;
+    std::size_t m_visited = 0;
+    Diagnostics& m_out;
+};
 
 } // namespace
 
@@ -63,10 +112,10 @@ Result<YAML::Node> loadYamlText(const std::string& text, const std::string& disp
 {
     try {
         YAML::Node root = YAML::Load(text);
-        Diagnostics duplicates;
-        reportDuplicateKeys(root, displayName, duplicates);
-        if (!duplicates.empty())
-            return Result<YAML::Node>::failure(duplicates);
+        Diagnostics problems;
+        DocumentCheck(displayName, text.size(), problems).run(root);
+        if (!problems.empty())
+            return Result<YAML::Node>::failure(problems);
         return root;
     } catch (const YAML::ParserException& e) {
         SourceLocation where{displayName, e.mark.line + 1, e.mark.column + 1};
@@ -78,21 +127,45 @@ Result<YAML::Node> loadYamlText(const std::string& text, const std::string& disp
     }
 }
 
-std::optional<std::string> readTextFile(const std::string& path)
+Result<std::string> readTextFile(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return std::nullopt;
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
+    auto refuse = [&](const std::string& message) { return Result<std::string>::failure(makeError({path, 0, 0}, message)); };
+    // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0)
+        return refuse(std::string("cannot open file: ") + std::strerror(errno));
+    struct Closer { int fd; ~Closer() { ::close(fd); } } closer{fd};
+    struct stat info {};
+    if (::fstat(fd, &info) != 0)
+        return refuse(std::string("cannot read file: ") + std::strerror(errno));
+    if (!S_ISREG(info.st_mode))
+        return refuse(S_ISDIR(info.st_mode) ? "is a folder, not a file" : "not a regular file (a FIFO, socket or device); refused");
+    if (std::uint64_t(info.st_size) > kMaxTextFileBytes)
+        return refuse("file is " + std::to_string(info.st_size >> 20) + " MB, larger than the " +
+                      std::to_string(kMaxTextFileBytes >> 20) + " MB limit");
+    std::string text;
+    text.reserve(std::size_t(info.st_size));
+    char buffer[1 << 16];
+    for (;;) { // read to the end (the file may have grown), never past the limit
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0)
+            return refuse(std::string("cannot read file: ") + std::strerror(errno));
+        if (n == 0)
+            break;
+        if (text.size() + std::size_t(n) > kMaxTextFileBytes)
+            return refuse("file is larger than the " + std::to_string(kMaxTextFileBytes >> 20) + " MB limit");
+        text.append(buffer, std::size_t(n));
+    }
+    return text;
 }
 
 Result<YAML::Node> loadYamlFile(const std::string& path)
 {
     auto text = readTextFile(path);
     if (!text)
-        return Result<YAML::Node>::failure(makeError({path, 0, 0}, "cannot open file"));
+        return Result<YAML::Node>::failure(text.takeDiagnostics());
     return loadYamlText(*text, path);
 }
 
@@ -135,8 +208,12 @@ std::optional<long long> YamlReader::integer(const YAML::Node& node, const std::
 std::optional<double> YamlReader::number(const YAML::Node& node, const std::string& what)
 {
     if (node.IsScalar())
-        if (auto d = parseNumber(node.Scalar()))
-            return d;
+        if (auto d = parseNumber(node.Scalar())) {
+            if (std::isfinite(*d))
+                return d;
+            error(node, what + " must be a finite number, got '" + node.Scalar() + "'");
+            return std::nullopt;
+        }
     error(node, what + " must be a number, got " + describeType(node));
     return std::nullopt;
 }
@@ -148,6 +225,10 @@ std::optional<Vec3> YamlReader::vec3(const YAML::Node& node, const std::string& 
         for (int i = 0; i < 3; ++i) {
             const YAML::Node item = node[i];
             auto d = item.IsScalar() ? parseNumber(item.Scalar()) : std::nullopt;
+            if (d && !std::isfinite(*d)) {
+                error(item, what + " must be a list of 3 finite numbers, got '" + item.Scalar() + "' at index " + std::to_string(i));
+                return std::nullopt;
+            }
             if (!d) {
                 error(item, what + " must be a list of 3 numbers, got " + describeType(item) + " at index " + std::to_string(i));
                 return std::nullopt;
@@ -191,7 +272,11 @@ std::optional<Value> readValue(YamlReader& r, const YAML::Node& node, const std:
     if (node.Tag() != "!") { // plain (unquoted) scalars are typed by their text
         if (auto b = parseBool(text)) return Value(*b);
         if (auto i = parseInteger(text)) return Value(*i);
-        if (auto d = parseNumber(text)) return Value(*d);
+        if (auto d = parseNumber(text)) {
+            if (std::isfinite(*d)) return Value(*d);
+            r.error(node, what + " must be a finite number, got '" + text + "' (quote it for text)");
+            return std::nullopt;
+        }
     }
     return Value(text);
 }

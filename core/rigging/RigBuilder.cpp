@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -148,11 +149,19 @@ std::optional<Value> coerce(const Value& given, const Value& defaultValue)
     return std::nullopt;
 }
 
+// A finite bound as a long long, saturated: a cast out of range is undefined.
+long long saturated(double bound)
+{
+    if (bound >= 9.2e18) return std::numeric_limits<long long>::max();
+    if (bound <= -9.2e18) return std::numeric_limits<long long>::min();
+    return static_cast<long long>(bound);
+}
+
 void clampToRange(const templates::Parameter& p, Value& v)
 {
-    if (auto* i = std::get_if<long long>(&v)) {
-        if (p.min) *i = std::max(*i, static_cast<long long>(*p.min));
-        if (p.max) *i = std::min(*i, static_cast<long long>(*p.max));
+    if (auto* i = std::get_if<long long>(&v)) { // compared as doubles: a bound may not fit a long long
+        if (p.min && double(*i) < *p.min) *i = saturated(std::ceil(*p.min));
+        if (p.max && double(*i) > *p.max) *i = saturated(std::floor(*p.max));
     } else if (auto* d = std::get_if<double>(&v)) {
         if (p.min) *d = std::max(*d, *p.min);
         if (p.max) *d = std::min(*d, *p.max);
@@ -169,7 +178,11 @@ void resolveList(const std::vector<templates::Parameter>& params, const model::T
             if (const auto* index = std::get_if<long long>(&given); index && p.isEnum()) // enum by index
                 for (const auto& [i, label] : p.enumLabels)
                     if (i == *index) given = label;
-            if (auto c = coerce(given, p.value)) {
+            if (const auto* d = std::get_if<double>(&given); d && !std::isfinite(*d)) {
+                // Readers refuse nan and inf at their line; this catches an edit or an API caller.
+                diagnostics.push_back(makeError({}, "instance '" + instance.name + "': option '" + p.name + "' = " +
+                                                        formatValue(given) + " is not a finite number; using the default"));
+            } else if (auto c = coerce(given, p.value)) {
                 Value clamped = *c;
                 clampToRange(p, clamped);
                 if (clamped != *c)
@@ -233,7 +246,8 @@ void reportOrphanRecords(const model::GuideDocument& guide, model::Rig& rig)
         rig.diagnostics.push_back(makeWarning({}, "the test pose of '" + text + "' (an older guide's record) names no "
                                                   "instance of this guide; it is kept in the guide"));
     for (const model::TemplateInstance& instance : guide.instances())
-        for (const auto& [tag, edit] : instance.shapes)
+        for (const auto& shapeEdit : instance.shapes) { // not a structured binding: clang 14 cannot capture one
+            const std::string& tag = shapeEdit.first;
             if (!rig.find(NodeKey{instance.id, {}, tag}) && !std::any_of(rig.nodes.begin(), rig.nodes.end(), [&](const model::RigNode& n) {
                     return n.key.instance == instance.id && n.key.tag == tag;
                 })) {
@@ -242,6 +256,7 @@ void reportOrphanRecords(const model::GuideDocument& guide, model::Rig& rig)
                 d.subject = Subject::ofInstance(instance.id);
                 rig.diagnostics.push_back(std::move(d));
             }
+        }
 }
 
 } // namespace

@@ -52,12 +52,16 @@ private:
     bool andExpr() { bool v = unary(); while (m_error.empty() && peek("and")) { ++m_pos; v = unary() && v; } return v; }
     bool unary()
     {
-        if (peek("not")) { ++m_pos; return !unary(); }
-        if (peek("(")) {
-            ++m_pos;
-            bool v = orExpr();
-            if (!peek(")")) { fail("missing ')'"); return false; }
-            ++m_pos;
+        // Each 'not' and '(' recurses; a hostile manifest could nest them deep
+        // enough to overflow the stack, so the depth is capped.
+        if (peek("not") || peek("(")) {
+            if (m_depth >= kMaxConditionDepth) {
+                fail("expression nested too deeply (more than " + std::to_string(kMaxConditionDepth) + " levels of 'not' and '(')");
+                return false;
+            }
+            ++m_depth;
+            const bool v = peek("not") ? (++m_pos, !unary()) : group();
+            --m_depth;
             return v;
         }
         std::string left = operand();
@@ -67,6 +71,15 @@ private:
             return (left == right) == equal;
         }
         return truthy(left);
+    }
+    // '(' expr ')'
+    bool group()
+    {
+        ++m_pos;
+        const bool v = orExpr();
+        if (!peek(")")) { fail("missing ')'"); return false; }
+        ++m_pos;
+        return v;
     }
     // The operand's value as text: options give their value, literals themselves.
     std::string operand(bool bareWordIsText = false)
@@ -87,6 +100,7 @@ private:
     const std::map<std::string, Value>& m_options;
     std::vector<std::string> m_tokens;
     std::size_t m_pos = 0;
+    int m_depth = 0;
     std::string m_error;
 };
 

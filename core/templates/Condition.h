@@ -14,6 +14,10 @@
 
 namespace rs::templates {
 
+// Deepest nesting of 'not' and '(' accepted; deeper expressions fail (the
+// parser recurses, and a hostile manifest must not overflow the stack).
+constexpr int kMaxConditionDepth = 64;
+
 // Fails (an error without a file position: the caller knows where the
 // expression was written) when it is malformed or names an unknown option.
 Result<bool> evaluateCondition(const std::string& expression, const std::map<std::string, Value>& options);

@@ -1,5 +1,6 @@
 #include "templates/TemplateRegistry.h"
 
+#include <cctype>
 #include <filesystem>
 
 namespace rs::templates {
@@ -11,6 +12,16 @@ namespace {
 const char* kFallbackIcon = "template";
 
 } // namespace
+
+bool isIconName(const std::string& name)
+{
+    if (name.empty() || name.size() > 64 || name.front() == '.')
+        return false;
+    for (const char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
+            return false;
+    return true;
+}
 
 void TemplateRegistry::reset(const std::string& iconsDirectory)
 {
@@ -34,7 +45,7 @@ Diagnostics TemplateRegistry::crossCheck() const
             if (!s.shape.empty() && !m_shapes.find(s.shape))
                 diagnostics.push_back(makeWarning(s.where, "unknown shape '" + s.shape + "' in shapes." + s.key +
                                                                " (a circle is used)"));
-        if (!m.icon.empty() && !fs::exists(fs::path(m_iconsDirectory) / (m.icon + ".svg"), ec))
+        if (!m.icon.empty() && isIconName(m.icon) && !fs::exists(fs::path(m_iconsDirectory) / (m.icon + ".svg"), ec))
             diagnostics.push_back(makeWarning(m.iconWhere, "icon '" + m.icon + "' not found in " + m_iconsDirectory +
                                                                   " (the default icon is used)"));
     }
@@ -68,7 +79,7 @@ std::string TemplateRegistry::iconPath(const TemplateManifest& manifest) const
 {
     std::error_code ec;
     const fs::path icon = fs::path(m_iconsDirectory) / (manifest.icon + ".svg");
-    if (!manifest.icon.empty() && fs::exists(icon, ec))
+    if (isIconName(manifest.icon) && fs::exists(icon, ec))
         return icon.string();
     return (fs::path(m_iconsDirectory) / (std::string(kFallbackIcon) + ".svg")).string();
 }

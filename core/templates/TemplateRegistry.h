@@ -13,6 +13,11 @@
 
 namespace rs::templates {
 
+// A manifest's `ui.icon` names a file in the icons folder and nothing else: a
+// plain name of letters, digits, '_', '-' and '.' (not first), at most 64
+// bytes. No '/', "..", absolute path or NUL byte can lead it out of the folder.
+bool isIconName(const std::string& name);
+
 class TemplateRegistry {
 public:
     // Empties the registry; icons are then looked up in `iconsDirectory`.
@@ -28,7 +33,8 @@ public:
     const ShapeLibrary& shapes() const { return m_shapes; }
     ShapeLibrary& shapes() { return m_shapes; }
     const std::string& iconsDirectory() const { return m_iconsDirectory; }
-    // The icon's SVG path, or the fallback icon when the manifest's is missing.
+    // The icon's SVG path in iconsDirectory(), or the fallback icon when the
+    // manifest's is missing or not an isIconName (never a path outside the folder).
     std::string iconPath(const TemplateManifest& manifest) const;
 
 private:

@@ -1,0 +1,141 @@
+// Issue 18 items 5, 7 and 8, from the command line: every numeric option is
+// range-checked (no overflow, no huge allocation, no nan or inf) and names must
+// be UTF-8; a refused argument is a message and exit code 2, and nothing is written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBiped = RIGSMITH_SOURCE_DIR "/resources/samples/biped.yml";
+
+struct CliRun {
+    int exitCode = -1; // -1: killed by a signal (a crash, an uncaught exception)
+    std::string errors;
+};
+
+fs::path folderFor(const std::string& name)
+{
+    const fs::path folder = fs::temp_directory_path() / ("rigsmith-cli-arguments-" + std::to_string(getpid())) / name;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+// rigsmith-cli with `args` and at most 2 GB of address space, so a runaway
+// allocation fails fast instead of swapping the machine.
+CliRun runCli(const std::vector<std::string>& args)
+{
+    const fs::path errorsFile = folderFor("stderr") / "stderr.txt";
+    const pid_t child = fork();
+    if (child == 0) {
+        const int errors = open(errorsFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        dup2(errors, STDERR_FILENO);
+        const int null = open("/dev/null", O_WRONLY);
+        dup2(null, STDOUT_FILENO);
+        const rlimit memory{rlim_t(2) << 30, rlim_t(2) << 30};
+        setrlimit(RLIMIT_AS, &memory);
+        std::vector<char*> argv{const_cast<char*>(RIGSMITH_CLI)};
+        for (const std::string& a : args)
+            argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(RIGSMITH_CLI, argv.data());
+        _exit(127);
+    }
+    CliRun run;
+    int status = 0;
+    if (waitpid(child, &status, 0) == child && WIFEXITED(status))
+        run.exitCode = WEXITSTATUS(status);
+    std::ifstream in(errorsFile);
+    std::stringstream text;
+    text << in.rdbuf();
+    run.errors = text.str();
+    return run;
+}
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+} // namespace
+
+TEST(Cli, RefusesAProxyMeshOutOfRange)
+{
+    const fs::path out = folderFor("proxy") / "rig.glb";
+    for (const std::string count : {"99999999999999999999", "18446744073709551615", "4000000000", "1000001", "0", "-5",
+                                     " 12", "1e9", "0x10", "nan"}) {
+        const CliRun run = runCli({"build", kBiped, "-o", out.string(), "--proxy-mesh", count});
+        EXPECT_EQ(run.exitCode, 2) << count << ": " << run.errors;
+        EXPECT_NE(run.errors.find("--proxy-mesh wants a vertex count from 1 to 1000000, not '" + count + "'"), std::string::npos)
+            << run.errors;
+        EXPECT_FALSE(fs::exists(out)) << count;
+    }
+    const CliRun ok = runCli({"build", kBiped, "-o", out.string(), "--proxy-mesh", "1000"});
+    EXPECT_EQ(ok.exitCode, 0) << ok.errors;
+}
+
+TEST(Cli, RefusesNonFiniteAndOutOfRangeNumbersInAdd)
+{
+    const fs::path guide = folderFor("add") / "guide.yml";
+    ASSERT_EQ(runCli({"new", guide.string()}).exitCode, 0);
+    const std::string before = readText(guide);
+    struct Case {
+        std::vector<std::string> extra;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {{"--at", "nan,0,0"}, "--at wants finite coordinates"},
+        {{"--at", "0,inf,0"}, "--at wants finite coordinates"},
+        {{"--at", "0,0,1e300"}, "--at wants finite coordinates"},
+        {{"--set", "length=nan"}, "--set length: 'nan' is not a finite number"},
+        {{"--set", "length=-Infinity"}, "--set length: '-Infinity' is not a finite number"},
+        {{"--set", "length=1e400"}, "--set length: '1e400' is out of range"},
+        {{"--set", "number=99999999999999999999"}, "--set number: '99999999999999999999' is out of range"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args{"add", guide.string(), "core.joints"};
+        args.insert(args.end(), c.extra.begin(), c.extra.end());
+        const CliRun run = runCli(args);
+        EXPECT_EQ(run.exitCode, 2) << c.extra.back() << ": " << run.errors;
+        EXPECT_NE(run.errors.find(c.message), std::string::npos) << run.errors;
+        EXPECT_EQ(readText(guide), before) << c.extra.back();
+    }
+    const CliRun ok = runCli({"add", guide.string(), "core.joints", "--at", "0,1.5,0", "--set", "length=0.25"});
+    EXPECT_EQ(ok.exitCode, 0) << ok.errors;
+}
+
+TEST(Cli, RefusesANameThatIsNotUtf8)
+{
+    const fs::path folder = folderFor("utf8");
+    const CliRun created = runCli({"new", (folder / "a.yml").string(), "--name", "rig\xff"});
+    EXPECT_EQ(created.exitCode, 2) << created.errors;
+    EXPECT_NE(created.errors.find("--name is not valid UTF-8"), std::string::npos) << created.errors;
+    EXPECT_FALSE(fs::exists(folder / "a.yml"));
+
+    ASSERT_EQ(runCli({"new", (folder / "b.yml").string()}).exitCode, 0);
+    const CliRun added = runCli({"add", (folder / "b.yml").string(), "core.joints", "--name", "tail\xc3"});
+    EXPECT_EQ(added.exitCode, 2) << added.errors;
+    // A guide that already holds such a name is refused at its line.
+    std::ofstream(folder / "c.yml") << "rigsmith_guide: 1\ninstances:\n  - id: 1\n    template: core.joints\n"
+                                       "    name: tail\xe2\x82\n    joints:\n      - {id: 1, t: [0, 0, 0]}\n";
+    const CliRun built = runCli({"build", (folder / "c.yml").string(), "-o", (folder / "c.gltf").string()});
+    EXPECT_EQ(built.exitCode, 1) << built.errors;
+    EXPECT_NE(built.errors.find((folder / "c.yml").string() + ":5:11: error: text is not valid UTF-8"), std::string::npos)
+        << built.errors;
+    EXPECT_FALSE(fs::exists(folder / "c.gltf"));
+}
