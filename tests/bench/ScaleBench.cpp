@@ -5,6 +5,7 @@
 #include "rigging/RigBuilder.h"
 #include "io/RigExport.h"
 #include "io/TemplateFolders.h"
+#include "session/Session.h"
 
 #include <benchmark/benchmark.h>
 
@@ -132,5 +133,27 @@ void BM_ExportInstanceTree(benchmark::State& state, const std::string& extension
 }
 BENCHMARK_CAPTURE(BM_ExportInstanceTree, glb, std::string(".glb"))->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExportInstanceTree, fbx, std::string(".fbx"))->Arg(10000)->Unit(benchmark::kMillisecond);
+
+// The editor's path: a session opens the tree and builds it (with its build
+// cache), then one joint of the last instance moves and the rig is rebuilt live
+// (every other instance copy replayed).
+void BM_SessionInstanceTree(benchmark::State& state)
+{
+    const auto doc = instanceTree(int(state.range(0)));
+    const auto templates = std::make_shared<templates::TemplateRegistry>(registry());
+    const model::JointId last = doc.instances().back().joints.front().id;
+    for (auto _ : state) {
+        session::Session s(templates);
+        s.replaceDocument(doc);
+        s.build();
+        s.selectGuideJoints({last}, false);
+        s.beginGuideDrag(last);
+        s.dragGuideTo(translationMatrix(Vec3(0.0, 1.0, 0.0)));
+        s.endGuideDrag("bench");
+        benchmark::DoNotOptimize(s.evaluation());
+        state.counters["copies_replayed"] = double(s.lastBuildReuse().replayed);
+    }
+}
+BENCHMARK(BM_SessionInstanceTree)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 } // namespace
