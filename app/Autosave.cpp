@@ -10,6 +10,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/GuideFile.h"
+#include "templates/GuideTemplates.h"
 
 #include <QCryptographicHash>
 #include <QDir>
@@ -128,6 +129,8 @@ bool EditorSession::recover(const QString& path, Diagnostics& diagnostics)
     if (!loaded)
         return false;
     replaceWith(loaded.take(), path); // the file is only read: saving is the rigger's choice
+    const Diagnostics unknown = templates::checkGuideTemplates(document(), templates(), autosavePathFor(path).toStdString());
+    diagnostics.insert(diagnostics.end(), unknown.begin(), unknown.end());
     m_ownsAutosave = true;           // saving the recovered guide removes it
     history().setModified();
     return true;

@@ -4,6 +4,7 @@
 #include "io/GuideFile.h"
 #include "io/ReferenceModel.h"
 #include "io/TemplateFolders.h"
+#include "templates/GuideTemplates.h"
 
 #include <filesystem>
 
@@ -52,6 +53,8 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
     if (!loaded)
         return false;
     replaceWith(loaded.take(), path);
+    const Diagnostics unknown = templates::checkGuideTemplates(document(), templates(), path.toStdString());
+    diagnostics.insert(diagnostics.end(), unknown.begin(), unknown.end());
     return true;
 }
 
@@ -78,6 +81,8 @@ bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagno
         document = loaded.take();
     }
     replaceWith(std::move(document), QString());
+    const Diagnostics unknown = templates::checkGuideTemplates(this->document(), templates(), templatePath.toStdString());
+    diagnostics.insert(diagnostics.end(), unknown.begin(), unknown.end());
     return true;
 }
 

@@ -78,7 +78,6 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
         else if (a == "--controllers") e.controllers = true;
         else if (a == "--rom") e.rangeOfMotion = true;
         else if (a == "--current-pose") e.currentPose = true;
-        else if (a == "--names" && hasValue) e.names = args[++i];
         else if (a == "--preset" && hasValue) {
             const auto preset = io::presetNamed(args[++i]);
             if (!preset) {
@@ -94,8 +93,13 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
                 return false;
             }
             e.proxyVertices = std::size_t(*n);
-        } else if ((a == "--dump" || a == "-o" || a == "--reference") && hasValue)
-            (a == "--dump" ? b.dump : a == "-o" ? e.path : e.referencePath) = args[++i];
+        } else if ((a == "--dump" || a == "-o" || a == "--reference" || a == "--names") && hasValue) {
+            if (args[i + 1].empty()) { // an empty path would write nothing and still succeed
+                std::cerr << "rigsmith-cli: " << a << " wants a file path, not an empty one\n";
+                return false;
+            }
+            (a == "--dump" ? b.dump : a == "-o" ? e.path : a == "--names" ? e.names : e.referencePath) = args[++i];
+        }
         else if (!a.empty() && a[0] != '-' && b.guide.empty())
             b.guide = a;
         else {

@@ -2,6 +2,7 @@
 #include "cli/Commands.h"
 
 #include "rigging/RigBuilder.h"
+#include "templates/GuideTemplates.h"
 #include "templates/HookPoints.h"
 #include "edit/GuideEdits.h"
 #include "io/GuideFile.h"
@@ -129,6 +130,7 @@ int runAdd(const std::vector<std::string>& args)
     print(guide.diagnostics());
     if (!guide)
         return 1;
+    print(templates::checkGuideTemplates(*guide, *templates, path));
 
     // --under INSTANCE[:HOOK]: a hook label of the parent's template (ui.hooks), default "default".
     model::JointId hookJoint = model::kNoId;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 namespace rs::model {
@@ -73,10 +74,15 @@ std::vector<InstanceId> GuideDocument::childInstances(InstanceId id) const
 
 std::vector<InstanceId> GuideDocument::subtree(InstanceId id) const
 {
+    // One pass for every instance's children, not a scan per visited instance.
+    std::unordered_map<InstanceId, std::vector<InstanceId>> children;
+    for (const TemplateInstance& i : m_instances)
+        if (i.parent != kNoId)
+            children[i.parent].push_back(i.id);
     std::vector<InstanceId> out{id};
     for (std::size_t k = 0; k < out.size(); ++k)
-        for (InstanceId child : childInstances(out[k]))
-            out.push_back(child);
+        if (auto it = children.find(out[k]); it != children.end() && out[k] != kNoId)
+            out.insert(out.end(), it->second.begin(), it->second.end());
     return out;
 }
 

@@ -140,6 +140,24 @@ std::vector<RigNodeIndex> Rig::children(RigNodeIndex node) const
     return out;
 }
 
+std::vector<std::vector<RigNodeIndex>> Rig::virtualChildTable() const
+{
+    std::vector<std::vector<RigNodeIndex>> out(nodes.size());
+    for (RigNodeIndex i = 0; i < nodes.size(); ++i)
+        if (nodes[i].virtualParent < nodes.size())
+            out[nodes[i].virtualParent].push_back(i);
+    return out;
+}
+
+std::vector<std::vector<RigNodeIndex>> Rig::childTable() const
+{
+    std::vector<std::vector<RigNodeIndex>> out(nodes.size());
+    for (RigNodeIndex i = 0; i < nodes.size(); ++i)
+        if (nodes[i].parent < nodes.size())
+            out[nodes[i].parent].push_back(i);
+    return out;
+}
+
 std::size_t Rig::count(RigNodeKind kind) const
 {
     return static_cast<std::size_t>(std::count_if(nodes.begin(), nodes.end(), [&](const RigNode& n) { return n.kind == kind; }));

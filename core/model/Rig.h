@@ -148,8 +148,12 @@ struct Rig {
     void truncate(std::size_t count);
     // Nodes of one domain hierarchy whose virtual parent is none, in node order.
     std::vector<RigNodeIndex> virtualRoots(const std::string& domain) const;
+    // One node's children: a scan of every node. To walk a whole hierarchy
+    // use the tables below, made in one pass (index = node, children in node order).
     std::vector<RigNodeIndex> virtualChildren(RigNodeIndex node) const;
     std::vector<RigNodeIndex> children(RigNodeIndex node) const;
+    std::vector<std::vector<RigNodeIndex>> virtualChildTable() const;
+    std::vector<std::vector<RigNodeIndex>> childTable() const;
     std::size_t count(RigNodeKind kind) const;
     // Joints of the skin domain: what the export skeleton holds.
     std::size_t skinJointCount() const;

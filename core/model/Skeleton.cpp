@@ -18,6 +18,7 @@ Result<Skeleton> extractSkeleton(const Rig& rig)
                                                            " roots, an export skeleton needs one: " + list));
     }
     Skeleton skeleton;
+    const auto childTable = rig.virtualChildTable();
     // Depth-first from the root; children in build order, so the output is stable.
     std::vector<std::pair<RigNodeIndex, int>> stack{{roots.front(), -1}};
     while (!stack.empty()) {
@@ -32,7 +33,7 @@ Result<Skeleton> extractSkeleton(const Rig& rig)
         joint.bindLocal = parent < 0 ? n.worldMatrix : glm::inverse(skeleton.joints[std::size_t(parent)].bindWorld) * n.worldMatrix;
         const int index = static_cast<int>(skeleton.joints.size());
         skeleton.joints.push_back(joint);
-        auto children = rig.virtualChildren(node);
+        const auto& children = childTable[node];
         for (auto it = children.rbegin(); it != children.rend(); ++it)
             if (rig.nodes[*it].kind == RigNodeKind::Joint)
                 stack.emplace_back(*it, index);

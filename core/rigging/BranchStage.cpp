@@ -3,6 +3,7 @@
 #include "base/TextScalars.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace rs::rigging {
 
@@ -34,6 +35,22 @@ std::string optionText(const TemplateInstance& instance, const templates::Templa
     return {};
 }
 
+// Removes every repeat of a branch name (the first stays, in order); returns
+// the first name that was repeated.
+std::optional<std::string> dropRepeatedBranches(std::vector<std::string>& branches)
+{
+    std::optional<std::string> repeated;
+    std::vector<std::string> kept;
+    for (std::string& branch : branches) {
+        if (std::find(kept.begin(), kept.end(), branch) == kept.end())
+            kept.push_back(std::move(branch));
+        else if (!repeated)
+            repeated = branch;
+    }
+    branches = std::move(kept);
+    return repeated;
+}
+
 struct Context { // one copy of an authored instance
     InstanceId expandedId;
     std::unordered_map<JointId, JointId> joints; // authored -> expanded
@@ -61,6 +78,12 @@ ExpandedGuide expandBranches(const model::GuideDocument& guide, const templates:
             const std::string text = optionText(authored, manifest, "branches");
             if (auto list = parseFlowList(text)) {
                 branches = list.take();
+                if (const auto duplicate = dropRepeatedBranches(branches)) {
+                    // One error here, rather than one per node and name the second copy would clash on.
+                    diagnostics.push_back(makeError({}, "instance '" + authored.name + "': option 'branches' = '" + text +
+                                                            "' names branch '" + *duplicate + "' twice; each branch is built once"));
+                    diagnostics.back().subject = Subject::ofInstance(authored.id);
+                }
             } else {
                 diagnostics.push_back(makeWarning({}, "instance '" + authored.name + "': option 'branches' = '" + text +
                                                           "' is not a YAML list (" + firstError(list.diagnostics()) + "); built once"));

@@ -164,7 +164,10 @@ bool replay(const Fragment& f, RigAssembly& a)
     a.rig.diagnostics.insert(a.rig.diagnostics.end(), f.diagnostics.begin(), f.diagnostics.end());
     if (f.failed)
         return true;
-    a.rig.nodes.reserve(a.rig.nodes.size() + f.nodes.size());
+    // Grown geometrically: reserving the exact size per fragment reallocated the
+    // whole node table for every replayed copy (quadratic in the instance count).
+    if (const std::size_t needed = a.rig.nodes.size() + f.nodes.size(); needed > a.rig.nodes.capacity())
+        a.rig.nodes.reserve(std::max(needed, 2 * a.rig.nodes.capacity()));
     for (model::RigNode node : f.nodes) {
         decode(node.parent);
         decode(node.virtualParent);

@@ -253,7 +253,8 @@ model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std:
 
 void BuildContext::setHook(model::JointId joint, model::RigNodeIndex node)
 {
-    if (!m_instance.joint(joint)) {
+    const auto owner = m_assembly.guideIndex.find(joint);
+    if (owner == m_assembly.guideIndex.end() || owner->second.owner != &m_instance) {
         error("hook for joint " + std::to_string(joint) + " which is not a joint of this instance");
         return;
     }

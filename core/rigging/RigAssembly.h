@@ -4,6 +4,7 @@
 #include "rigging/BranchStage.h"
 #include "eval/RigProgram.h"
 #include "model/Rig.h"
+#include "templates/Structure.h"
 #include "templates/TemplateRegistry.h"
 
 #include <map>
@@ -47,6 +48,9 @@ struct RigAssembly {
         std::string error;
     };
     std::unordered_map<std::string, Resolved> structureCache;
+    // One resolver per instance: it memoises the chain and the tags, so the
+    // many addresses of one instance (`chain[0]`, `chain[1]`...) share them.
+    std::unordered_map<const model::TemplateInstance*, templates::StructureResolver> resolvers;
     // The finished rig compiled by the evaluation check (a session takes it
     // through its BuildCache instead of compiling the rig a second time).
     std::optional<Result<eval::RigProgram>> program;

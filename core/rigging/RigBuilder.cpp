@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 namespace rs::rigging {
 
@@ -60,7 +61,7 @@ const RigAssembly::Resolved& RigAssembly::resolveStructure(const templates::Temp
     auto it = structureCache.find(key);
     if (it == structureCache.end()) {
         Resolved r;
-        const templates::StructureResolver resolver(manifest, instance);
+        const auto& resolver = resolvers.try_emplace(&instance, manifest, instance).first->second;
         auto joints = isTag ? resolver.tag(text) : resolver.address(text);
         if (joints)
             r.joints = joints.take();
@@ -205,16 +206,27 @@ void resolveList(const std::vector<templates::Parameter>& params, const model::T
     }
 }
 
-// Instances come parents-first in the document; this keeps that order explicit.
+// Instances come parents-first in the document; this keeps that order explicit:
+// each top-level instance followed by its subtree, breadth first (as
+// GuideDocument::subtree lists it), children in document order.
 std::vector<const model::TemplateInstance*> rootToLeaf(const model::GuideDocument& guide)
 {
+    std::unordered_map<model::InstanceId, std::vector<const model::TemplateInstance*>> children;
+    for (const auto& i : guide.instances())
+        if (i.parent != model::kNoId)
+            children[i.parent].push_back(&i);
     std::vector<const model::TemplateInstance*> order;
     std::set<model::InstanceId> placed;
-    for (const auto& i : guide.instances())
-        if (i.parent == model::kNoId)
-            for (model::InstanceId id : guide.subtree(i.id))
-                if (placed.insert(id).second)
-                    order.push_back(guide.instance(id));
+    for (const auto& i : guide.instances()) {
+        if (i.parent != model::kNoId || !placed.insert(i.id).second)
+            continue;
+        order.push_back(&i);
+        for (std::size_t k = order.size() - 1; k < order.size(); ++k)
+            if (auto it = children.find(order[k]->id); it != children.end())
+                for (const model::TemplateInstance* child : it->second)
+                    if (placed.insert(child->id).second)
+                        order.push_back(child);
+    }
     return order;
 }
 
@@ -296,7 +308,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     report(0.0, "gather");
     Diagnostics branchDiagnostics;
     const ExpandedGuide expanded = expandBranches(guide, templates, branchDiagnostics);
-    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}, {}};
+    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     a.rig.diagnostics = branchDiagnostics;
     a.indexGuide();
     model::RigNode root;

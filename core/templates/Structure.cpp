@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace rs::templates {
 
@@ -113,21 +115,32 @@ Result<std::vector<AddressTerm>> parseAddress(const std::string& expression)
     return std::move(*terms);
 }
 
-std::vector<JointId> StructureResolver::chain() const
+const std::vector<JointId>& StructureResolver::chain() const
 {
-    std::vector<JointId> out;
+    if (m_chain)
+        return *m_chain;
+    m_chain.emplace();
+    std::vector<JointId>& out = *m_chain;
     if (m_instance.joints.empty())
         return out;
-    JointId current = m_instance.joints.front().id;
+    // Per joint: how many chain candidates (untagged, non-helper, not the root) hang under it, and the first.
+    const JointId root = m_instance.joints.front().id;
+    std::unordered_map<JointId, std::pair<std::size_t, JointId>> candidates;
+    for (const model::GuideJoint& j : m_instance.joints)
+        if (j.parent != model::kNoId && j.id != root && j.tags.empty() && !j.isHelper()) {
+            auto& [count, first] = candidates[j.parent];
+            if (count++ == 0)
+                first = j.id;
+        }
+    std::unordered_set<JointId> visited;
+    JointId current = root;
     while (true) {
         out.push_back(current);
-        std::vector<JointId> next;
-        for (JointId child : m_instance.childJoints(current))
-            if (const auto* j = m_instance.joint(child); j->tags.empty() && !j->isHelper())
-                next.push_back(child);
-        if (next.size() != 1 || std::find(out.begin(), out.end(), next.front()) != out.end())
+        visited.insert(current);
+        auto next = candidates.find(current);
+        if (next == candidates.end() || next->second.first != 1 || visited.count(next->second.second))
             return out;
-        current = next.front();
+        current = next->second.second;
     }
 }
 
@@ -151,14 +164,21 @@ std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::strin
         if (term.base == ".") {
             joints.push_back(m_instance.joints.front().id);
         } else if (term.base[0] == '/') {
-            const std::vector<JointId> c = chain();
+            const std::vector<JointId>& c = chain();
             if (term.base == "/*") joints = c;
             else if (auto sel = applySelector(c, term.base.substr(1), error)) joints = *sel;
             else { error = "address '" + term.base + "': " + error; return std::nullopt; }
         } else {
-            auto sub = lookup(term.base, error);
+            const std::vector<JointId>* sub = lookup(term.base, error);
             if (!sub) return std::nullopt;
-            joints = *sub;
+            if (term.selector.empty()) { // selected from the memoised list, never copied whole
+                result.insert(result.end(), sub->begin(), sub->end());
+                continue;
+            }
+            auto sel = applySelector(*sub, term.selector, error);
+            if (!sel) { error = "'" + term.text + "': " + error; return std::nullopt; }
+            result.insert(result.end(), sel->begin(), sel->end());
+            continue;
         }
         if (!term.selector.empty()) {
             auto sel = applySelector(joints, term.selector, error);
@@ -170,8 +190,10 @@ std::optional<std::vector<JointId>> StructureResolver::evaluate(const std::strin
     return result;
 }
 
-std::optional<std::vector<JointId>> StructureResolver::lookup(const std::string& tagName, std::string& message) const
+const std::vector<JointId>* StructureResolver::lookup(const std::string& tagName, std::string& message) const
 {
+    if (auto known = m_tags.find(tagName); known != m_tags.end())
+        return &known->second;
     std::optional<std::vector<JointId>> out;
     std::optional<std::string> address;
     if (auto it = m_instance.structure.find(tagName); it != m_instance.structure.end())
@@ -195,16 +217,18 @@ std::optional<std::vector<JointId>> StructureResolver::lookup(const std::string&
         if (!tagged.empty()) out = tagged;
         else message = "unknown structure tag '" + tagName + "'";
     }
-    return out;
+    if (!out)
+        return nullptr;
+    return &m_tags.emplace(tagName, std::move(*out)).first->second;
 }
 
 Result<std::vector<JointId>> StructureResolver::tag(const std::string& tagName) const
 {
     std::string error;
-    auto joints = lookup(tagName, error);
+    const std::vector<JointId>* joints = lookup(tagName, error);
     if (!joints)
         return Result<std::vector<JointId>>::refused(error);
-    return std::move(*joints);
+    return *joints;
 }
 
 Result<std::vector<JointId>> StructureResolver::address(const std::string& expression) const

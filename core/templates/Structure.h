@@ -8,10 +8,15 @@
 // forks; other templates' roots are never part of it (they belong to their own
 // instance). It never relies on sibling order. An instance may override any tag's
 // address. Unknown tags, bad syntax and cycles are reported.
+//
+// A resolver memoises the chain and every tag it resolved, so asking for
+// `chain[i]` once per joint stays linear; the manifest and the instance must
+// outlive it and not change while it is used.
 #include "base/Result.h"
 #include "model/GuideDocument.h"
 #include "templates/Manifest.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,15 +41,19 @@ public:
     Result<std::vector<model::JointId>> tag(const std::string& tagName) const;
     // Joints of an address expression as written in `ui.hooks` or `structure`.
     Result<std::vector<model::JointId>> address(const std::string& expression) const;
-    std::vector<model::JointId> chain() const;
+    const std::vector<model::JointId>& chain() const;
 
 private:
-    std::optional<std::vector<model::JointId>> lookup(const std::string& tagName, std::string& error) const;
+    // The memoised joints of a tag, or nullptr with `error` set.
+    const std::vector<model::JointId>* lookup(const std::string& tagName, std::string& error) const;
     std::optional<std::vector<model::JointId>> evaluate(const std::string& expression, const std::string& ownTag,
                                                         std::string& error) const;
     const TemplateManifest& m_manifest;
     const model::TemplateInstance& m_instance;
     mutable std::size_t m_depth = 0; // nesting of tag lookups, to detect cycles
+    mutable std::optional<std::vector<model::JointId>> m_chain;
+    // Tags that resolved (failures are not kept: a cycle's message depends on where it is entered).
+    mutable std::map<std::string, std::vector<model::JointId>, std::less<>> m_tags;
 };
 
 } // namespace rs::templates

@@ -216,3 +216,21 @@ TEST(Naming, PresetsAndCustomRules)
     EXPECT_EQ(rules.make(model::NameRole::Skin, "Arm1", "L"), "sk_arm1-l");
     EXPECT_FALSE(model::namingPreset("maya"));
 }
+
+TEST(RigBuilder, ARepeatedBranchNameIsOneErrorAboutTheInstanceAndEachBranchIsBuiltOnce)
+{
+    model::GuideDocument guide = test::loadChains();
+    model::TemplateInstance* arm = guide.instance(4);
+    ASSERT_NE(arm, nullptr);
+    arm->options["branches"] = Value(std::string("[L, L, R]"));
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
+    std::vector<Diagnostic> errors;
+    for (const Diagnostic& d : rig.diagnostics)
+        if (d.severity == Severity::Error)
+            errors.push_back(d);
+    ASSERT_EQ(errors.size(), 1u) << formatAll(rig.diagnostics);
+    EXPECT_NE(errors.front().message.find("names branch 'L' twice"), std::string::npos) << errors.front().message;
+    EXPECT_EQ(errors.front().subject, Subject::ofInstance(4));
+    EXPECT_TRUE(rig.findPath("arm.L::ctrls.0"));
+    EXPECT_TRUE(rig.findPath("arm.R::ctrls.0"));
+}

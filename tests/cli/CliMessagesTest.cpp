@@ -1,0 +1,120 @@
+// rigsmith-cli's messages (issue 18 item 13): an empty output path is an
+// error, a repeated branch name is one error, and a guide whose instance uses
+// a missing template says so when the CLI opens it.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBiped = RIGSMITH_SOURCE_DIR "/resources/samples/biped.yml";
+
+struct CliRun {
+    int exitCode = -1;
+    std::string errors; // stderr
+};
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+fs::path freshFolder(const std::string& name)
+{
+    const fs::path folder = fs::temp_directory_path() / ("rigsmith-cli-messages-" + std::to_string(getpid())) / name;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+// rigsmith-cli with `args`, run in `folder` (stderr kept there).
+CliRun runCli(const std::vector<std::string>& args, const fs::path& folder)
+{
+    const fs::path errorsFile = folder / "stderr.txt";
+    const pid_t child = fork();
+    if (child == 0) {
+        if (chdir(folder.c_str()) != 0 || !std::freopen(errorsFile.c_str(), "w", stderr) ||
+            !std::freopen("/dev/null", "w", stdout))
+            _exit(126);
+        std::vector<char*> argv{const_cast<char*>(RIGSMITH_CLI)};
+        for (const std::string& a : args)
+            argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(RIGSMITH_CLI, argv.data());
+        _exit(127);
+    }
+    CliRun run;
+    int status = 0;
+    if (waitpid(child, &status, 0) == child && WIFEXITED(status))
+        run.exitCode = WEXITSTATUS(status);
+    run.errors = readText(errorsFile);
+    return run;
+}
+
+// The biped with `from` replaced by `to` once, written to `folder`/`name`.
+fs::path editedBiped(const fs::path& folder, const std::string& name, const std::string& from, const std::string& to)
+{
+    std::string text = readText(kBiped);
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos)
+        text.replace(at, from.size(), to);
+    std::ofstream(folder / name) << text;
+    return folder / name;
+}
+
+std::size_t countLines(const std::string& text, const std::string& needle)
+{
+    std::size_t count = 0;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        count += line.find(needle) != std::string::npos;
+    return count;
+}
+
+} // namespace
+
+TEST(Cli, AnEmptyPathForAnOutputOptionIsAnError)
+{
+    const fs::path folder = freshFolder("empty-output");
+    for (const std::string option : {"-o", "--dump", "--reference", "--names"}) {
+        const CliRun run = runCli({"build", kBiped, option, ""}, folder);
+        EXPECT_NE(run.exitCode, 0) << option;
+        EXPECT_NE(run.errors.find(option + " wants a file path"), std::string::npos) << option << ": " << run.errors;
+    }
+}
+
+TEST(Cli, ARepeatedBranchNameIsOneErrorAboutTheInstance)
+{
+    const fs::path folder = freshFolder("repeated-branch");
+    const fs::path guide = editedBiped(folder, "guide.yml", "    template: arm.limb\n    name: arm\n",
+                                       "    template: arm.limb\n    name: arm\n    options:\n      branches: \"[L, L]\"\n");
+    const CliRun run = runCli({"build", guide.string()}, folder);
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(countLines(run.errors, "error:"), 1u) << run.errors;
+    EXPECT_NE(run.errors.find("instance 'arm': option 'branches' = '[L, L]' names branch 'L' twice"), std::string::npos)
+        << run.errors;
+}
+
+TEST(Cli, AddingToAGuideWithAMissingTemplateWarnsAboutTheInstance)
+{
+    const fs::path folder = freshFolder("missing-template");
+    const fs::path guide = editedBiped(folder, "guide.yml", "template: neck.head", "template: neck.gone");
+    const CliRun run = runCli({"add", guide.string(), "core.xform"}, folder);
+    EXPECT_EQ(run.exitCode, 0) << run.errors;
+    EXPECT_NE(run.errors.find(guide.string() + ": warning: instance 'neck': unknown template 'neck.gone'"), std::string::npos)
+        << run.errors;
+}
