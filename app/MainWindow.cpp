@@ -112,7 +112,7 @@ void MainWindow::createDocks()
     setCentralWidget(m_viewport);
 
     m_outliner = new widgets::OutlinerView(this);
-    addDock(m_outliner, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
+    QDockWidget* outlinerDock = addDock(m_outliner, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
     m_library = new widgets::TemplateLibrary(this);
     addDock(m_library, tr("Templates"), "libraryDock", Qt::LeftDockWidgetArea);
 
@@ -128,7 +128,8 @@ void MainWindow::createDocks()
     m_transformPanel = new widgets::TransformPanel(this);
     tabifyDockWidget(channelDock, addDock(m_transformPanel, tr("Transform"), "transformDock", Qt::RightDockWidgetArea));
     m_options = new widgets::OptionsEditor(this);
-    resizeDocks({addDock(m_options, tr("Options"), "optionsDock", Qt::RightDockWidgetArea)}, {340}, Qt::Horizontal);
+    resizeDocks({addDock(m_options, tr("Options"), "optionsDock", Qt::RightDockWidgetArea), outlinerDock}, {340, 250},
+                Qt::Horizontal);
 
     m_status = new QLabel(this);
     statusBar()->addPermanentWidget(m_status);

@@ -158,18 +158,45 @@ void ViewportWidget::paintGL()
     paintLabels();
 }
 
+// The labels are painted by a see-through child widget over the GL surface
+// (composited by Qt, so window grabs include them).
+class LabelOverlay : public QWidget {
+public:
+    explicit LabelOverlay(ViewportWidget* view) : QWidget(view), m_view(view)
+    {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override
+    {
+        const Scene& scene = m_view->scene();
+        if (scene.labels.empty())
+            return;
+        QPainter painter(this);
+        painter.setPen(QColor(225, 225, 215));
+        const Camera& camera = m_view->camera();
+        const glm::dmat4 vp = camera.projectionMatrix(double(width()) / std::max(1, height())) * camera.viewMatrix();
+        for (const SceneLabel& label : scene.labels) {
+            glm::dvec2 p;
+            if (projectToPixels(vp, label.position, width(), height(), p))
+                painter.drawText(QPointF(p.x + 7.0, p.y - 5.0), QString::fromStdString(label.text));
+        }
+    }
+
+private:
+    ViewportWidget* m_view;
+};
+
 void ViewportWidget::paintLabels()
 {
-    if (m_scene.labels.empty())
-        return;
-    QPainter painter(this);
-    painter.setPen(QColor(225, 225, 215));
-    const glm::dmat4 vp = m_camera.projectionMatrix(double(width()) / std::max(1, height())) * m_camera.viewMatrix();
-    for (const SceneLabel& label : m_scene.labels) {
-        glm::dvec2 p;
-        if (projectToPixels(vp, label.position, width(), height(), p))
-            painter.drawText(QPointF(p.x + 7.0, p.y - 5.0), QString::fromStdString(label.text));
+    if (!m_labels) {
+        m_labels = new LabelOverlay(this);
+        m_labels->show();
     }
+    m_labels->setGeometry(rect());
+    m_labels->update();
 }
 
 ViewportWidget::CameraDrag ViewportWidget::cameraDragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const

@@ -44,6 +44,7 @@ public:
     // Vertices the renderer has sent to the GPU (0 before the first frame).
     std::uint64_t verticesUploaded() const;
     Camera& camera() { return m_camera; }
+    const Camera& camera() const { return m_camera; }
     void frameAll();
     // Where a world point lands in widget pixels (for tests and tools).
     QPoint toWidgetPixels(const glm::dvec3& world) const;
@@ -118,6 +119,7 @@ private:
     bool m_selectTool = false;
     int m_activeHandle = -1;
     QRubberBand* m_rubberBand = nullptr;
+    QWidget* m_labels = nullptr; // LabelOverlay, made on the first paint
 };
 
 // Must run before the QApplication is created: asks for OpenGL 3.3 core.

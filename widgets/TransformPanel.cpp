@@ -53,7 +53,9 @@ TransformPanel::TransformPanel(QWidget* parent) : QWidget(parent)
             box->setRange(-kLimit, kLimit);
             box->setSingleStep(row == 0 ? 0.01 : 5.0);
             box->setKeyboardTracking(false); // one edit per entered value
-            box->setMinimumWidth(70);
+            // Narrow enough for a dock beside the channel box: the dock's width, not the range's digits, sizes it.
+            box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+            box->setMinimumWidth(56);
             connect(box, &QDoubleSpinBox::valueChanged, this, [this, row, axis] { fieldEntered(row, axis); });
             grid->addWidget(box, row + 1, axis + 1);
             m_fields[std::size_t(row)][std::size_t(axis)] = box;
