@@ -15,6 +15,7 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QFileDialog>
 #include <QMenuBar>
@@ -122,8 +123,13 @@ void MainWindow::createActions()
     file->addSeparator();
     file->addAction(exportRigAction);
     file->addSeparator();
+    QAction* close = makeAction(this, "closeGuide", tr("&Close"), QKeySequence::Close);
+    close->setToolTip(tr("Close the guide (an empty untitled guide takes its place)"));
+    connect(close, &QAction::triggered, this, &MainWindow::closeDocument);
+    file->addAction(close);
     file->addAction(quit);
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->setObjectName("editMenu");
     edit->addActions({undo, redo});
     QMenu* rig = menuBar()->addMenu(tr("&Rig"));
     rig->addAction(build);
@@ -136,6 +142,7 @@ void MainWindow::createActions()
     bar->addActions({build, exportRigAction});
     bar->addSeparator();
     bar->addActions({undo, redo});
+    createEditActions();
     createPoseActions();
     createViewActions();
 }
@@ -214,6 +221,9 @@ void MainWindow::followMode()
     if (QAction* a = action(rigMode ? "modeRig" : "modeGuide"))
         a->setChecked(true);
     m_viewport->setRigMode(rigMode);
+    // The dock for the mode: the transform panel in Guide mode, the channel box in Rig mode.
+    if (auto* dock = findChild<QDockWidget*>(rigMode ? "channelBoxDock" : "transformDock"))
+        dock->raise();
 }
 
 } // namespace rs::app

@@ -80,6 +80,8 @@ void MainWindow::follow(const edit::Change& change)
     if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names | K::Reference | K::Selection |
                       K::Rig | K::Evaluation | K::Mode | K::Templates))
         refreshScene();
+    if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Selection | K::Mode))
+        refreshTransformPanel();
 }
 
 } // namespace rs::app

@@ -6,6 +6,7 @@
 #include "HistoryView.h"
 #include "Settings.h"
 #include "TemplateLibrary.h"
+#include "TransformPanel.h"
 #include "LogPanel.h"
 #include "OutlinerView.h"
 #include "ViewportWidget.h"
@@ -14,6 +15,7 @@
 #include <QFile>
 #include <QTimer>
 #include <QCoreApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
@@ -22,6 +24,24 @@
 #include <QStatusBar>
 
 namespace rs::app {
+
+namespace {
+
+// The first `count` errors (warnings when there are none): what a message box has room for.
+Diagnostics errorsOf(const Diagnostics& diagnostics, std::size_t count)
+{
+    Diagnostics out;
+    for (Severity severity : {Severity::Error, Severity::Warning}) {
+        for (const Diagnostic& d : diagnostics)
+            if (d.severity == severity && out.size() < count)
+                out.push_back(d);
+        if (!out.empty())
+            break;
+    }
+    return out;
+}
+
+} // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
@@ -40,6 +60,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
             report(tr("Autosave failed"), diagnostics);
     });
     autosave->start(kAutosaveMilliseconds);
+    m_errorPrompt = [this](const QString& title, const QString& text) {
+        if (isVisible() && !property("skipUnsavedPrompt").toBool()) // tests drive the editor without modal boxes
+            QMessageBox::warning(this, title, text);
+    };
     m_recoveryPrompt = [this](const QString& file, const QString& autosavePath) {
         return QMessageBox::question(this, tr("Recover unsaved changes?"),
                                      tr("%1 has unsaved changes from %2 that were not saved (the editor did not close "
@@ -48,6 +72,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
                                               QFileInfo(autosavePath).lastModified().toString()),
                                      QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
     };
+}
+
+MainWindow::~MainWindow()
+{
+    // The session goes before the child widgets: a field still being typed in
+    // commits its value when it is hidden, and that edit must not reach it.
+    for (QObject* view : findChildren<QWidget*>())
+        disconnect(view, nullptr, this, nullptr);
 }
 
 void MainWindow::offerUntitledRecovery()
@@ -80,7 +112,7 @@ void MainWindow::createDocks()
     setCentralWidget(m_viewport);
 
     m_outliner = new widgets::OutlinerView(this);
-    addDock(m_outliner, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
+    QDockWidget* outlinerDock = addDock(m_outliner, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
     m_library = new widgets::TemplateLibrary(this);
     addDock(m_library, tr("Templates"), "libraryDock", Qt::LeftDockWidgetArea);
 
@@ -92,9 +124,12 @@ void MainWindow::createDocks()
 
     m_channelBox = new widgets::ChannelBox(this);
     m_channelBox->setObjectName("channelBox");
-    addDock(m_channelBox, tr("Channel box"), "channelBoxDock", Qt::RightDockWidgetArea);
+    QDockWidget* channelDock = addDock(m_channelBox, tr("Channel box"), "channelBoxDock", Qt::RightDockWidgetArea);
+    m_transformPanel = new widgets::TransformPanel(this);
+    tabifyDockWidget(channelDock, addDock(m_transformPanel, tr("Transform"), "transformDock", Qt::RightDockWidgetArea));
     m_options = new widgets::OptionsEditor(this);
-    resizeDocks({addDock(m_options, tr("Options"), "optionsDock", Qt::RightDockWidgetArea)}, {340}, Qt::Horizontal);
+    resizeDocks({addDock(m_options, tr("Options"), "optionsDock", Qt::RightDockWidgetArea), outlinerDock}, {340, 250},
+                Qt::Horizontal);
 
     m_status = new QLabel(this);
     statusBar()->addPermanentWidget(m_status);
@@ -107,6 +142,8 @@ void MainWindow::createDocks()
     statusBar()->addPermanentWidget(m_buildProgress);
     connect(&m_session, &EditorSession::buildProgressed, this, &MainWindow::showBuildProgress);
     resize(1400, 900);
+    createDisplayActions(); // the menus that drive the viewport and list the docks
+    createHelpActions();
 }
 
 void MainWindow::connectDocument()
@@ -150,6 +187,7 @@ void MainWindow::connectDocument()
     connectViewport();
     connectRigMode();
     connectOptions();
+    connectTransformPanel();
 
     m_log->addDiagnostics(m_session.templateDiagnostics());
     refreshViews();
@@ -190,8 +228,13 @@ void MainWindow::report(const QString& what, const Diagnostics& diagnostics)
 void MainWindow::showWriteFailure(const QString& what, const Diagnostics& diagnostics)
 {
     statusBar()->showMessage(what + " " + tr("(details in the build log)"), 15000);
-    if (isVisible() && !property("skipUnsavedPrompt").toBool()) // tests drive the editor without modal boxes
-        QMessageBox::warning(this, tr("Write failed"), what + "\n\n" + QString::fromStdString(formatAll(diagnostics)));
+    showError(tr("Write failed"), what + "\n\n" + QString::fromStdString(formatAll(diagnostics)));
+}
+
+void MainWindow::showError(const QString& title, const QString& text)
+{
+    if (m_errorPrompt)
+        m_errorPrompt(title, text);
 }
 
 void MainWindow::reloadTemplates()
@@ -226,6 +269,10 @@ bool MainWindow::openFile(const QString& path)
     const bool ok = m_session.open(path, diagnostics);
     diagnostics.insert(diagnostics.begin(), notes.begin(), notes.end());
     report(ok ? tr("Opened %1").arg(path) : tr("Could not open %1; the open guide is unchanged").arg(path), diagnostics);
+    if (!ok) // the first errors, file:line:column, where the rigger looks (the log keeps them all)
+        showError(tr("Could not open the guide"),
+                  tr("Could not open %1; the open guide is unchanged.\n\n%2")
+                      .arg(path, QString::fromStdString(formatAll(errorsOf(diagnostics, 8)))));
     if (ok) {
         settings::addRecentFile(path);
         updateTitle();
@@ -247,9 +294,20 @@ bool MainWindow::newFromSample(const QString& samplePath)
     return ok;
 }
 
+bool MainWindow::closeDocument()
+{
+    if (!maySwitchDocument(tr("Save the guide before closing it?")))
+        return false;
+    return newFromSample(QString());
+}
+
 bool MainWindow::saveFile(const QString& path)
 {
     Diagnostics diagnostics;
+    // The guide's name follows its file while it is untitled or named after its old file.
+    const std::string& name = m_session.document().name;
+    if (name.empty() || name == "untitled" || name == QFileInfo(m_session.filePath()).completeBaseName().toStdString())
+        m_session.setDocumentName(QFileInfo(path).completeBaseName().toStdString());
     const bool ok = m_session.save(path, diagnostics);
     if (ok)
         settings::addRecentFile(path);
@@ -295,6 +353,18 @@ widgets::ExportDialog* MainWindow::exportDialog()
         connect(m_exportDialog, &widgets::ExportDialog::exportRequested, this,
                 [this](const io::ExportRequest& request) { exportRig(request); });
     }
+    // The path follows the guide: <guide folder>/<guide name>.glb, made again
+    // for each guide opened or saved under another name (a path typed for
+    // this guide is kept).
+    const QString guide = m_session.filePath() + "|" + QString::fromStdString(m_session.document().name);
+    if (guide != m_exportDialogGuide) {
+        const QFileInfo file(m_session.filePath());
+        const QString folder = m_session.filePath().isEmpty() ? QDir::currentPath() : file.absolutePath();
+        const QString name = m_session.document().name.empty() ? file.completeBaseName()
+                                                                : QString::fromStdString(m_session.document().name);
+        m_exportDialog->setPath(QDir(folder).filePath((name.isEmpty() ? tr("rig") : name) + ".glb"));
+        m_exportDialogGuide = guide;
+    }
     return m_exportDialog;
 }
 
@@ -307,6 +377,8 @@ void MainWindow::showBuildProgress(double fraction, const QString& stage)
     const bool done = fraction >= 1.0;
     m_buildProgress->setVisible(!done);
     m_buildProgress->setValue(int(fraction * 1000.0));
+    if (done && statusBar()->currentMessage().startsWith(tr("Building: ").trimmed()))
+        statusBar()->clearMessage(); // a build that ended never leaves its last stage behind
     if (done || !m_buildPainted.isValid() || m_buildPainted.elapsed() < 100)
         return;
     statusBar()->showMessage(tr("Building: %1...").arg(stage));
@@ -318,6 +390,7 @@ void MainWindow::buildRig()
 {
     m_buildPainted.start(); // the first paint waits 100 ms
     const double ms = m_session.build();
+    m_buildProgress->hide();
     const auto* rig = m_session.rig();
     m_log->addMessage(tr("Built %1 nodes in %2 ms").arg(rig->nodes.size()).arg(ms, 0, 'f', 2),
                       hasErrors(rig->diagnostics) ? Severity::Error : Severity::Note);

@@ -2,6 +2,7 @@
 // The editor window: the composition root. It creates the actions and docks and
 // wires the session (core) to the views; it holds no rigging logic itself.
 #include "EditorSession.h"
+#include "Scene.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -14,7 +15,7 @@ class QLabel;
 class QProgressBar;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; }
 
 namespace rs::app {
 
@@ -22,6 +23,7 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
 
     EditorSession& session() { return m_session; }
     viewport::ViewportWidget* viewportWidget() const { return m_viewport; }
@@ -31,6 +33,8 @@ public:
     widgets::OptionsEditor* optionsEditor() const { return m_options; }
     widgets::HistoryView* historyView() const { return m_historyView; }
     widgets::TemplateLibrary* templateLibrary() const { return m_library; }
+    widgets::TransformPanel* transformPanel() const { return m_transformPanel; }
+    const viewport::DisplayOptions& displayOptions() const { return m_display; }
     QAction* action(const QString& objectName) const;
 
     // Offers to recover an autosave newer than the file (a crash left it).
@@ -40,12 +44,18 @@ public:
     // How a recovery is offered (a question box; tests answer it themselves).
     using RecoveryPrompt = std::function<bool(const QString& file, const QString& autosave)>;
     void setRecoveryPrompt(RecoveryPrompt prompt) { m_recoveryPrompt = std::move(prompt); }
+    // How an error the rigger must see is shown (a warning box; tests catch it,
+    // and a window driven by tests or not shown yet only logs it).
+    using ErrorPrompt = std::function<void(const QString& title, const QString& text)>;
+    void setErrorPrompt(ErrorPrompt prompt) { m_errorPrompt = std::move(prompt); }
     static constexpr int kAutosaveMilliseconds = 60000;
     // Off for measurements and screenshots (nothing to recover from them).
     void setAutosaveEnabled(bool on);
     // File > New: an untitled copy of a sample (empty path: an empty guide).
     bool newFromSample(const QString& samplePath);
     bool saveFile(const QString& path);
+    // File > Close: an empty untitled guide (asks to save unsaved changes first).
+    bool closeDocument();
     // Exports with the default options (glTF preset, skeleton only); builds first when needed.
     bool exportTo(const QString& path);
     bool exportRig(const io::ExportRequest& request);
@@ -64,6 +74,13 @@ private:
     void createPoseActions(); // Actions.cpp: Guide/Rig mode, pose tools, gizmo space
     void createViewActions(); // ViewActions.cpp: camera views, framing, guide authoring tools
     void connectViewport();   // ViewportWiring.cpp: picks, box selection, gizmo drags
+    void createEditActions();    // EditActions.cpp: delete, select all / hierarchy
+    void createDisplayActions(); // DisplayActions.cpp: View > Display and Navigation, the Window menu
+    void createHelpActions();    // HelpActions.cpp: About, the README, the selected template's help
+    void connectTransformPanel(); // TransformWiring.cpp
+    void refreshTransformPanel();
+    void showHelpText(const QString& title, const QString& markdown);
+    void showError(const QString& title, const QString& text);
     void createDocks();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area);
     void connectDocument();
@@ -95,6 +112,10 @@ private:
     widgets::OptionsEditor* m_options = nullptr;
     widgets::HistoryView* m_historyView = nullptr;
     widgets::TemplateLibrary* m_library = nullptr;
+    widgets::TransformPanel* m_transformPanel = nullptr;
+    viewport::DisplayOptions m_display;
+    ErrorPrompt m_errorPrompt;
+    QString m_exportDialogGuide; // the guide the export dialog's path was made for
     QLabel* m_status = nullptr;
     QProgressBar* m_buildProgress = nullptr;
     QElapsedTimer m_buildPainted; // when the build's progress was last painted

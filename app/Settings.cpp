@@ -38,6 +38,26 @@ void addRecentFile(const QString& path)
     s.setValue("recentFiles", files);
 }
 
+QString navigation()
+{
+    return QSettings(kOrganisation, kApplication).value("view/navigation", "maya").toString();
+}
+
+void setNavigation(const QString& scheme)
+{
+    QSettings(kOrganisation, kApplication).setValue("view/navigation", scheme);
+}
+
+bool isDisplayed(const QString& layer, bool fallback)
+{
+    return QSettings(kOrganisation, kApplication).value("display/" + layer, fallback).toBool();
+}
+
+void setDisplayed(const QString& layer, bool shown)
+{
+    QSettings(kOrganisation, kApplication).setValue("display/" + layer, shown);
+}
+
 void saveWindow(const QMainWindow& window)
 {
     QSettings s(kOrganisation, kApplication);

@@ -18,6 +18,7 @@ namespace rs::app {
 void MainWindow::createViewActions()
 {
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->setObjectName("viewMenu");
     auto* views = new QActionGroup(this); // in CameraView order: ViewportWiring checks the current one
     const std::tuple<const char*, QString, viewport::CameraView> cameraViews[] = {
         {"viewPerspective", tr("&Perspective\t5"), viewport::CameraView::Perspective},

@@ -90,6 +90,8 @@ void MainWindow::connectRigMode()
     connect(m_channelBox, &widgets::ChannelBox::channelEdited, this, [this](int channel, double value, bool match) {
         logStatus(m_session.setChannel(channel, value, match));
     });
+    // After a value is entered the keyboard goes back to the viewport: hotkeys and arrow pickwalk work again.
+    connect(m_channelBox, &widgets::ChannelBox::editingDone, this, [this] { m_viewport->setFocus(Qt::OtherFocusReason); });
 }
 
 void MainWindow::refreshScene()
@@ -101,10 +103,13 @@ void MainWindow::refreshScene()
     // The mirrored branches' guides are drawn with the guides only (not in Rig mode).
     const std::vector<session::MirroredGuideJoint> mirrored =
         pose ? std::vector<session::MirroredGuideJoint>{} : m_session.mirroredGuideJoints();
-    viewport::Scene scene = viewport::makeScene(m_session.document(), m_session.rig(),
+    // A rig that no longer matches the guide is not drawn over it (Build brings it back).
+    const model::Rig* drawnRig = rigMode || !m_session.isRigStale() ? m_session.rig() : nullptr;
+    viewport::Scene scene = viewport::makeScene(m_session.document(), drawnRig,
                                                 {s.instance, s.joint, s.joints, s.node, s.nodes, cvMode, s.cvs}, pose,
                                                 mirrored);
     scene.reference = m_session.referenceTriangles();
+    viewport::applyDisplay(scene, m_display, rigMode);
     m_viewport->setScene(std::move(scene));
     const auto* rig = m_session.rig();
     const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();

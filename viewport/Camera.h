@@ -26,8 +26,10 @@ public:
     void orbit(double dxPixels, double dyPixels);
     void pan(double dxPixels, double dyPixels, double viewportHeightPixels);
     void dolly(double steps);
-    // Frames a bounding box so it fills the view.
-    void frame(const glm::dvec3& lo, const glm::dvec3& hi);
+    // Frames a bounding box so it fills the view (width / height `aspect`):
+    // the box's corners, seen from the current direction, fit both the
+    // vertical and the horizontal field of view with a small margin.
+    void frame(const glm::dvec3& lo, const glm::dvec3& hi, double aspect = 1.0);
 
     glm::dvec3 target{0.0, 1.0, 0.0};
     double distance = 4.0;

@@ -92,7 +92,7 @@ void GlfwHost::run(const Scene& scene, Camera camera)
         if (glfwGetKey(m_window, GLFW_KEY_F) == GLFW_PRESS) {
             glm::dvec3 lo, hi;
             if (scene.bounds(lo, hi))
-                camera.frame(lo, hi);
+                camera.frame(lo, hi, double(m_width) / std::max(1, m_height));
         }
         camera.dolly(scroll.steps);
         scroll.steps = 0;

@@ -33,6 +33,32 @@ bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi)
     return any;
 }
 
+void applyDisplay(Scene& scene, const DisplayOptions& display, bool rigMode)
+{
+    if (!display.guides) {
+        scene.guideJoints.clear();
+        scene.mirrorJoints.clear();
+        if (!rigMode)
+            scene.axes.clear();
+    }
+    if (!(rigMode ? display.controllers : display.shapes)) {
+        scene.curves.clear();
+        scene.cvs.clear();
+        scene.hulls.clear();
+    }
+    if (!display.skinJoints) {
+        scene.skinJoints.clear();
+        if (rigMode)
+            scene.axes.clear();
+    }
+    if (!display.reference)
+        scene.reference.reset();
+    if (!display.labels)
+        scene.labels.clear();
+    if (!display.axes)
+        scene.axes.clear();
+}
+
 namespace {
 
 const glm::dvec3 kHullColor{0.55, 0.3, 0.6}; // Maya draws hulls and CVs in violet
@@ -63,6 +89,22 @@ void addCvs(Scene& scene, const model::RigNode& node, model::RigNodeIndex index,
     }
 }
 
+void addAxes(Scene& scene, const glm::dmat4& world)
+{
+    const glm::dvec3 origin(world[3]);
+    const glm::dvec3 colors[] = {{0.95, 0.25, 0.25}, {0.3, 0.9, 0.3}, {0.3, 0.5, 1.0}};
+    for (int axis = 0; axis < 3; ++axis) {
+        const glm::dvec3 direction(world[axis]);
+        const double length = glm::length(direction);
+        if (length < 1e-12)
+            continue;
+        SceneCurve c;
+        c.color = colors[axis];
+        c.points = {origin, origin + direction / length * Scene::kAxisLength};
+        scene.axes.push_back(std::move(c));
+    }
+}
+
 } // namespace
 
 Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
@@ -75,7 +117,13 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
             SceneJoint j;
             j.id = joint.id;
             j.owner = instance.id;
-            j.position = translationOf(guide.jointWorldMatrix(joint.id));
+            const glm::dmat4 jointWorld = guide.jointWorldMatrix(joint.id);
+            j.position = translationOf(jointWorld);
+            if (scene.showGuides) {
+                addAxes(scene, jointWorld);
+                if (&joint == &instance.joints.front())
+                    scene.labels.push_back({j.position, instance.name});
+            }
             const model::JointId parent = joint.parent != model::kNoId ? joint.parent : instance.parentJoint;
             if (parent != model::kNoId && guide.joint(parent)) {
                 j.hasParent = true;
@@ -113,6 +161,8 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                               selection.instance != model::kNoId);
                 for (const auto& p : curve.points)
                     c.points.push_back(glm::dvec3(nodeWorld * glm::dvec4(p, 1.0)));
+                if (c.selected && posed && &curve == &node.curves.front())
+                    scene.labels.push_back({translationOf(nodeWorld), node.name}); // Rig mode: the selected controllers
                 scene.curves.push_back(std::move(c));
             }
         if (showsCvs(selection, i) && !posed)
@@ -125,6 +175,8 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                 j.hasParent = true;
                 j.parentPosition = translationOf(world(node.virtualParent));
             }
+            if (posed)
+                addAxes(scene, nodeWorld);
             scene.skinJoints.push_back(j);
         }
     }

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace rs::viewport {
@@ -37,6 +38,26 @@ struct SceneCv {
     bool selected = false;
 };
 
+// A name drawn next to what it names (an instance at its first guide joint,
+// a controller at its origin), world space.
+struct SceneLabel {
+    glm::dvec3 position{0.0};
+    std::string text;
+};
+
+// What the View > Display menu shows. Controller curves are the "shapes" in
+// Guide mode (authored there) and the "controllers" in Rig mode.
+struct DisplayOptions {
+    bool guides = true;
+    bool shapes = true;
+    bool controllers = true;
+    bool skinJoints = true;
+    bool reference = true;
+    bool labels = false;
+    bool axes = false;
+    bool operator==(const DisplayOptions&) const = default;
+};
+
 struct SceneSelection {
     model::InstanceId instance = model::kNoId;
     model::JointId joint = model::kNoId;
@@ -60,6 +81,11 @@ struct Scene {
     std::vector<SceneCv> cvs;             // CV mode: pickable control points
     std::vector<SceneCurve> hulls;        // CV mode: the hulls joining them
     std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo)
+    // Each guide joint's (Guide mode) or skin joint's (Rig mode) local axes:
+    // X red, Y green, Z blue, kAxisLength long. Not pickable.
+    std::vector<SceneCurve> axes;
+    std::vector<SceneLabel> labels;
+    static constexpr double kAxisLength = 0.06; // metres
     bool showGuides = true;
     // Set by the viewport each time it is given a new scene: the renderer sends
     // the scene's vertices again only when it changed (0: always).
@@ -75,6 +101,8 @@ struct Scene {
 // guides, drawn with the guides.
 Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const SceneSelection& selection,
                 const eval::EvalState* pose = nullptr, const std::vector<session::MirroredGuideJoint>& mirrored = {});
+// Removes what `display` hides (hidden things are neither drawn nor picked).
+void applyDisplay(Scene& scene, const DisplayOptions& display, bool rigMode);
 // Bounds of the selected guide joints or controllers; false when nothing is selected.
 bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
 

@@ -5,6 +5,8 @@
 #include "eval/Pickwalk.h"
 
 #include <QMouseEvent>
+#include <QNativeGestureEvent>
+#include <QPainter>
 #include <QOpenGLContext>
 #include <QRubberBand>
 #include <QFileInfo>
@@ -61,7 +63,7 @@ void ViewportWidget::frameAll()
 {
     glm::dvec3 lo, hi;
     if (m_scene.bounds(lo, hi))
-        m_camera.frame(lo, hi);
+        m_camera.frame(lo, hi, double(width()) / std::max(1, height()));
     update();
 }
 
@@ -77,7 +79,7 @@ void ViewportWidget::frameSelection()
 {
     glm::dvec3 lo, hi;
     if (selectionBounds(m_scene, lo, hi))
-        m_camera.frame(lo, hi);
+        m_camera.frame(lo, hi, double(width()) / std::max(1, height()));
     else
         frameAll();
     update();
@@ -153,6 +155,65 @@ void ViewportWidget::paintGL()
         m_scene.overlay = gizmoCurves(*g, m_activeHandle);
     if (m_renderer)
         m_renderer->render(m_scene, m_camera, int(width() * devicePixelRatio()), int(height() * devicePixelRatio()));
+    paintLabels();
+}
+
+// The labels are painted by a see-through child widget over the GL surface
+// (composited by Qt, so window grabs include them).
+class LabelOverlay : public QWidget {
+public:
+    explicit LabelOverlay(ViewportWidget* view) : QWidget(view), m_view(view)
+    {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override
+    {
+        const Scene& scene = m_view->scene();
+        if (scene.labels.empty())
+            return;
+        QPainter painter(this);
+        painter.setPen(QColor(225, 225, 215));
+        const Camera& camera = m_view->camera();
+        const glm::dmat4 vp = camera.projectionMatrix(double(width()) / std::max(1, height())) * camera.viewMatrix();
+        for (const SceneLabel& label : scene.labels) {
+            glm::dvec2 p;
+            if (projectToPixels(vp, label.position, width(), height(), p))
+                painter.drawText(QPointF(p.x + 7.0, p.y - 5.0), QString::fromStdString(label.text));
+        }
+    }
+
+private:
+    ViewportWidget* m_view;
+};
+
+void ViewportWidget::paintLabels()
+{
+    if (!m_labels) {
+        m_labels = new LabelOverlay(this);
+        m_labels->show();
+    }
+    m_labels->setGeometry(rect());
+    m_labels->update();
+}
+
+ViewportWidget::CameraDrag ViewportWidget::cameraDragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const
+{
+    const bool alt = modifiers & Qt::AltModifier;
+    if (button == Qt::LeftButton)
+        return alt ? CameraDrag::Orbit : CameraDrag::None;
+    if (button == Qt::MiddleButton) {
+        if (m_navigation != Navigation::Blender)
+            return CameraDrag::Pan;
+        if (modifiers & Qt::ShiftModifier)
+            return CameraDrag::Pan;
+        return modifiers & Qt::ControlModifier ? CameraDrag::Dolly : CameraDrag::Orbit;
+    }
+    if (button == Qt::RightButton && alt)
+        return CameraDrag::Dolly;
+    return CameraDrag::None;
 }
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event)
@@ -160,8 +221,8 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
     m_pressPosition = m_lastPosition = event->position().toPoint();
     m_dragButton = event->button();
     m_dragged = false;
-    m_orbiting = event->modifiers() & Qt::AltModifier;
-    if (event->button() != Qt::LeftButton || m_orbiting)
+    m_cameraDrag = cameraDragFor(event->button(), event->modifiers());
+    if (event->button() != Qt::LeftButton || m_cameraDrag != CameraDrag::None)
         return;
     const glm::dvec2 pixel(event->position().x(), event->position().y());
     if (const auto g = gizmo()) {
@@ -169,7 +230,6 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
         if (handle >= 0) {
             m_gizmoDrag.emplace(*g, handle, rayThroughPixel(m_camera, width(), height(), pixel));
             m_activeHandle = handle;
-            m_orbiting = false;
             emit gizmoDragStarted(m_gizmoTarget);
             update();
         }
@@ -190,21 +250,20 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         emit gizmoDragged(m_gizmoTarget, m_gizmoDrag->worldFor(ray));
         return;
     }
-    const bool alt = event->modifiers() & Qt::AltModifier;
     const bool wasOrtho = m_camera.orthographic;
-    if (m_dragButton == Qt::LeftButton && !m_orbiting) { // box select
+    if (m_dragButton == Qt::LeftButton && m_cameraDrag == CameraDrag::None) { // box select
         if (!m_rubberBand)
             m_rubberBand = new QRubberBand(QRubberBand::Rectangle, this);
         m_rubberBand->setGeometry(QRect(m_pressPosition, p).normalized());
         m_rubberBand->show();
         return;
     }
-    if (m_dragButton == Qt::LeftButton)
+    if (m_cameraDrag == CameraDrag::Orbit)
         m_camera.orbit(delta.x(), delta.y());
-    else if (m_dragButton == Qt::MiddleButton)
+    else if (m_cameraDrag == CameraDrag::Pan)
         m_camera.pan(delta.x(), delta.y(), height());
-    else if (m_dragButton == Qt::RightButton && alt)
-        m_camera.dolly(delta.x() * 0.05);
+    else if (m_cameraDrag == CameraDrag::Dolly)
+        m_camera.dolly((delta.x() - delta.y()) * 0.05);
     if (wasOrtho && !m_camera.orthographic)
         emit viewChanged(int(m_camera.view()));
     update();
@@ -217,7 +276,7 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
         m_gizmoDrag.reset();
         m_activeHandle = -1;
         emit gizmoDragFinished(m_gizmoTarget);
-    } else if (event->button() == Qt::LeftButton && m_dragged && !m_orbiting) {
+    } else if (event->button() == Qt::LeftButton && m_dragged && m_cameraDrag == CameraDrag::None) {
         if (m_rubberBand)
             m_rubberBand->hide();
         const glm::dvec2 a(m_pressPosition.x(), m_pressPosition.y()), b(event->position().x(), event->position().y());
@@ -243,13 +302,39 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
             emit nothingPicked();
     }
     m_dragButton = Qt::NoButton;
+    m_cameraDrag = CameraDrag::None;
     update();
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event)
 {
-    m_camera.dolly(event->angleDelta().y() / 120.0);
+    const bool wasOrtho = m_camera.orthographic;
+    if (m_navigation != Navigation::Touchpad || event->modifiers() & Qt::ControlModifier) {
+        m_camera.dolly(event->angleDelta().y() / 120.0);
+    } else {
+        // A two-finger scroll: pixels where the platform gives them, else 120 per notch = 15 pixels.
+        const QPoint pixels = event->pixelDelta().isNull() ? event->angleDelta() / 8 : event->pixelDelta();
+        if (event->modifiers() & Qt::ShiftModifier)
+            m_camera.pan(-pixels.x(), -pixels.y(), height());
+        else
+            m_camera.orbit(-pixels.x(), -pixels.y());
+    }
+    if (wasOrtho && !m_camera.orthographic)
+        emit viewChanged(int(m_camera.view()));
     update();
+}
+
+bool ViewportWidget::event(QEvent* event)
+{
+    if (event->type() == QEvent::NativeGesture) {
+        auto* gesture = static_cast<QNativeGestureEvent*>(event);
+        if (gesture->gestureType() == Qt::ZoomNativeGesture) {
+            m_camera.dolly(gesture->value() * 10.0);
+            update();
+            return true;
+        }
+    }
+    return QOpenGLWidget::event(event);
 }
 
 bool ViewportWidget::handleViewKey(QKeyEvent* event)

@@ -1,7 +1,10 @@
 #pragma once
 // The Qt host of the Renderer: a QOpenGLWidget with an orbit camera, as in
-// Maya: Alt+left drag orbits, middle drag (or Alt+middle) pans, the wheel (or
-// Alt+right drag) zooms, a left click picks (Shift adds), a left drag on empty
+// Maya by default (Navigation::Maya): Alt+left drag orbits, middle drag pans,
+// the wheel (or Alt+right drag) zooms. Navigation::Blender: middle drag
+// orbits, Shift+middle pans, Ctrl+middle zooms. Navigation::Touchpad: a
+// two-finger scroll orbits, Shift+scroll pans, Ctrl+scroll or a pinch zooms
+// (Alt+left drag still orbits in every scheme). A left click picks (Shift adds), a left drag on empty
 // space box-selects (guide joints in Guide mode, the shown CVs in CV mode,
 // controllers in Rig mode), F
 // frames the selection and A frames all; 1 / 3 / 7 turn to the front, side and
@@ -27,6 +30,9 @@ namespace rs::viewport {
 
 class Renderer;
 
+// How mouse buttons and the wheel move the camera (see the class comment).
+enum class Navigation { Maya, Blender, Touchpad };
+
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
 public:
@@ -38,6 +44,7 @@ public:
     // Vertices the renderer has sent to the GPU (0 before the first frame).
     std::uint64_t verticesUploaded() const;
     Camera& camera() { return m_camera; }
+    const Camera& camera() const { return m_camera; }
     void frameAll();
     // Where a world point lands in widget pixels (for tests and tools).
     QPoint toWidgetPixels(const glm::dvec3& world) const;
@@ -60,6 +67,8 @@ public:
     bool isSelectTool() const { return m_selectTool; }
     // The gizmo as drawn (size for the current camera); nullopt when hidden.
     std::optional<Gizmo> gizmo() const;
+    void setNavigation(Navigation navigation) { m_navigation = navigation; }
+    Navigation navigation() const { return m_navigation; }
 
 signals:
     void guideJointPicked(quint32 joint, quint32 owner, bool add);
@@ -84,10 +93,14 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    bool event(QEvent* event) override; // pinch to zoom
 
 private:
+    enum class CameraDrag { None, Orbit, Pan, Dolly };
+    CameraDrag cameraDragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const;
     void cleanup();
     bool handleViewKey(QKeyEvent* event);
+    void paintLabels();
 
     std::unique_ptr<Renderer> m_renderer;
     Scene m_scene;
@@ -96,7 +109,8 @@ private:
     QPoint m_pressPosition, m_lastPosition;
     Qt::MouseButton m_dragButton = Qt::NoButton;
     bool m_dragged = false;
-    bool m_orbiting = false;
+    CameraDrag m_cameraDrag = CameraDrag::None;
+    Navigation m_navigation = Navigation::Maya;
     QString m_renderError;
     bool m_rigMode = false;
     Gizmo m_gizmo;
@@ -105,6 +119,7 @@ private:
     bool m_selectTool = false;
     int m_activeHandle = -1;
     QRubberBand* m_rubberBand = nullptr;
+    QWidget* m_labels = nullptr; // LabelOverlay, made on the first paint
 };
 
 // Must run before the QApplication is created: asks for OpenGL 3.3 core.

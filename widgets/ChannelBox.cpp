@@ -1,9 +1,12 @@
 #include "ChannelBox.h"
 
+#include "WheelGuard.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -98,6 +101,7 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
             combo->setEnabled(!c.locked);
             connect(combo, &QComboBox::activated, this, [this, i](int index) {
                 if (!m_updating) emit channelEdited(i, double(index), m_match->isChecked());
+                emit editingDone();
             });
             m_grid->addWidget(combo, row, 1, 1, 2);
             m_editors.push_back({i, combo});
@@ -113,6 +117,10 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double value) {
             if (!m_updating) emit channelEdited(i, value, m_match->isChecked());
         });
+        connect(spin, &QDoubleSpinBox::editingFinished, this, [this, spin] {
+            if (spin->hasFocus()) // Enter; focus moving elsewhere also finishes an edit
+                emit editingDone();
+        });
         m_grid->addWidget(spin, row, 1);
         m_editors.push_back({i, spin});
         if (c.transform < 0 && c.limited && !c.locked) {
@@ -124,6 +132,7 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
             });
             connect(slider, &QSlider::sliderReleased, this, [this, i, spin] {
                 if (!m_updating) emit channelEdited(i, spin->value(), m_match->isChecked());
+                emit editingDone();
             });
             connect(spin, &QDoubleSpinBox::valueChanged, slider, [slider, c](double value) {
                 QSignalBlocker block(slider);
@@ -132,6 +141,16 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
             m_grid->addWidget(slider, row, 2);
         }
     }
+    guardWheel(m_rows);
+}
+
+void ChannelBox::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_Escape) {
+        emit editingDone();
+        return;
+    }
+    QWidget::keyPressEvent(event);
 }
 
 void ChannelBox::updateValues(const eval::Pose& pose)

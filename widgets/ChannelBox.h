@@ -13,6 +13,7 @@
 
 class QCheckBox;
 class QGridLayout;
+class QKeyEvent;
 class QLabel;
 
 namespace rs::widgets {
@@ -33,6 +34,13 @@ public:
 
 signals:
     void channelEdited(int channel, double value, bool matchSpace);
+    // A value was entered (Enter, a combo choice, a slider let go) or Escape
+    // pressed: the owner gives the keyboard back to the viewport, so hotkeys
+    // and arrow-key pickwalk work again.
+    void editingDone();
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
     void rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex node);

@@ -1,5 +1,6 @@
 #include "OptionsEditor.h"
 
+#include "WheelGuard.h"
 #include "io/YamlText.h"
 
 #include <QCheckBox>
@@ -11,7 +12,7 @@
 #include <QRegularExpressionValidator>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLineEdit>
+#include <QLocale>
 #include <QScrollArea>
 #include <QSlider>
 #include <QSpinBox>
@@ -29,15 +30,63 @@ constexpr int kSliderSteps = 1000;
 
 QString text(const std::string& s) { return QString::fromStdString(s); }
 
+// A spin box that lets a number outside its range be typed (so the field can
+// say why it is refused) and, when entered, clamps it to the range.
+template <class Box>
+class RangeBox : public Box {
+public:
+    explicit RangeBox(QWidget* parent) : Box(parent) { this->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue); }
+
+protected:
+    QValidator::State validate(QString& input, int& position) const override
+    {
+        const QValidator::State state = Box::validate(input, position);
+        bool number = false;
+        QLocale().toDouble(input.trimmed(), &number);
+        return state == QValidator::Invalid && number ? QValidator::Intermediate : state;
+    }
+};
+
 QDoubleSpinBox* numberBox(QWidget* parent, double value, std::optional<double> min, std::optional<double> max)
 {
-    auto* box = new QDoubleSpinBox(parent);
+    auto* box = new RangeBox<QDoubleSpinBox>(parent);
     box->setDecimals(4);
     box->setRange(min.value_or(-kUnbounded), max.value_or(kUnbounded));
     box->setSingleStep(min && max ? (*max - *min) / 100.0 : 0.1);
     box->setValue(value);
     box->setKeyboardTracking(false); // one edit per finished value, not per keystroke
     return box;
+}
+
+QString rangeText(std::optional<double> min, std::optional<double> max)
+{
+    const QString lo = min ? QString::number(*min) : QStringLiteral("-\u221E");
+    const QString hi = max ? QString::number(*max) : QStringLiteral("\u221E");
+    return QStringLiteral("%1 \u2026 %2").arg(lo, hi);
+}
+
+// The range next to a number field, and its error state: a value outside it
+// (typed, or read from the guide) turns the field red and the range label
+// into the error, until the text is back in range.
+void watchRange(QAbstractSpinBox* box, QLabel* range, std::optional<double> min, std::optional<double> max,
+                std::optional<double> stored)
+{
+    const QString allowed = rangeText(min, max);
+    auto show = [box, range, min, max, allowed](std::optional<double> value) {
+        const bool bad = value && ((min && *value < *min) || (max && *value > *max));
+        box->setProperty("rangeError", bad);
+        box->setStyleSheet(bad ? "QAbstractSpinBox { border: 1px solid #d04040; }" : QString());
+        range->setText(bad ? QObject::tr("%1 is outside %2").arg(QString::number(*value), allowed) : allowed);
+        range->setStyleSheet(bad ? "color: #e05050" : "color: gray");
+    };
+    show(stored);
+    if (auto* line = box->findChild<QLineEdit*>())
+        QObject::connect(line, &QLineEdit::textEdited, box, [show](const QString& text) {
+            bool ok = false;
+            const double value = QLocale().toDouble(text.trimmed(), &ok);
+            show(ok ? std::optional<double>(value) : std::nullopt);
+        });
+    QObject::connect(box, &QAbstractSpinBox::editingFinished, box, [show] { show(std::nullopt); }); // corrected back
 }
 
 } // namespace
@@ -92,6 +141,7 @@ void OptionsEditor::setInstance(const model::TemplateInstance* instance, const t
     addNames(layout, *instance, *manifest);
     layout->addStretch(1);
     m_scroll->setWidget(m_body); // shown whole, once filled
+    guardWheel(m_body);
 }
 
 void OptionsEditor::addNames(QVBoxLayout* layout, const model::TemplateInstance& instance,
@@ -132,9 +182,11 @@ void OptionsEditor::addParameter(QFormLayout* form, const templates::Parameter& 
     auto* layout = new QHBoxLayout(row);
     layout->setContentsMargins(0, 0, 0, 0);
     QWidget* editor = makeEditor(parameter, value);
+    layout->addWidget(editor, 1);
+    if (auto* box = editor->findChild<QSpinBox*>(); box && !parameter.isEnum())
+        editor = box; // an integer's field, beside its range
     editor->setObjectName(text("option:" + parameter.name));
     editor->setToolTip(text(parameter.help));
-    layout->addWidget(editor, 1);
     auto* reset = new QToolButton(row);
     reset->setObjectName(text("reset:" + parameter.name));
     reset->setText(QStringLiteral("\u21BA"));
@@ -161,10 +213,33 @@ void OptionsEditor::showChanged(const model::TemplateInstance& instance)
     }
 }
 
+void OptionsEditor::addRange(QHBoxLayout* layout, const templates::Parameter& p, QAbstractSpinBox* box, double stored)
+{
+    auto* range = new QLabel(layout->parentWidget());
+    range->setObjectName(text("range:" + p.name));
+    range->setToolTip(tr("The values %1 takes").arg(text(p.name)));
+    layout->addWidget(range);
+    watchRange(box, range, p.min, p.max, stored);
+}
+
 QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& value)
 {
     const model::InstanceId id = m_instance;
     auto emitValue = [this, id, name = p.name](const Value& v) { emit optionEdited(id, name, v); };
+    if (p.isEnum()) { // the manifest's values; stored as the default is (a label, or an index)
+        auto* combo = new QComboBox(m_body);
+        for (const auto& [index, label] : p.enumLabels)
+            combo->addItem(text(label), QVariant::fromValue(index));
+        if (const auto* index = std::get_if<long long>(&value))
+            combo->setCurrentIndex(combo->findData(QVariant::fromValue(*index)));
+        else
+            combo->setCurrentIndex(combo->findText(text(formatValue(value))));
+        const bool byLabel = typeOf(p.value) == ValueType::String;
+        connect(combo, &QComboBox::activated, this, [combo, byLabel, emitValue](int) {
+            emitValue(byLabel ? Value(combo->currentText().toStdString()) : Value(combo->currentData().toLongLong()));
+        });
+        return combo;
+    }
     switch (typeOf(p.value)) {
     case ValueType::Bool: {
         auto* box = new QCheckBox(m_body);
@@ -174,21 +249,18 @@ QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& v
     }
     case ValueType::Int: {
         const long long current = std::get<long long>(value);
-        if (p.isEnum()) {
-            auto* combo = new QComboBox(m_body);
-            for (const auto& [index, label] : p.enumLabels)
-                combo->addItem(text(label), QVariant::fromValue(index));
-            combo->setCurrentIndex(combo->findData(QVariant::fromValue(current)));
-            connect(combo, &QComboBox::activated, this,
-                    [combo, emitValue](int) { emitValue(Value(combo->currentData().toLongLong())); });
-            return combo;
-        }
-        auto* box = new QSpinBox(m_body);
+        auto* holder = new QWidget(m_body);
+        auto* layout = new QHBoxLayout(holder);
+        layout->setContentsMargins(0, 0, 0, 0);
+        auto* box = new RangeBox<QSpinBox>(holder);
         box->setRange(int(p.min.value_or(-kUnbounded)), int(p.max.value_or(kUnbounded)));
         box->setValue(int(current));
         box->setKeyboardTracking(false);
+        layout->addWidget(box, 1);
+        if (p.min || p.max)
+            addRange(layout, p, box, double(current));
         connect(box, &QSpinBox::valueChanged, this, [emitValue](int v) { emitValue(Value(static_cast<long long>(v))); });
-        return box;
+        return holder;
     }
     case ValueType::Float: {
         auto* holder = new QWidget(m_body);
@@ -196,6 +268,8 @@ QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& v
         layout->setContentsMargins(0, 0, 0, 0);
         auto* box = numberBox(holder, std::get<double>(value), p.min, p.max);
         layout->addWidget(box);
+        if (p.min || p.max)
+            addRange(layout, p, box, std::get<double>(value));
         if (p.min && p.max && *p.max > *p.min) {
             auto* slider = new QSlider(Qt::Horizontal, holder);
             slider->setRange(0, kSliderSteps);

@@ -3,7 +3,10 @@
 // instance's template manifest, `opts` (and `guides`, shown apart): a check box
 // for booleans, a combo with the labels for enums, a spin box within min/max
 // (with a slider when both are given) for numbers, a line edit for text and
-// YAML text (validated), three spin boxes for vectors. `help` is the tooltip;
+// YAML text (validated), three spin boxes for vectors. Enums (an index or a
+// label list, `enum:` in the manifest) are combo boxes; a number with a min or
+// max shows its range beside it, and a value outside it (typed or stored)
+// turns the field red with the error in place of the range. `help` is the tooltip;
 // values that differ from the default are shown bold with a reset button.
 // A "Names" group lists the manifest's name tokens with the instance's
 // overrides (placeholder: the default name). Edits are not applied here:
@@ -13,7 +16,9 @@
 
 #include <QWidget>
 
+class QAbstractSpinBox;
 class QFormLayout;
+class QHBoxLayout;
 class QLabel;
 class QScrollArea;
 class QVBoxLayout;
@@ -44,6 +49,8 @@ signals:
 private:
     void addParameter(QFormLayout* form, const templates::Parameter& parameter, const Value& value);
     QWidget* makeEditor(const templates::Parameter& parameter, const Value& value);
+    // The range label after a number field ("range:<name>"), red with the error when out of range.
+    void addRange(QHBoxLayout* layout, const templates::Parameter& parameter, QAbstractSpinBox* box, double stored);
     void addNames(QVBoxLayout* layout, const model::TemplateInstance& instance, const templates::TemplateManifest& manifest);
 
     model::InstanceId m_instance = model::kNoId;

@@ -7,6 +7,7 @@
 #include "io/GuideFile.h"
 #include "io/TemplateFolders.h"
 
+#include <algorithm>
 #include <iostream>
 
 int main(int argc, char** argv)
@@ -33,7 +34,7 @@ int main(int argc, char** argv)
     rs::viewport::Camera camera;
     glm::dvec3 lo, hi;
     if (scene.bounds(lo, hi))
-        camera.frame(lo, hi);
+        camera.frame(lo, hi, double(host->width()) / std::max(1, host->height()));
     host->run(scene, camera);
     return 0;
 }

@@ -81,6 +81,14 @@ void Session::replacePreview(const std::function<void()>& apply)
         onHistoryChange(std::exchange(m_batched, Change{}));
 }
 
+void Session::setDocumentName(const std::string& name)
+{
+    if (m_document.name == name)
+        return;
+    m_document.name = name;
+    emitChange(Change::of(ChangeKind::Names));
+}
+
 void Session::replaceDocument(model::GuideDocument document)
 {
     m_guideDrag.reset();

@@ -81,6 +81,9 @@ public:
     std::vector<MirroredGuideJoint> mirroredGuideJoints() const;
     // Replaces the open document (open, new, recover): selection, rig and history start over.
     void replaceDocument(model::GuideDocument document);
+    // The guide's asset name follows its file (Save As "hero.yml" names an
+    // untitled guide "hero"); not an undo step, reported as a Names change.
+    void setDocumentName(const std::string& name);
     // A reloaded template library; a built rig is rebuilt with it.
     void setTemplates(std::shared_ptr<const templates::TemplateRegistry> templates);
 
@@ -143,6 +146,12 @@ public:
     void beginGuideDrag(model::JointId lead);
     void dragGuideTo(const Mat4& leadWorld);
     Status endGuideDrag(const std::string& what);
+    // A typed move (the transform panel): `lead` gets the world matrix
+    // `leadWorld` and the other selected guide joints move with it as in a
+    // drag (relative, about their own pivots; mirror twins with symmetric
+    // editing; no grid snap). One undo step named `what`; refused (naming the
+    // joint) for an unknown joint or when nothing moves.
+    Status moveGuideJoints(model::JointId lead, const Mat4& leadWorld, const std::string& what);
     void setGuideDragOptions(edit::GuideDragOptions options) { m_guideDragOptions = options; }
     const edit::GuideDragOptions& guideDragOptions() const { return m_guideDragOptions; }
 

@@ -76,4 +76,19 @@ Status Session::endGuideDrag(const std::string& what)
     return {};
 }
 
+Status Session::moveGuideJoints(model::JointId lead, const Mat4& leadWorld, const std::string& what)
+{
+    if (!m_document.joint(lead))
+        return Status::refused("no guide joint with id " + std::to_string(lead), Subject::ofJoint(model::kNoId, lead));
+    if (m_history.inTransaction())
+        return Status::refused("finish the drag first", Subject::ofJoint(m_document.ownerOf(lead)->id, lead));
+    std::vector<model::JointId> joints = m_selection.joints;
+    if (std::find(joints.begin(), joints.end(), lead) == joints.end())
+        joints = {lead};
+    edit::GuideDragOptions options = m_guideDragOptions;
+    options.snapStep = 0.0; // a typed value is meant exactly
+    const edit::GuideDrag move(m_document, lead, joints, options);
+    return edit::setJointTransforms(m_history, move.transformsFor(leadWorld), what);
+}
+
 } // namespace rs::session

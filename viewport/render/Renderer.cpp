@@ -215,6 +215,7 @@ void Renderer::uploadScene(const Scene& scene)
     }
     pushJoints(scene.skinJoints, lines, skinPoints, kSkinColor * 0.6, kSkinColor, false);
     pushCurves(scene.curves, curves, true);
+    pushCurves(scene.axes, curves, false);
     pushCurves(scene.hulls, hulls, false);
     for (bool selected : {false, true}) // selected on top of unselected CVs at the same place
         for (const auto& cv : scene.cvs)
