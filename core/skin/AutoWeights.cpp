@@ -81,6 +81,11 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
     auto cancelled = [] { return Out::failure(makeError({}, "the bind was cancelled; the weights are unchanged")); };
 
     Diagnostics notes;
+    auto addNote = [&](std::string message) {
+        Diagnostic d = makeWarning({}, std::move(message));
+        d.severity = Severity::Note;
+        notes.push_back(std::move(d));
+    };
     BindStats stats;
     stats.vertices = mesh.vertexCount();
     const Surface surface = makeSurface(mesh);
@@ -174,9 +179,8 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
             if (!reachable[part]) {
                 ++stats.partsByClosestBone;
                 if (partSize[part] > 1) // single loose points need no note
-                    notes.push_back({Severity::Note, {}, "mesh '" + mesh.name + "': a part of " + std::to_string(partSize[part]) +
-                                                             " vertices sees no bone (inside another part, or only loose points); "
-                                                             "it takes its closest bone", {}});
+                    addNote("mesh '" + mesh.name + "': a part of " + std::to_string(partSize[part]) +
+                            " vertices sees no bone (inside another part, or only loose points); it takes its closest bone");
             }
 
         // The solved vertices, renumbered.
@@ -240,7 +244,7 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
             const bool factored = cholesky.info() == Eigen::Success;
             std::unique_ptr<Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper>> iterative;
             if (!factored) {
-                notes.push_back({Severity::Note, {}, "mesh '" + mesh.name + "': the direct solver failed; solving iteratively", {}});
+                addNote("mesh '" + mesh.name + "': the direct solver failed; solving iteratively");
                 iterative = std::make_unique<Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper>>(system);
                 iterative->setTolerance(1e-8);
             }

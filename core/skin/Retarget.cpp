@@ -38,11 +38,12 @@ Result<model::MeshWeights> retargetWeights(const model::MeshWeights& weights, co
         }
         auto found = at >= 0 ? boneOf.find(weights.joints[std::size_t(at)]) : boneOf.end();
         target[j] = found != boneOf.end() ? found->second : root;
-        if (std::int64_t(j) != at)
-            notes.push_back({Severity::Warning, {},
-                             "mesh '" + label + "': skin joint " + keyText(weights.joints[j]) + " is gone; its weights go to " +
-                                 (found != boneOf.end() ? "its ancestor " : "the skeleton's root ") + keyText(bones[target[j]].key),
-                             Subject::ofInstance(weights.joints[j].instance, weights.joints[j].branch)});
+        if (std::int64_t(j) != at) {
+            Diagnostic d = makeWarning({}, "mesh '" + label + "': skin joint " + keyText(weights.joints[j]) + " is gone; its weights go to " +
+                                               (found != boneOf.end() ? "its ancestor " : "the skeleton's root ") + keyText(bones[target[j]].key));
+            d.subject = Subject::ofInstance(weights.joints[j].instance, weights.joints[j].branch);
+            notes.push_back(std::move(d));
+        }
     }
     model::MeshWeights out;
     for (const SkinBone& bone : bones) {
