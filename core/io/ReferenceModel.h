@@ -1,7 +1,7 @@
 #pragma once
-// A reference model for placing guides: any mesh file Assimp reads (FBX, OBJ,
-// glTF, ...), flattened to world-space triangles in the document's convention
-// (Y-up, metres). FBX files say their unit and up axis in their header; Z-up
+// A reference model for placing guides: a character model (io/ModelImport.h:
+// any mesh file Assimp reads), flattened to world-space triangles in the
+// document's convention (Y-up, metres). FBX files say their unit and up axis in their header; Z-up
 // centimetre files (Unreal's) come in standing and metre-sized. Display only:
 // the guide keeps the file's path (`reference_model:`, relative to the guide)
 // and the editor loads it again on open; its triangles are never saved.
