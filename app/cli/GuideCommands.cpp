@@ -82,6 +82,10 @@ int runNew(const std::vector<std::string>& args)
     }
     model::GuideDocument document;
     document.name = name.empty() ? std::filesystem::path(path).stem().string() : name;
+    if (name.empty() && invalidUtf8Offset(document.name) != std::string::npos) { // the guide would not open again
+        std::cerr << "rigsmith-cli new: the file name is not valid UTF-8, so it cannot name the guide; give one with --name\n";
+        return 2;
+    }
     const Status saved = io::saveGuideFile(document, path);
     print(saved.diagnostics());
     return saved.failed() ? 1 : 0;
@@ -156,6 +160,14 @@ int runAdd(const std::vector<std::string>& args)
     print(instance.diagnostics());
     if (!instance)
         return 1;
+    // A value given with --set that the template cannot take (a word for a
+    // number, a label it does not list, out of range) is refused, not replaced.
+    for (const Diagnostic& d : instance.diagnostics())
+        for (const auto& [option, value] : options)
+            if (d.severity != Severity::Note && d.message.find("option '" + option + "'") != std::string::npos) {
+                std::cerr << "rigsmith-cli add: --set " << option << " was not taken; nothing was added\n";
+                return 1;
+            }
     if (!name.empty())
         instance->name = name;
     if (at && !instance->joints.empty())

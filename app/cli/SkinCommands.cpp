@@ -1,6 +1,7 @@
 // rigsmith-cli skin bind: automatic weights without a display.
 #include "cli/Commands.h"
 
+#include "io/AtomicFile.h"
 #include "io/GuideFile.h"
 #include "io/ModelImport.h"
 #include "io/TemplateFolders.h"
@@ -13,6 +14,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+
+#include <unistd.h>
 
 namespace rs::cli {
 
@@ -74,6 +77,22 @@ int runSkin(const std::vector<std::string>& args)
     if (output.empty())
         output = std::filesystem::path(guidePath).replace_extension(".weights").string();
 
+    {
+        // Where the weights go is checked before any work: a bind can take a while.
+        std::string target;
+        const Status writable = io::resolveWriteTarget(output, target);
+        if (writable.failed()) {
+            print(writable.diagnostics());
+            return 1;
+        }
+        const auto folder = std::filesystem::absolute(target).parent_path();
+        std::error_code ec;
+        if (!std::filesystem::is_directory(folder, ec) || access(folder.c_str(), W_OK) != 0) {
+            std::cerr << output << ": error: cannot write the weights there: " << folder.string()
+                      << " is not a folder this user may write to\n";
+            return 1;
+        }
+    }
     Diagnostics templateDiagnostics;
     auto templates = io::loadDefaultTemplates(templateDiagnostics);
     auto guide = io::readGuideFile(guidePath);
@@ -109,11 +128,14 @@ int runSkin(const std::vector<std::string>& args)
     const std::string relativeModel = std::filesystem::absolute(path).lexically_relative(weightsFolder).string();
     for (const model::Mesh& mesh : model->meshes) {
         int shown = -1;
+        const bool terminal = isatty(STDERR_FILENO) != 0;
         options.progress = [&](double fraction) {
             const int percent = int(fraction * 100.0);
-            if (percent / 10 != shown / 10) {
+            const int step = terminal ? 10 : 25; // a log gets a line per quarter, a terminal one updating line
+            if (percent / step != shown / step) {
                 shown = percent;
-                std::cerr << "\rbinding " << mesh.name << ": " << percent << "%" << std::flush;
+                std::cerr << (terminal ? "\r" : "") << "binding " << mesh.name << ": " << percent << "%" << (terminal ? "" : "\n")
+                          << std::flush;
             }
             return true;
         };
@@ -124,7 +146,8 @@ int runSkin(const std::vector<std::string>& args)
         const auto start = std::chrono::steady_clock::now();
         skin::BindStats stats;
         auto weights = skin::bindMesh(mesh, *bones, options, &stats);
-        std::cerr << '\n';
+        if (terminal)
+            std::cerr << '\n';
         print(weights.diagnostics());
         if (!weights)
             return 1;

@@ -60,6 +60,38 @@ DualQuat toDualQuat(const Mat4& m)
     return {glm::quat(q), glm::quat(d)};
 }
 
+// Linear blend skinning of vertices [first, last): the hot loop, compiled
+// twice (AVX2 + FMA where the CPU has them, plain x86-64 otherwise) and picked
+// at load time, so the build stays portable.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("arch=haswell", "default")))
+#endif
+void skinLinear(std::size_t first, std::size_t last, const Affine* joints, const std::uint32_t* offsets,
+                const model::Influence* influences, const glm::vec3* in, const glm::vec3* inNormals, glm::vec3* out,
+                glm::vec3* outN)
+{
+    for (std::size_t v = first; v != last; ++v) {
+        float m[12] = {};
+        const std::uint32_t end = offsets[v + 1];
+        for (std::uint32_t i = offsets[v]; i < end; ++i) {
+            const float* a = joints[influences[i].joint].data();
+            const float s = influences[i].weight;
+            for (int k = 0; k < 12; ++k)
+                m[k] += s * a[k];
+        }
+        const glm::vec3 p = in[v];
+        out[v] = {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+                  m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
+        if (inNormals) {
+            const glm::vec3 q = inNormals[v];
+            const glm::vec3 turned{m[0] * q.x + m[1] * q.y + m[2] * q.z, m[4] * q.x + m[5] * q.y + m[6] * q.z,
+                                   m[8] * q.x + m[9] * q.y + m[10] * q.z};
+            const float squared = turned.x * turned.x + turned.y * turned.y + turned.z * turned.z;
+            outN[v] = squared > 0.0f ? turned * (1.0f / std::sqrt(squared)) : q;
+        }
+    }
+}
+
 } // namespace
 
 void SkinningJob::run() const
@@ -70,37 +102,15 @@ void SkinningJob::run() const
         std::vector<Affine> matrices(skinMatrices.size());
         for (std::size_t j = 0; j < skinMatrices.size(); ++j)
             matrices[j] = toAffine(skinMatrices[j]);
-        const bool withNormals = !normals.empty();
-        // Plain pointers: the compiler may then keep the inputs in registers
-        // (nothing written aliases them) and vectorise the 12-wide blend.
         const Affine* const joints = matrices.data();
         const std::uint32_t* const offsets = w.offsets.data();
         const model::Influence* const influences = w.influences.data();
         const glm::vec3* const in = positions.data();
-        const glm::vec3* const inNormals = normals.data();
+        const glm::vec3* const inNormals = normals.empty() ? nullptr : normals.data();
         glm::vec3* const out = outPositions.data();
         glm::vec3* const outN = outNormals.data();
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 8192), [=](const tbb::blocked_range<std::size_t>& range) {
-            for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                alignas(64) float m[12] = {};
-                const std::uint32_t last = offsets[v + 1];
-                for (std::uint32_t i = offsets[v]; i < last; ++i) {
-                    const float* a = joints[influences[i].joint].data();
-                    const float s = influences[i].weight;
-                    for (int k = 0; k < 12; ++k)
-                        m[k] += s * a[k];
-                }
-                const glm::vec3 p = in[v];
-                out[v] = {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
-                          m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
-                if (withNormals) {
-                    const glm::vec3 q = inNormals[v];
-                    const glm::vec3 turned{m[0] * q.x + m[1] * q.y + m[2] * q.z, m[4] * q.x + m[5] * q.y + m[6] * q.z,
-                                           m[8] * q.x + m[9] * q.y + m[10] * q.z};
-                    const float squared = turned.x * turned.x + turned.y * turned.y + turned.z * turned.z;
-                    outN[v] = squared > 0.0f ? turned * (1.0f / std::sqrt(squared)) : q;
-                }
-            }
+            skinLinear(range.begin(), range.end(), joints, offsets, influences, in, inNormals, out, outN);
         });
         return;
     }

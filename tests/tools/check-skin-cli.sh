@@ -20,4 +20,13 @@ test -s "$dir/guide.weights" || { echo "no weights beside the guide"; exit 1; }
 cp "$sample" "$dir/empty.yml"
 if "$cli" skin bind "$dir/empty.yml" 2> "$dir/err.txt"; then echo "a guide without a model bound"; exit 1; fi
 grep -q "model add" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
+# A folder that cannot take the weights is refused before any binding.
+if "$cli" skin bind "$dir/guide.yml" -o "$dir/missing/x.weights" > "$dir/out2.txt" 2> "$dir/err2.txt"; then echo "wrote into a missing folder"; exit 1; fi
+grep -q "cannot write the weights there" "$dir/err2.txt" || { cat "$dir/err2.txt"; exit 1; }
+if grep -q "bound to" "$dir/out2.txt"; then echo "bound before checking where the weights go"; exit 1; fi
+# add --set with a value the option cannot take adds nothing.
+cp "$dir/guide.yml" "$dir/before.yml"
+if "$cli" add "$dir/guide.yml" arm.limb --under spine --set twist_upper=abc 2> "$dir/err3.txt"; then echo "a bad --set value was accepted"; exit 1; fi
+cmp -s "$dir/guide.yml" "$dir/before.yml" || { echo "the guide changed"; exit 1; }
+grep -q "was not taken" "$dir/err3.txt" || { cat "$dir/err3.txt"; exit 1; }
 echo "ok"
