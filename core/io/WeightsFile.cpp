@@ -87,6 +87,8 @@ struct Reader {
 
 } // namespace
 
+std::uint64_t weightsChecksum(const char* data, std::size_t size) { return fnv1a(data, size); }
+
 std::string writeWeights(const std::vector<BoundMesh>& meshes)
 {
     Writer w;

@@ -34,6 +34,8 @@ struct BoundMesh {
 };
 
 std::string writeWeights(const std::vector<BoundMesh>& meshes);
+// The checksum the file ends with: FNV-1a (64 bits) of every byte before it.
+std::uint64_t weightsChecksum(const char* data, std::size_t size);
 Result<std::vector<BoundMesh>> readWeights(const std::string& bytes, const std::string& path);
 
 Status saveWeightsFile(const std::string& path, const std::vector<BoundMesh>& meshes);
