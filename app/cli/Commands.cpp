@@ -22,15 +22,11 @@
 
 namespace rs::cli {
 
-namespace {
-
 void print(const Diagnostics& diagnostics)
 {
     for (const auto& d : diagnostics)
         std::cerr << d.format() << '\n';
 }
-
-} // namespace
 
 std::string usage()
 {

@@ -1,6 +1,8 @@
 #pragma once
 // rigsmith-cli sub-commands. Each returns the process exit code: 0 success,
 // 1 the input had errors, 2 bad usage.
+#include "base/Diagnostic.h"
+
 #include <string>
 #include <vector>
 
@@ -15,5 +17,7 @@ int runShapeIcons(const std::vector<std::string>& args);
 int runSkin(const std::vector<std::string>& args);
 int runModel(const std::vector<std::string>& args);
 std::string usage();
+// Diagnostics on stderr, one "file:line: severity: message" line each.
+void print(const Diagnostics& diagnostics);
 
 } // namespace rs::cli

@@ -22,12 +22,6 @@ namespace rs::cli {
 
 namespace {
 
-void print(const Diagnostics& diagnostics)
-{
-    for (const auto& d : diagnostics)
-        std::cerr << d.format() << '\n';
-}
-
 // Coordinates of --at, in metres: finite and within a kilometre of the origin.
 constexpr double kMaxCoordinate = 1000.0;
 

@@ -19,16 +19,6 @@
 
 namespace rs::cli {
 
-namespace {
-
-void print(const Diagnostics& diagnostics)
-{
-    for (const auto& d : diagnostics)
-        std::cerr << d.format() << '\n';
-}
-
-} // namespace
-
 int runSkin(const std::vector<std::string>& args)
 {
     if (args.empty() || args[0] != "bind") {
