@@ -1,6 +1,8 @@
 // Issue 18 items 5, 7 and 8, from the command line: every numeric option is
 // range-checked (no overflow, no huge allocation, no nan or inf) and names must
 // be UTF-8; a refused argument is a message and exit code 2, and nothing is written.
+#include "CliSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,68 +17,25 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using rs::clitest::CliRun;
+using rs::clitest::freshFolder;
+using rs::clitest::readText;
 
 namespace {
 
 const std::string kBiped = RIGSMITH_SOURCE_DIR "/resources/samples/biped.yml";
 
-struct CliRun {
-    int exitCode = -1; // -1: killed by a signal (a crash, an uncaught exception)
-    std::string errors;
-};
-
-fs::path folderFor(const std::string& name)
-{
-    const fs::path folder = fs::temp_directory_path() / ("rigsmith-cli-arguments-" + std::to_string(getpid())) / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
-}
-
-// rigsmith-cli with `args` and at most 2 GB of address space, so a runaway
-// allocation fails fast instead of swapping the machine.
+// At most 2 GB of address space, so a runaway allocation fails fast instead of swapping the machine.
 CliRun runCli(const std::vector<std::string>& args)
 {
-    const fs::path errorsFile = folderFor("stderr") / "stderr.txt";
-    const pid_t child = fork();
-    if (child == 0) {
-        const int errors = open(errorsFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(errors, STDERR_FILENO);
-        const int null = open("/dev/null", O_WRONLY);
-        dup2(null, STDOUT_FILENO);
-        const rlimit memory{rlim_t(2) << 30, rlim_t(2) << 30};
-        setrlimit(RLIMIT_AS, &memory);
-        std::vector<char*> argv{const_cast<char*>(RIGSMITH_CLI)};
-        for (const std::string& a : args)
-            argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(RIGSMITH_CLI, argv.data());
-        _exit(127);
-    }
-    CliRun run;
-    int status = 0;
-    if (waitpid(child, &status, 0) == child && WIFEXITED(status))
-        run.exitCode = WEXITSTATUS(status);
-    std::ifstream in(errorsFile);
-    std::stringstream text;
-    text << in.rdbuf();
-    run.errors = text.str();
-    return run;
-}
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return rs::clitest::runCli(args, freshFolder("stderr"), {0, std::size_t(2) << 30});
 }
 
 } // namespace
 
 TEST(Cli, RefusesAProxyMeshOutOfRange)
 {
-    const fs::path out = folderFor("proxy") / "rig.glb";
+    const fs::path out = freshFolder("proxy") / "rig.glb";
     for (const std::string count : {"99999999999999999999", "18446744073709551615", "4000000000", "1000001", "0", "-5",
                                      " 12", "1e9", "0x10", "nan"}) {
         const CliRun run = runCli({"build", kBiped, "-o", out.string(), "--proxy-mesh", count});
@@ -91,7 +50,7 @@ TEST(Cli, RefusesAProxyMeshOutOfRange)
 
 TEST(Cli, RefusesNonFiniteAndOutOfRangeNumbersInAdd)
 {
-    const fs::path guide = folderFor("add") / "guide.yml";
+    const fs::path guide = freshFolder("add") / "guide.yml";
     ASSERT_EQ(runCli({"new", guide.string()}).exitCode, 0);
     const std::string before = readText(guide);
     struct Case {
@@ -121,7 +80,7 @@ TEST(Cli, RefusesNonFiniteAndOutOfRangeNumbersInAdd)
 
 TEST(Cli, RefusesANameThatIsNotUtf8)
 {
-    const fs::path folder = folderFor("utf8");
+    const fs::path folder = freshFolder("utf8");
     const CliRun created = runCli({"new", (folder / "a.yml").string(), "--name", "rig\xff"});
     EXPECT_EQ(created.exitCode, 2) << created.errors;
     EXPECT_NE(created.errors.find("--name is not valid UTF-8"), std::string::npos) << created.errors;

@@ -1,6 +1,8 @@
 // rigsmith-cli's messages (issue 18 item 13): an empty output path is an
 // error, a repeated branch name is one error, and a guide whose instance uses
 // a missing template says so when the CLI opens it.
+#include "CliSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,55 +16,14 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using rs::clitest::CliRun;
+using rs::clitest::freshFolder;
+using rs::clitest::readText;
+using rs::clitest::runCli;
 
 namespace {
 
 const std::string kBiped = RIGSMITH_SOURCE_DIR "/resources/samples/biped.yml";
-
-struct CliRun {
-    int exitCode = -1;
-    std::string errors; // stderr
-};
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-fs::path freshFolder(const std::string& name)
-{
-    const fs::path folder = fs::temp_directory_path() / ("rigsmith-cli-messages-" + std::to_string(getpid())) / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
-}
-
-// rigsmith-cli with `args`, run in `folder` (stderr kept there).
-CliRun runCli(const std::vector<std::string>& args, const fs::path& folder)
-{
-    const fs::path errorsFile = folder / "stderr.txt";
-    const pid_t child = fork();
-    if (child == 0) {
-        if (chdir(folder.c_str()) != 0 || !std::freopen(errorsFile.c_str(), "w", stderr) ||
-            !std::freopen("/dev/null", "w", stdout))
-            _exit(126);
-        std::vector<char*> argv{const_cast<char*>(RIGSMITH_CLI)};
-        for (const std::string& a : args)
-            argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(RIGSMITH_CLI, argv.data());
-        _exit(127);
-    }
-    CliRun run;
-    int status = 0;
-    if (waitpid(child, &status, 0) == child && WIFEXITED(status))
-        run.exitCode = WEXITSTATUS(status);
-    run.errors = readText(errorsFile);
-    return run;
-}
 
 // The biped with `from` replaced by `to` once, written to `folder`/`name`.
 fs::path editedBiped(const fs::path& folder, const std::string& name, const std::string& from, const std::string& to)

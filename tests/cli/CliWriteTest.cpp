@@ -1,6 +1,8 @@
 // Issue 18 item 2, from the command line: every file rigsmith-cli writes
 // (exports, rig dumps, export references, guides) fails on a full disk with
 // a message on stderr and a non-zero exit, and leaves the previous file.
+#include "CliSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -16,60 +18,18 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
+using rs::clitest::CliRun;
+using rs::clitest::freshFolder;
+using rs::clitest::readText;
 
 namespace {
 
 const std::string kBiped = RIGSMITH_SOURCE_DIR "/resources/samples/biped.yml";
 
-struct CliRun {
-    int exitCode = -1;
-    std::string errors; // stderr
-};
-
-// rigsmith-cli with `args`, its files limited to `limitBytes` (EFBIG past it, as a full disk).
+// rigsmith-cli whose files may not grow past `limitBytes` (a full disk), its stderr beside `errorsFile`'s folder.
 CliRun runCli(const std::vector<std::string>& args, std::size_t limitBytes, const fs::path& errorsFile)
 {
-    const pid_t child = fork();
-    if (child == 0) {
-        std::signal(SIGXFSZ, SIG_IGN); // kept across exec: a write past the limit fails instead of killing
-        const int errors = open(errorsFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(errors, STDERR_FILENO);
-        const int null = open("/dev/null", O_WRONLY);
-        dup2(null, STDOUT_FILENO);
-        const rlimit limit{rlim_t(limitBytes), rlim_t(limitBytes)};
-        setrlimit(RLIMIT_FSIZE, &limit);
-        std::vector<char*> argv{const_cast<char*>(RIGSMITH_CLI)};
-        for (const std::string& a : args)
-            argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(RIGSMITH_CLI, argv.data());
-        _exit(127);
-    }
-    CliRun run;
-    int status = 0;
-    if (waitpid(child, &status, 0) == child && WIFEXITED(status))
-        run.exitCode = WEXITSTATUS(status);
-    std::ifstream in(errorsFile);
-    std::stringstream text;
-    text << in.rdbuf();
-    run.errors = text.str();
-    return run;
-}
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-fs::path freshFolder(const std::string& name)
-{
-    const fs::path folder = fs::temp_directory_path() / ("rigsmith-cli-tests-" + std::to_string(getpid())) / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
+    return rs::clitest::runCli(args, errorsFile.parent_path(), {limitBytes, 0});
 }
 
 } // namespace
