@@ -2,6 +2,8 @@
 
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
+#include "io/ModelImport.h"
+#include "io/WeightsFile.h"
 #include "io/ReferenceModel.h"
 #include "io/TemplateFolders.h"
 #include "templates/GuideTemplates.h"
@@ -32,6 +34,7 @@ EditorSession::EditorSession(QObject* parent) : QObject(parent), session::Sessio
     qRegisterMetaType<rs::edit::Change>();
     setTemplates(loadTemplates(m_templateDiagnostics));
     setReporter([this](const Diagnostics& diagnostics) { emit diagnosticsReported(diagnostics); });
+    setModelLoader([](const std::string& path) { return io::importModel(path); });
     setBuildProgress([this](double fraction, const std::string& stage) {
         emit buildProgressed(fraction, QString::fromStdString(stage));
     });
@@ -52,7 +55,11 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
     diagnostics = loaded.takeDiagnostics();
     if (!loaded)
         return false;
-    replaceWith(loaded.take(), path);
+    model::GuideDocument guide = loaded.take();
+    // A damaged weights file is reported and left alone (a save writes weights only once some are bound).
+    const Status weights = io::loadGuideWeights(path.toStdString(), guide);
+    diagnostics.insert(diagnostics.end(), weights.diagnostics().begin(), weights.diagnostics().end());
+    replaceWith(std::move(guide), path);
     const Diagnostics unknown = templates::checkGuideTemplates(document(), templates(), path.toStdString());
     diagnostics.insert(diagnostics.end(), unknown.begin(), unknown.end());
     return true;
@@ -92,6 +99,10 @@ bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
     diagnostics = saved.diagnostics();
     if (saved.failed())
         return false;
+    const Status weights = io::saveGuideWeights(document(), path.toStdString());
+    diagnostics.insert(diagnostics.end(), weights.diagnostics().begin(), weights.diagnostics().end());
+    if (weights.failed())
+        return false; // the guide is saved, its weights are not: the document stays unsaved
     discardAutosave(); // the previous path's (or the untitled one's)
     m_filePath = path;
     m_baseHash = contentHash(path);

@@ -24,6 +24,8 @@ enum class ChangeKind : std::uint32_t {
     Evaluation = 1u << 11, // session: the posed rig was evaluated again
     Templates = 1u << 12, // session: the template library was reloaded
     Mode = 1u << 13,      // session: guide / rig mode, CV mode
+    Models = 1u << 14,    // the character's models (added, removed, reloaded)
+    Weights = 1u << 15,   // skin weights (the bindings named in Change::bindings; all when empty)
 };
 
 constexpr std::uint32_t operator|(ChangeKind a, ChangeKind b) { return std::uint32_t(a) | std::uint32_t(b); }
@@ -34,10 +36,11 @@ struct Change {
     std::vector<InstanceId> instances; // the instances touched; empty with Document or when unknown
     std::vector<JointId> joints;       // the guide joints moved (Joints)
     bool preview = false;              // inside an open transaction (a drag in progress)
+    std::vector<std::size_t> bindings; // Weights: the changed records of GuideDocument::bindings; empty: all
 
     static Change of(std::uint32_t kinds, std::vector<InstanceId> instances = {}, std::vector<JointId> joints = {})
     {
-        return {kinds, std::move(instances), std::move(joints), false};
+        return {kinds, std::move(instances), std::move(joints), false, {}};
     }
     static Change of(ChangeKind kind, std::vector<InstanceId> instances = {}, std::vector<JointId> joints = {})
     {

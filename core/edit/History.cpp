@@ -45,6 +45,18 @@ bool Change::touchesGuide() const
 
 void Change::merge(const Change& other)
 {
+    // Weights with an empty binding list mean every binding, and stay so.
+    const bool hadWeights = has(ChangeKind::Weights);
+    if (other.has(ChangeKind::Weights)) {
+        if (!hadWeights)
+            bindings = other.bindings;
+        else if (bindings.empty() || other.bindings.empty())
+            bindings.clear();
+        else
+            for (std::size_t b : other.bindings)
+                if (std::find(bindings.begin(), bindings.end(), b) == bindings.end())
+                    bindings.push_back(b);
+    }
     kinds |= other.kinds;
     for (InstanceId id : other.instances)
         if (std::find(instances.begin(), instances.end(), id) == instances.end())

@@ -208,4 +208,39 @@ Result<std::vector<BoundMesh>> loadWeightsFile(const std::string& path)
     return readWeights(bytes.str(), path);
 }
 
+std::string weightsPathFor(const std::string& guidePath)
+{
+    return std::filesystem::path(guidePath).replace_extension(".weights").string();
+}
+
+Status loadGuideWeights(const std::string& guidePath, model::GuideDocument& document)
+{
+    const std::string path = weightsPathFor(guidePath);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        return {};
+    auto loaded = loadWeightsFile(path);
+    if (!loaded)
+        return Status::failure(loaded.takeDiagnostics());
+    const auto folder = std::filesystem::absolute(path).parent_path();
+    std::vector<model::MeshBinding> bindings;
+    for (BoundMesh& mesh : *loaded)
+        bindings.push_back({(folder / mesh.model).lexically_normal().string(), std::move(mesh.name), mesh.vertexCount, mesh.fingerprint,
+                            std::move(mesh.weights)});
+    document.bindings = std::move(bindings);
+    return Status::success(loaded.takeDiagnostics());
+}
+
+Status saveGuideWeights(const model::GuideDocument& document, const std::string& guidePath)
+{
+    if (document.bindings.empty())
+        return {};
+    const std::string path = weightsPathFor(guidePath);
+    const auto folder = std::filesystem::absolute(path).parent_path();
+    std::vector<BoundMesh> meshes;
+    for (const model::MeshBinding& b : document.bindings)
+        meshes.push_back({std::filesystem::path(b.model).lexically_relative(folder).string(), b.mesh, b.vertexCount, b.fingerprint, b.weights});
+    return saveWeightsFile(path, meshes);
+}
+
 } // namespace rs::io

@@ -18,6 +18,7 @@
 // and weight; a damaged file is an error naming the byte where it breaks.
 #include "base/Result.h"
 #include "base/Status.h"
+#include "model/GuideDocument.h"
 #include "model/Mesh.h"
 
 #include <string>
@@ -40,5 +41,16 @@ Result<std::vector<BoundMesh>> readWeights(const std::string& bytes, const std::
 
 Status saveWeightsFile(const std::string& path, const std::vector<BoundMesh>& meshes);
 Result<std::vector<BoundMesh>> loadWeightsFile(const std::string& path);
+
+// A guide's weights: `<guide without its extension>.weights` beside it
+// (hero.yml -> hero.weights), its records' model paths relative to it.
+std::string weightsPathFor(const std::string& guidePath);
+// Fills document.bindings from the guide's weights file (model paths made
+// absolute); no file is no weights and no message. A damaged file fails with
+// where it breaks, and document.bindings stays as it was.
+Status loadGuideWeights(const std::string& guidePath, model::GuideDocument& document);
+// Writes document.bindings beside the guide, atomically. A document without
+// bindings writes nothing (an existing file is never replaced by an empty one).
+Status saveGuideWeights(const model::GuideDocument& document, const std::string& guidePath);
 
 } // namespace rs::io

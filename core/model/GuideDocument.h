@@ -8,6 +8,7 @@
 // The document is plain data; edits go through rs::edit so undo stays in step.
 #include "base/Identity.h"
 #include "base/Math.h"
+#include "model/Mesh.h"
 #include "model/Naming.h"
 #include "model/Value.h"
 
@@ -115,6 +116,10 @@ public:
     // rig by skin weights kept beside the guide (`<guide>.weights`). Absolute
     // paths in memory; the guide file keeps them relative to itself.
     std::vector<std::string> models;
+    // The skin weights of the models' meshes, kept in `<guide>.weights` beside
+    // the guide file (io/GuideBindings.h), not in it. A record whose model or
+    // mesh is gone, or whose mesh changed, is kept (and reported), never dropped.
+    std::vector<MeshBinding> bindings;
     bool operator==(const GuideDocument&) const = default;
 
 private:

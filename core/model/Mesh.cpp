@@ -17,4 +17,10 @@ std::uint64_t topologyFingerprint(const Mesh& mesh)
     return h;
 }
 
+bool bindingFits(const MeshBinding& binding, const Mesh& mesh)
+{
+    return binding.vertexCount == mesh.vertexCount() && binding.weights.vertexCount() == mesh.vertexCount() &&
+           binding.fingerprint == topologyFingerprint(mesh);
+}
+
 } // namespace rs::model

@@ -31,6 +31,7 @@ std::uint64_t topologyFingerprint(const Mesh& mesh);
 struct Influence {
     std::uint32_t joint = 0; // into MeshWeights::joints
     float weight = 0.0f;
+    bool operator==(const Influence&) const = default;
 };
 
 // Skin weights of one mesh: per vertex, its influences (at most the bind's
@@ -44,7 +45,23 @@ struct MeshWeights {
     std::size_t vertexCount() const { return offsets.empty() ? 0 : offsets.size() - 1; }
     const Influence* begin(std::size_t vertex) const { return influences.data() + offsets[vertex]; }
     const Influence* end(std::size_t vertex) const { return influences.data() + offsets[vertex + 1]; }
+    bool operator==(const MeshWeights&) const = default;
 };
+
+// The skin weights of one mesh of one of the guide's models. The record keeps
+// what it was bound to (the mesh's vertex count and topology fingerprint): when
+// the mesh changes, the weights are kept but no longer applied 1:1.
+struct MeshBinding {
+    std::string model;             // the model file (absolute in memory), as in GuideDocument::models
+    std::string mesh;              // the mesh's name in it; same-named meshes pair up in file order
+    std::size_t vertexCount = 0;
+    std::uint64_t fingerprint = 0; // topologyFingerprint of the mesh as bound
+    MeshWeights weights;
+    bool operator==(const MeshBinding&) const = default;
+};
+
+// True when `binding` applies 1:1 to `mesh` (same vertex count and triangles).
+bool bindingFits(const MeshBinding& binding, const Mesh& mesh);
 
 } // namespace rs::model
 

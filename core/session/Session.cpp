@@ -31,6 +31,7 @@ void Session::unsubscribe(int handle)
 
 void Session::emitChange(const Change& change)
 {
+    followCharacter(change);
     const auto listeners = m_listeners; // a listener may unsubscribe
     for (const auto& [handle, listener] : listeners)
         listener(change);

@@ -18,10 +18,12 @@
 #include "edit/GuideMove.h"
 #include "edit/History.h"
 #include "edit/ShapeCvEdit.h"
+#include "edit/SkinEdits.h"
 #include "eval/Pickwalk.h"
 #include "eval/PoseTools.h"
 #include "model/Rig.h"
 #include "session/MirroredGuides.h"
+#include "skin/SkinBones.h"
 #include "templates/TemplateRegistry.h"
 
 #include <functional>
@@ -60,6 +62,26 @@ struct Selection {
 };
 
 enum class Mode { Guide, Rig };
+
+// One of the guide's models as the session holds it (SessionSkin.cpp).
+struct LoadedModel {
+    std::string path;                          // as in GuideDocument::models
+    std::shared_ptr<const model::Model> model; // null when the file could not be read
+    Diagnostics problems;                      // why not, or the reader's warnings
+};
+
+// One mesh of a loaded model and its skin weights on the built rig.
+struct CharacterMesh {
+    std::size_t model = 0; // into Session::models()
+    std::size_t mesh = 0;  // into that model's meshes
+    int binding = -1;      // into GuideDocument::bindings; -1: not bound
+    bool changed = false;  // bound to another topology: its weights are kept, not applied
+    // The binding's weights on Session::skinBones() (joint i is bone i; a
+    // gone joint's share on its nearest surviving ancestor); null when the
+    // mesh is not skinned (unbound, changed, or no rig).
+    std::shared_ptr<const model::MeshWeights> weights;
+    const model::Mesh& data(const std::vector<LoadedModel>& models) const { return models[model].model->meshes[mesh]; }
+};
 // How far an explicit build is: the fraction done (0 to 1) and the stage (the
 // same function type as rigging::BuildProgress, so the builder takes it as is).
 using BuildProgress = std::function<void(double fraction, const std::string& stage)>;
@@ -139,6 +161,33 @@ public:
     Status reparentInstance(model::InstanceId id, model::JointId hookJoint);
     Status setReferenceModel(const std::string& path);
 
+    // --- the character (SessionSkin.cpp): the guide's models, read through
+    // the host's loader (io::importModel; the session reads no file itself),
+    // and their skin weights, carried onto each rebuilt rig by skin joint
+    // identity. A binding made for another topology is kept and reported,
+    // never applied to the wrong vertices.
+    using ModelLoader = std::function<Result<model::Model>(const std::string& path)>;
+    void setModelLoader(ModelLoader loader);
+    const std::vector<LoadedModel>& models() const { return m_models; }
+    const std::vector<CharacterMesh>& characterMeshes() const { return m_characterMeshes; }
+    // The built rig's skin bones (empty without a rig or skin joints).
+    const std::vector<skin::SkinBone>& skinBones() const { return m_skinBones; }
+    // Per skin bone: its posed world matrix times the inverse of its rest
+    // (bind) matrix, following every evaluation: the palette meshes skin with.
+    const std::vector<Mat4>& skinPalette() const { return m_skinPalette; }
+    // Reads the file first: one that fails is refused with the reader's reasons.
+    Status addModel(const std::string& path);
+    Status removeModel(const std::string& path);
+    // Reads a model's file again (it changed on disk); not an undo step.
+    Status reloadModel(const std::string& path);
+    // The weights of a bind (skin::bindModels) as one undo step named `what`.
+    Status setBindings(std::vector<model::MeshBinding> bindings, const std::string& what);
+    // One weight edit as one undo step, or inside a stroke (beginWeightStroke:
+    // the dabs of one stroke are one undo step named by endWeightStroke).
+    Status setVertexWeights(edit::WeightEdit edit, const std::string& what);
+    void beginWeightStroke(const std::string& what);
+    void endWeightStroke();
+
     // --- guide authoring (SessionGuide.cpp): joints are clicked (add toggles)
     // or box-selected; a drag is one transaction, previews rebuild the rig live.
     void selectGuideJoints(const std::vector<model::JointId>& joints, bool add);
@@ -199,6 +248,11 @@ private:
     Status commitPose(const eval::Pose& pose, const std::string& what);
     std::optional<edit::CvDrag> selectedCvDrag() const;
     void restoreSelection(const std::vector<NodeKey>& nodes, const std::vector<std::pair<NodeKey, model::CurveCv>>& cvs);
+    // Keeps the character in step with a change before subscribers hear it.
+    void followCharacter(const Change& change);
+    void loadModels();
+    void matchMeshes();
+    void updatePalette();
 
     model::GuideDocument m_document;
     edit::History m_history{m_document};
@@ -241,6 +295,14 @@ private:
         Mat4 change{1.0};
     };
     std::optional<CvDragState> m_cvDrag;
+
+    ModelLoader m_modelLoader;
+    std::vector<LoadedModel> m_models;
+    std::vector<CharacterMesh> m_characterMeshes;
+    std::vector<skin::SkinBone> m_skinBones;
+    std::vector<Mat4> m_bindInverse; // per skin bone
+    std::vector<Mat4> m_skinPalette;
+    std::string m_reportedCharacter; // the character messages last reported
 };
 
 } // namespace rs::session

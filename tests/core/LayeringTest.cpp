@@ -38,7 +38,7 @@ const std::vector<Layer> kCoreLayers = {
     {"templates", {"base", "model"}},
     {"rigging", {"base", "model", "eval", "templates"}},
     {"edit", {"base", "model", "eval"}},
-    {"session", {"base", "model", "eval", "templates", "rigging", "edit"}},
+    {"session", {"base", "model", "eval", "templates", "rigging", "edit", "skin"}},
     {"io", {"base", "model", "eval", "templates"}},
 };
 

@@ -1,0 +1,279 @@
+// The character in the core session: models read through the host's loader,
+// a bind as one undo step, weight edits and strokes, weights carried onto the
+// rebuilt rig by identity (a gone joint's share to its ancestor, said in the
+// log), a changed mesh reported and its weights kept, the skin palette
+// following the pose, and the weights file beside the guide.
+#include "TestSupport.h"
+
+#include "io/WeightsFile.h"
+#include "session/Session.h"
+#include "skin/BindModels.h"
+#include "skin/Skinning.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+using namespace rs;
+using session::ChangeKind;
+
+namespace {
+
+const std::string kArm = "/virtual/models/arm.obj";
+
+// A tube of radius 4 cm around the segment a-b: `rings` rings of 12 vertices.
+model::Mesh tube(const std::string& name, Vec3 a, Vec3 b, int rings)
+{
+    model::Mesh mesh;
+    mesh.name = name;
+    const Vec3 axis = glm::normalize(b - a);
+    const Vec3 side = glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)));
+    const Vec3 up = glm::cross(axis, side);
+    constexpr int kSides = 12;
+    for (int r = 0; r < rings; ++r) {
+        const Vec3 centre = a + (b - a) * (double(r) / (rings - 1));
+        for (int s = 0; s < kSides; ++s) {
+            const double t = 2.0 * 3.14159265358979 * s / kSides;
+            mesh.positions.emplace_back(centre + 0.04 * (std::cos(t) * side + std::sin(t) * up));
+        }
+    }
+    for (int r = 0; r + 1 < rings; ++r)
+        for (int s = 0; s < kSides; ++s) {
+            const std::uint32_t i = r * kSides + s, j = r * kSides + (s + 1) % kSides;
+            mesh.indices.insert(mesh.indices.end(), {i, j, i + kSides, j, j + kSides, i + kSides});
+        }
+    return mesh;
+}
+
+struct FakeFiles {
+    std::map<std::string, model::Model> files;
+    int reads = 0;
+    session::Session::ModelLoader loader()
+    {
+        return [this](const std::string& path) {
+            ++reads;
+            auto it = files.find(path);
+            if (it == files.end())
+                return Result<model::Model>::failure(makeError({path, 0, 0}, "no such file"));
+            return Result<model::Model>(it->second);
+        };
+    }
+};
+
+struct Fixture {
+    session::Session s{std::make_shared<templates::TemplateRegistry>(test::builtinTemplates())};
+    FakeFiles files;
+    Diagnostics reported;
+    Fixture()
+    {
+        s.replaceDocument(test::loadSample("biped"));
+        s.setModelLoader(files.loader());
+        s.setReporter([this](const Diagnostics& d) { reported.insert(reported.end(), d.begin(), d.end()); });
+        s.build();
+        const Vec3 shoulder = translationOf(s.rig()->nodes[*s.rig()->findPath("arm.L::skin.limb.0")].worldMatrix);
+        const Vec3 wrist = translationOf(s.rig()->nodes[*s.rig()->findPath("arm.L::skin.limb.2")].worldMatrix);
+        model::Model arm;
+        arm.meshes.push_back(tube("sleeve", shoulder, wrist, 16));
+        files.files[kArm] = arm;
+    }
+    bool saidSomething(const std::string& text) const
+    {
+        return std::any_of(reported.begin(), reported.end(), [&](const Diagnostic& d) { return d.message.find(text) != std::string::npos; });
+    }
+    void bind()
+    {
+        std::vector<skin::ModelToBind> models;
+        for (const auto& m : s.models())
+            models.push_back({m.path, m.model});
+        auto bound = skin::bindModels(models, s.skinBones(), {});
+        ASSERT_TRUE(bound.ok());
+        ASSERT_TRUE(test::succeeded(s.setBindings(bound.take(), "Bind skin")));
+    }
+};
+
+std::size_t boneOf(const session::Session& s, const std::string& path)
+{
+    const auto node = *s.rig()->findPath(path);
+    for (std::size_t b = 0; b < s.skinBones().size(); ++b)
+        if (s.skinBones()[b].node == node)
+            return b;
+    ADD_FAILURE() << path << " is not a skin bone";
+    return 0;
+}
+
+} // namespace
+
+TEST(SessionSkin, AModelIsReadOnceAddedAsOneUndoStepAndRefusedTwice)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    EXPECT_EQ(f.files.reads, 1) << "the session keeps what it read to add the model";
+    EXPECT_EQ(f.s.history().undoText(), "Add model arm.obj");
+    ASSERT_EQ(f.s.models().size(), 1u);
+    ASSERT_TRUE(f.s.models()[0].model);
+    ASSERT_EQ(f.s.characterMeshes().size(), 1u);
+    EXPECT_EQ(f.s.characterMeshes()[0].binding, -1);
+    EXPECT_FALSE(f.s.characterMeshes()[0].weights) << "unbound";
+    EXPECT_NE(test::refusal(f.s.addModel(kArm)), "");
+    EXPECT_FALSE(f.s.addModel("/virtual/missing.obj").ok()) << "a file the loader cannot read is refused";
+    EXPECT_EQ(f.s.document().models.size(), 1u);
+    f.s.history().undo();
+    EXPECT_TRUE(f.s.models().empty());
+    EXPECT_TRUE(f.s.characterMeshes().empty());
+    f.s.history().redo();
+    EXPECT_EQ(f.s.characterMeshes().size(), 1u);
+}
+
+TEST(SessionSkin, ABindIsOneUndoStepAndTheMeshFollowsThePose)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    EXPECT_EQ(f.s.history().undoText(), "Bind skin");
+    const session::CharacterMesh& mesh = f.s.characterMeshes()[0];
+    ASSERT_TRUE(mesh.weights);
+    EXPECT_EQ(mesh.weights->joints.size(), f.s.skinBones().size());
+    ASSERT_EQ(f.s.skinPalette().size(), f.s.skinBones().size());
+    for (const Mat4& m : f.s.skinPalette())
+        EXPECT_LT(maxAbsDifference(m, Mat4(1.0)), 1e-9) << "the rest pose is the bind pose";
+
+    // Bend the elbow in FK: the forearm's vertices move, the upper arm's stay.
+    const auto blend = f.s.program()->channels().find(*f.s.rig()->findPath("arm.L::ctrls.switch"), "ik_blend");
+    ASSERT_TRUE(test::succeeded(f.s.setChannel(*blend, 0.0, false)));
+    const auto rz = f.s.program()->channels().find(*f.s.rig()->findPath("arm.L::ctrls.fk.1"), "rz");
+    ASSERT_TRUE(rz);
+    ASSERT_TRUE(test::succeeded(f.s.setChannel(*rz, -60.0, false)));
+    const model::Mesh& data = mesh.data(f.s.models());
+    std::vector<glm::vec3> posed(data.vertexCount());
+    skin::SkinningJob job;
+    job.positions = data.positions;
+    job.weights = f.s.characterMeshes()[0].weights.get();
+    job.skinMatrices = f.s.skinPalette();
+    job.outPositions = posed;
+    ASSERT_TRUE(test::succeeded(job.validate()));
+    job.run();
+    EXPECT_LT(glm::length(posed.front() - data.positions.front()), 1e-4) << "the shoulder ring stays";
+    EXPECT_GT(glm::length(posed.back() - data.positions.back()), 0.1) << "the wrist ring follows the bent elbow";
+
+    f.s.history().undo(); // the pose
+    f.s.history().undo(); // the switch
+    f.s.history().undo(); // the bind
+    EXPECT_FALSE(f.s.characterMeshes()[0].weights);
+    EXPECT_TRUE(f.s.document().bindings.empty());
+    f.s.history().redo();
+    EXPECT_TRUE(f.s.characterMeshes()[0].weights);
+}
+
+TEST(SessionSkin, AWeightStrokeIsOneUndoStepAndBadWeightsAreRefused)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::MeshWeights before = f.s.document().bindings[0].weights;
+    const std::uint32_t hand = std::uint32_t(boneOf(f.s, "arm.L::skin.limb.2"));
+    std::vector<session::Change> events;
+    f.s.subscribe([&](const session::Change& c) { events.push_back(c); });
+
+    f.s.beginWeightStroke("Paint weights");
+    for (std::uint32_t v : {0u, 1u}) {
+        edit::WeightEdit dab;
+        dab.vertices = {{v, {{hand, 1.0f}}}};
+        ASSERT_TRUE(test::succeeded(f.s.setVertexWeights(dab, "dab")));
+        EXPECT_TRUE(events.back().has(ChangeKind::Weights) && events.back().preview);
+        EXPECT_EQ(events.back().bindings, std::vector<std::size_t>{0});
+    }
+    f.s.endWeightStroke();
+    EXPECT_EQ(f.s.history().undoText(), "Paint weights");
+    const model::MeshWeights& after = f.s.document().bindings[0].weights;
+    EXPECT_EQ(std::vector<model::Influence>(after.begin(1), after.end(1)), (std::vector<model::Influence>{{hand, 1.0f}}));
+    EXPECT_EQ(std::vector<model::Influence>(after.begin(2), after.end(2)), std::vector<model::Influence>(before.begin(2), before.end(2)));
+    f.s.history().undo();
+    EXPECT_TRUE(f.s.document().bindings[0].weights == before) << "one undo takes the whole stroke back";
+
+    edit::WeightEdit bad;
+    bad.vertices = {{0, {{hand, 0.5f}}}};
+    EXPECT_NE(test::refusal(f.s.setVertexWeights(bad, "x")), "") << "weights must sum to 1";
+    bad.vertices = {{0, {{9999, 1.0f}}}};
+    EXPECT_NE(test::refusal(f.s.setVertexWeights(bad, "x")), "") << "no such joint";
+    bad.vertices = {{100000, {{hand, 1.0f}}}};
+    EXPECT_NE(test::refusal(f.s.setVertexWeights(bad, "x")), "") << "no such vertex";
+    EXPECT_TRUE(f.s.document().bindings[0].weights == before);
+}
+
+TEST(SessionSkin, AGoneSkinJointsShareGoesToItsAncestorAndTheLogSaysSo)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::MeshWeights& w = f.s.document().bindings[0].weights;
+    const std::uint32_t elbow = std::uint32_t(boneOf(f.s, "arm.L::skin.limb.1"));
+    // A joint an earlier build had (a template option removed it since).
+    edit::WeightEdit edit;
+    edit.joints = w.joints;
+    edit.parents = w.parents;
+    edit.joints.push_back({w.joints[elbow].instance, w.joints[elbow].branch, "skin.gone"});
+    edit.parents.push_back(std::int32_t(elbow));
+    const std::uint32_t gone = std::uint32_t(edit.joints.size() - 1);
+    edit.vertices = {{5, {{gone, 1.0f}}}};
+    f.reported.clear();
+    ASSERT_TRUE(test::succeeded(f.s.setVertexWeights(edit, "Paint weights")));
+    EXPECT_TRUE(f.saidSomething("skin.gone is gone; its weights go to its ancestor"));
+    const model::MeshWeights& applied = *f.s.characterMeshes()[0].weights;
+    EXPECT_EQ(std::vector<model::Influence>(applied.begin(5), applied.end(5)), (std::vector<model::Influence>{{elbow, 1.0f}}));
+    EXPECT_EQ(f.s.document().bindings[0].weights.joints.size(), edit.joints.size()) << "the record keeps the gone joint";
+}
+
+TEST(SessionSkin, AChangedMeshIsReportedAndItsWeightsKeptNotApplied)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::MeshBinding bound = f.s.document().bindings[0];
+    // The file changes on disk: two more rings.
+    model::Model longer = f.files.files[kArm];
+    const model::Mesh& old = longer.meshes[0];
+    longer.meshes[0] = tube("sleeve", old.positions.front(), old.positions.back(), 18);
+    f.files.files[kArm] = longer;
+    f.reported.clear();
+    ASSERT_TRUE(test::succeeded(f.s.reloadModel(kArm)));
+    EXPECT_TRUE(f.saidSomething("mesh 'sleeve' changed since it was bound (192 vertices then, 216 now)"));
+    EXPECT_TRUE(f.s.characterMeshes()[0].changed);
+    EXPECT_FALSE(f.s.characterMeshes()[0].weights) << "never applied to the wrong vertices";
+    EXPECT_TRUE(f.s.document().bindings[0] == bound) << "kept";
+
+    // A record whose model is gone from the guide is kept and reported too.
+    f.reported.clear();
+    model::GuideDocument guide = f.s.document();
+    guide.models.clear();
+    f.s.replaceDocument(guide);
+    EXPECT_TRUE(f.saidSomething("match no mesh"));
+    EXPECT_EQ(f.s.document().bindings.size(), 1u);
+}
+
+TEST(SessionSkin, WeightsAreSavedBesideTheGuideAndLoadedBack)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const std::string folder = test::temporaryPath("session-skin");
+    std::filesystem::create_directories(folder);
+    const std::string guide = folder + "/hero.yml";
+    EXPECT_EQ(io::weightsPathFor(guide), folder + "/hero.weights");
+    ASSERT_TRUE(test::succeeded(io::saveGuideWeights(f.s.document(), guide)));
+    model::GuideDocument loaded;
+    ASSERT_TRUE(test::succeeded(io::loadGuideWeights(guide, loaded)));
+    ASSERT_EQ(loaded.bindings.size(), 1u);
+    EXPECT_TRUE(loaded.bindings[0] == f.s.document().bindings[0]) << "model paths come back absolute";
+
+    // No bindings never replaces a file with an empty one; a damaged file is an error and changes nothing.
+    ASSERT_TRUE(test::succeeded(io::saveGuideWeights(model::GuideDocument{}, guide)));
+    EXPECT_TRUE(std::filesystem::file_size(io::weightsPathFor(guide)) > 100);
+    { std::ofstream(io::weightsPathFor(guide), std::ios::binary | std::ios::trunc) << "RSWEIGHTbroken"; }
+    EXPECT_FALSE(io::loadGuideWeights(guide, loaded).ok());
+    EXPECT_EQ(loaded.bindings.size(), 1u);
+    model::GuideDocument none;
+    EXPECT_TRUE(test::succeeded(io::loadGuideWeights(folder + "/other.yml", none))) << "no file: no weights";
+    std::filesystem::remove_all(folder);
+}
