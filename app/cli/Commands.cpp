@@ -45,8 +45,9 @@ std::string usage()
            "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
            "       rigsmith-cli model add GUIDE.yml FILE   (a character model: OBJ, FBX, glTF, Collada...)\n"
            "       rigsmith-cli skin bind GUIDE.yml [--model FILE] [--method heat|envelope|closest] [--max-influences N]\n"
-           "                          [-o WEIGHTS]   (automatic weights of every mesh of the guide's models, or of FILE,\n"
-           "                          for the guide's rig, written to GUIDE.weights unless -o)\n"
+           "                          [-o WEIGHTS] [--json WEIGHTS.json]   (automatic weights of every mesh of the guide's\n"
+           "                          models, or of FILE, for the guide's rig, written to GUIDE.weights unless -o;\n"
+           "                          --json also writes the bones and each vertex's position and weights as JSON)\n"
            "       rigsmith-cli check-templates [DIR...]\n"
            "       rigsmith-cli describe-template ID   (what Rigsmith understood of every key)\n"
            "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";

@@ -14,10 +14,74 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 #include <unistd.h>
 
 namespace rs::cli {
+
+namespace {
+
+std::string jsonString(const std::string& text)
+{
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20)
+            out += c;
+    }
+    return out + "\"";
+}
+
+void jsonPoint(std::ostream& out, const Vec3& p)
+{
+    out << '[' << p.x << ',' << p.y << ',' << p.z << ']';
+}
+
+// --json: the bones (rig node name, parent bone, head and segment ends) and
+// each bound mesh's vertices (as imported: file order, metres, Y-up) with
+// their weights as [bone, weight] pairs; read by tests/tools/compare-blender-weights.py.
+std::string weightsJson(const model::Rig& rig, const std::vector<skin::SkinBone>& bones, const std::vector<const model::Mesh*>& meshes,
+                        const std::vector<io::BoundMesh>& bound)
+{
+    std::ostringstream out;
+    out.precision(9);
+    out << "{\"bones\": [";
+    for (std::size_t b = 0; b < bones.size(); ++b) {
+        out << (b ? ",\n " : "\n ") << "{\"name\": " << jsonString(rig.nodes[bones[b].node].name) << ", \"parent\": " << bones[b].parent
+            << ", \"head\": ";
+        jsonPoint(out, bones[b].head);
+        out << ", \"tails\": [";
+        for (std::size_t t = 0; t < bones[b].tails.size(); ++t) {
+            out << (t ? "," : "");
+            jsonPoint(out, bones[b].tails[t]);
+        }
+        out << "]}";
+    }
+    out << "],\n\"meshes\": [";
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        const model::MeshWeights& w = bound[m].weights;
+        out << (m ? ",\n" : "\n") << "{\"model\": " << jsonString(bound[m].model) << ", \"name\": " << jsonString(bound[m].name)
+            << ",\n \"positions\": [";
+        for (std::size_t v = 0; v < meshes[m]->positions.size(); ++v) {
+            out << (v ? "," : "");
+            jsonPoint(out, Vec3(meshes[m]->positions[v]));
+        }
+        out << "],\n \"weights\": [";
+        for (std::size_t v = 0; v + 1 < w.offsets.size(); ++v) {
+            out << (v ? ",[" : "[");
+            for (std::uint32_t k = w.offsets[v]; k < w.offsets[v + 1]; ++k)
+                out << (k > w.offsets[v] ? "," : "") << '[' << w.influences[k].joint << ',' << w.influences[k].weight << ']';
+            out << ']';
+        }
+        out << "]}";
+    }
+    out << "]}\n";
+    return out.str();
+}
+
+} // namespace
 
 int runSkin(const std::vector<std::string>& args)
 {
@@ -25,7 +89,7 @@ int runSkin(const std::vector<std::string>& args)
         std::cerr << "rigsmith-cli skin: expected 'bind'\n" << usage();
         return 2;
     }
-    std::string guidePath, modelPath, output;
+    std::string guidePath, modelPath, output, jsonPath;
     skin::BindOptions options;
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -47,6 +111,12 @@ int runSkin(const std::vector<std::string>& args)
                 return 2;
             }
             options.maxInfluences = int(n);
+        } else if (a == "--json" && hasValue) {
+            jsonPath = args[++i];
+            if (jsonPath.empty()) {
+                std::cerr << "rigsmith-cli skin bind: --json needs a file name\n";
+                return 2;
+            }
         } else if (a == "-o" && hasValue) {
             output = args[++i];
             if (output.empty()) {
@@ -108,6 +178,9 @@ int runSkin(const std::vector<std::string>& args)
         return 1;
     }
     std::vector<io::BoundMesh> bound;
+    std::vector<model::Model> models; // kept for --json (reserved: boundMeshes points into it)
+    models.reserve(modelPaths.size());
+    std::vector<const model::Mesh*> boundMeshes;
     const auto weightsFolder = std::filesystem::absolute(output).parent_path();
     for (const std::string& path : modelPaths) {
     auto model = io::importModel(path);
@@ -116,7 +189,8 @@ int runSkin(const std::vector<std::string>& args)
         return 1;
     }
     const std::string relativeModel = std::filesystem::absolute(path).lexically_relative(weightsFolder).string();
-    for (const model::Mesh& mesh : model->meshes) {
+    models.push_back(model.take());
+    for (const model::Mesh& mesh : models.back().meshes) {
         int shown = -1;
         const bool terminal = isatty(STDERR_FILENO) != 0;
         options.progress = [&](double fraction) {
@@ -130,7 +204,7 @@ int runSkin(const std::vector<std::string>& args)
             return true;
         };
         options.occluders.clear();
-        for (const model::Mesh& other : model->meshes)
+        for (const model::Mesh& other : models.back().meshes)
             if (&other != &mesh)
                 options.occluders.push_back(&other);
         const auto start = std::chrono::steady_clock::now();
@@ -147,6 +221,7 @@ int runSkin(const std::vector<std::string>& args)
                   << skin::bindMethodName(options.method) << " in " << int(ms) << " ms; " << stats.verticesByClosestBone
                   << " vertices by their closest bone\n";
         bound.push_back({relativeModel, mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), weights.take()});
+        boundMeshes.push_back(&mesh);
     }
     }
     const Status saved = io::saveWeightsFile(output, bound);
@@ -154,6 +229,13 @@ int runSkin(const std::vector<std::string>& args)
     if (saved.failed())
         return 1;
     std::cout << "weights: " << output << '\n';
+    if (!jsonPath.empty()) {
+        const Status written = io::writeFileAtomically(jsonPath, weightsJson(rig, *bones, boundMeshes, bound));
+        print(written.diagnostics());
+        if (written.failed())
+            return 1;
+        std::cout << "weights as JSON: " << jsonPath << '\n';
+    }
     return 0;
 }
 

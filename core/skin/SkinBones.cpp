@@ -22,6 +22,12 @@ Result<std::vector<SkinBone>> skinBones(const model::Rig& rig)
     for (std::size_t j = 0; j < joints.size(); ++j)
         if (joints[j].parent >= 0)
             bones[std::size_t(joints[j].parent)].tails.push_back(bones[j].head);
+    // A root with one child is where the rig stands (world.character's root on
+    // the ground), not a bone of the body: its segment up to the hips would run
+    // between the legs and take the inner thighs (the fitted human did).
+    for (SkinBone& bone : bones)
+        if (bone.parent < 0 && bone.tails.size() == 1)
+            bone.tails.clear();
     for (std::size_t j = 0; j < joints.size(); ++j) {
         if (!bones[j].tails.empty() || joints[j].parent < 0)
             continue;

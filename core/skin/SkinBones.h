@@ -1,8 +1,10 @@
 #pragma once
 // The bones automatic weights bind to: one per skin joint of a rig, from the
 // joint's bind position to each of its skin children (a leaf joint continues
-// its parent's direction for half the parent's length). A vertex's distance to
-// a bone is its distance to the nearest of those segments.
+// its parent's direction for half the parent's length). A root with a single
+// skin child is where the rig stands (the world template's root on the ground),
+// not a bone of the body: it is its head point only. A vertex's distance to a
+// bone is its distance to the nearest of those segments (or to the point).
 #include "base/Result.h"
 #include "model/Rig.h"
 

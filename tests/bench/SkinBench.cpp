@@ -24,14 +24,24 @@ namespace {
 const std::string kSource = RIGSMITH_SOURCE_DIR;
 const std::string kHuman = "/usr/share/assimp/models/Collada/human.zae";
 
+std::vector<skin::SkinBone> bonesOf(const std::string& guide)
+{
+    templates::TemplateRegistry templates;
+    io::scanTemplates(templates, {kSource + "/templates"}, kSource + "/resources/icons");
+    const auto rig = rigging::buildRig(io::readGuideFile(guide).take(), templates);
+    return skin::skinBones(rig).take();
+}
+
 const std::vector<skin::SkinBone>& bipedBones()
 {
-    static const auto bones = [] {
-        templates::TemplateRegistry templates;
-        io::scanTemplates(templates, {kSource + "/templates"}, kSource + "/resources/icons");
-        const auto rig = rigging::buildRig(io::readGuideFile(kSource + "/resources/samples/biped.yml").take(), templates);
-        return skin::skinBones(rig).take();
-    }();
+    static const auto bones = bonesOf(kSource + "/resources/samples/biped.yml");
+    return bones;
+}
+
+// The biped fitted to the human (tests/data/Skin/human/guide.yml).
+const std::vector<skin::SkinBone>& fittedBones()
+{
+    static const auto bones = bonesOf(kSource + "/tests/data/Skin/human/guide.yml");
     return bones;
 }
 
@@ -92,7 +102,7 @@ const std::vector<model::Mesh>& human(int subdivisions)
 }
 
 // The whole human (body, then eyes, each hidden by the other) bound by heat.
-void BM_AutoWeightsHumanBiped(benchmark::State& state)
+void bindHuman(benchmark::State& state, const std::vector<skin::SkinBone>& bones)
 {
     const std::vector<model::Mesh>& meshes = human(int(state.range(0)));
     if (meshes.empty()) {
@@ -108,7 +118,7 @@ void BM_AutoWeightsHumanBiped(benchmark::State& state)
                 if (&other != &mesh)
                     options.occluders.push_back(&other);
             skin::BindStats stats;
-            auto weights = skin::bindMesh(mesh, bipedBones(), options, &stats);
+            auto weights = skin::bindMesh(mesh, bones, options, &stats);
             benchmark::DoNotOptimize(weights.ok());
             vertices += stats.surfaceVertices;
             solved = std::max(solved, stats.bonesSolved);
@@ -117,12 +127,15 @@ void BM_AutoWeightsHumanBiped(benchmark::State& state)
         }
     }
     state.counters["vertices"] = double(vertices);
-    state.counters["bones"] = double(bipedBones().size());
+    state.counters["bones"] = double(bones.size());
     state.counters["bones_solved"] = double(solved);
     state.counters["parts"] = double(parts);
     state.counters["parts_by_closest_bone"] = double(byClosest);
 }
+void BM_AutoWeightsHumanBiped(benchmark::State& state) { bindHuman(state, bipedBones()); }
 BENCHMARK(BM_AutoWeightsHumanBiped)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+void BM_AutoWeightsHumanFitted(benchmark::State& state) { bindHuman(state, fittedBones()); }
+BENCHMARK(BM_AutoWeightsHumanFitted)->Arg(0)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 
 } // namespace
 
