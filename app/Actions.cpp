@@ -145,6 +145,7 @@ void MainWindow::createActions()
     createEditActions();
     createPoseActions();
     createViewActions();
+    createSkinActions();
 }
 
 void MainWindow::createPoseActions()

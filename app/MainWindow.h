@@ -8,9 +8,11 @@
 #include <QMainWindow>
 
 #include <functional>
+#include <memory>
 
 class QAction;
 class QDockWidget;
+class QFileSystemWatcher;
 class QLabel;
 class QProgressBar;
 
@@ -65,6 +67,19 @@ public:
     bool loadReference(const QString& path);
     void reloadTemplates();
 
+    // The character (SkinActions.cpp). Guide > Add Model: reads the file and
+    // adds it (one undo step); false with the reader's reasons in the log.
+    bool addModel(const QString& path);
+    // Skin > Bind: binds every model to the built rig's skin joints on a
+    // worker thread, with a progress dialog whose Cancel keeps the previous
+    // weights; the result lands as one undo step. Builds first when needed.
+    void bindSkin();
+    bool isBinding() const { return m_bind != nullptr; }
+    void cancelBind();
+    // A model file changed on disk: asks whether to read it again (tests answer).
+    using ReloadPrompt = std::function<bool(const QString& file)>;
+    void setReloadPrompt(ReloadPrompt prompt) { m_reloadPrompt = std::move(prompt); }
+
 protected:
     void closeEvent(QCloseEvent* event) override;
 
@@ -77,6 +92,10 @@ private:
     void createEditActions();    // EditActions.cpp: delete, select all / hierarchy
     void createDisplayActions(); // DisplayActions.cpp: View > Display and Navigation, the Window menu
     void createHelpActions();    // HelpActions.cpp: About, the README, the selected template's help
+    void createSkinActions();    // SkinActions.cpp: Guide > Add Model, the Skin menu
+    void watchModels();          // SkinActions.cpp: the model files the guide uses
+    void modelFileChanged(const QString& path);
+    void finishBind();
     void connectTransformPanel(); // TransformWiring.cpp
     void refreshTransformPanel();
     void showHelpText(const QString& title, const QString& markdown);
@@ -121,6 +140,11 @@ private:
     QElapsedTimer m_buildPainted; // when the build's progress was last painted
     bool m_optionsEditing = false; // an option edit from the Options dock is being applied
     model::InstanceId m_optionsInstance = model::kNoId; // whose options the dock shows
+    struct BindJob;
+    std::shared_ptr<BindJob> m_bind; // the bind running on its worker thread (shared_ptr: BindJob is SkinActions.cpp's)
+    ReloadPrompt m_reloadPrompt;
+    QFileSystemWatcher* m_modelWatcher = nullptr;
+    QStringList m_modelsAsked; // changed model files already offered (asked once per change)
 };
 
 } // namespace rs::app

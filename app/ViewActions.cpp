@@ -42,6 +42,7 @@ void MainWindow::createViewActions()
     view->addActions({frameSelected, frameAll});
 
     QMenu* guide = menuBar()->addMenu(tr("&Guide"));
+    guide->setObjectName("guideMenu");
     QAction* symmetry = makeAction(this, "symmetry", tr("S&ymmetric Editing"), QKeySequence(tr("Ctrl+Shift+Y")), "mirror");
     symmetry->setToolTip(tr("Moving a guide of a side instance (arm_L) moves its twin (arm_R) mirrored; "
                             "mirrored branches (L/R) follow always"));
