@@ -214,26 +214,28 @@ DualQuat toDualQuat(const Mat4& m)
 
 float dot4(const Float8& a, const Float8& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]; }
 
-// A blended dual quaternion `b` applied to vertex v: normalised, it rotates
-// then translates the position and rotates the normal.
+// A blended dual quaternion `b` applied to vertex v: it rotates then
+// translates the position and rotates the normal. Normalising it would divide
+// both parts by its length; every term below is a product of two parts, so
+// dividing once by the squared length does the same without a square root.
 inline void applyDualQuat(const Float8& b, std::size_t v, const glm::vec3* in, const glm::vec3* inNormals, glm::vec3* out,
                           glm::vec3* outN)
 {
-    const float length = std::sqrt(dot4(b, b));
-    if (!(length > 1e-12f)) {
+    const float squared = dot4(b, b);
+    if (!(squared > 1e-24f)) {
         out[v] = in[v];
         if (inNormals)
             outN[v] = inNormals[v];
         return;
     }
-    const float inverse = 1.0f / length;
-    const glm::vec3 real(b[0] * inverse, b[1] * inverse, b[2] * inverse), dual(b[4] * inverse, b[5] * inverse, b[6] * inverse);
-    const float realW = b[3] * inverse, dualW = b[7] * inverse;
+    const float twice = 2.0f / squared;
+    const glm::vec3 real(b[0], b[1], b[2]), dual(b[4], b[5], b[6]);
+    const float realW = b[3], dualW = b[7];
     // The translation: the vector part of 2 dual conj(real).
-    const glm::vec3 t = 2.0f * (realW * dual - dualW * real + glm::cross(real, dual));
+    const glm::vec3 t = twice * (realW * dual - dualW * real + glm::cross(real, dual));
     auto rotate = [&](const glm::vec3& p) {
         const glm::vec3 uv = glm::cross(real, p);
-        return p + 2.0f * (realW * uv + glm::cross(real, uv));
+        return p + twice * (realW * uv + glm::cross(real, uv));
     };
     out[v] = rotate(in[v]) + t;
     if (inNormals)
