@@ -63,6 +63,43 @@ struct TopInfluences {
     }
 };
 
+// Right-hand sides side by side: row r holds vertex r's value for each bone.
+using RowBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using Cholesky = Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>;
+
+// Solves A X = B in place for every column of B at once, as Cholesky::solve
+// does for one (X = P^-1 L^-T L^-1 P B). Why not solve() per bone: at a
+// million vertices the factor is hundreds of megabytes, streamed from memory
+// twice per solve; here it is streamed twice per block. Rows left zero by the
+// forward pass (far from every bone of the block) are skipped, as Eigen does.
+void solveInPlace(const Cholesky& cholesky, RowBlock& x)
+{
+    const Eigen::SparseMatrix<double>& factor = cholesky.matrixL().nestedExpression();
+    const auto& to = cholesky.permutationP().indices();
+    RowBlock y(x.rows(), x.cols());
+    for (Eigen::Index r = 0; r < x.rows(); ++r)
+        y.row(to[r]) = x.row(r);
+    // L y' = y: column by column (the diagonal entry comes first).
+    for (Eigen::Index c = 0; c < factor.outerSize(); ++c) {
+        Eigen::SparseMatrix<double>::InnerIterator it(factor, c);
+        if (y.row(c).isZero(0.0))
+            continue;
+        y.row(c) /= it.value();
+        for (++it; it; ++it)
+            y.row(it.index()) -= it.value() * y.row(c);
+    }
+    // L^T x = y': the same columns, last first.
+    for (Eigen::Index c = factor.outerSize() - 1; c >= 0; --c) {
+        Eigen::SparseMatrix<double>::InnerIterator it(factor, c);
+        const double diagonal = it.value();
+        for (++it; it; ++it)
+            y.row(c) -= it.value() * y.row(it.index());
+        y.row(c) /= diagonal;
+    }
+    for (Eigen::Index r = 0; r < x.rows(); ++r)
+        x.row(r) = y.row(to[r]);
+}
+
 double distanceTo(const SkinBone& bone, const Vec3& p) { return glm::length(p - nearestPointOn(bone, p)); }
 
 } // namespace
@@ -240,7 +277,7 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
             }
             stats.bonesSolved = heated.size();
 
-            Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> cholesky(system);
+            Cholesky cholesky(system);
             const bool factored = cholesky.info() == Eigen::Success;
             std::unique_ptr<Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper>> iterative;
             if (!factored) {
@@ -251,24 +288,37 @@ Result<model::MeshWeights> bindMesh(const model::Mesh& mesh, const std::vector<S
             if (!progress(0.45))
                 return cancelled();
 
-            // Bones in blocks: solved in parallel, merged into each vertex's top influences in order.
+            // Bones in blocks of 16, each block in two groups solved in
+            // parallel, merged into each vertex's top influences in order.
             const std::size_t block = 16;
             std::atomic<bool> stop{false};
             for (std::size_t first = 0; first < heated.size() && !stop; first += block) {
                 const std::size_t count = std::min(block, heated.size() - first);
-                std::vector<Eigen::VectorXd> solutions(count);
-                tbb::parallel_for(std::size_t(0), count, [&](std::size_t k) {
-                    const std::uint32_t bone = heated[first + k];
-                    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
-                    for (Eigen::Index r = 0; r < m; ++r)
-                        if (nearest[vertexOf[std::size_t(r)]].visible == bone)
-                            rhs[r] = heatIn[std::size_t(r)];
-                    solutions[k] = factored ? Eigen::VectorXd(cholesky.solve(rhs)) : Eigen::VectorXd(iterative->solve(rhs));
+                const std::size_t groups = std::min<std::size_t>(count, 2);
+                std::vector<RowBlock> solutions(groups);
+                tbb::parallel_for(std::size_t(0), groups, [&](std::size_t g) {
+                    const std::size_t begin = first + count * g / groups, end = first + count * (g + 1) / groups;
+                    RowBlock& x = solutions[g];
+                    x.setZero(m, Eigen::Index(end - begin));
+                    for (Eigen::Index r = 0; r < m; ++r) {
+                        const std::uint32_t visible = nearest[vertexOf[std::size_t(r)]].visible;
+                        for (std::size_t k = begin; k < end; ++k)
+                            if (visible == heated[k])
+                                x(r, Eigen::Index(k - begin)) = heatIn[std::size_t(r)];
+                    }
+                    if (factored)
+                        solveInPlace(cholesky, x);
+                    else
+                        for (Eigen::Index k = 0; k < x.cols(); ++k)
+                            x.col(k) = iterative->solve(Eigen::VectorXd(x.col(k)));
                 });
-                for (std::size_t k = 0; k < count; ++k)
-                    for (Eigen::Index r = 0; r < m; ++r)
-                        if (solutions[k][r] > 1e-6) // far below any share that survives pruning
-                            top[vertexOf[std::size_t(r)]].offer(heated[first + k], std::min(solutions[k][r], 1.0), limit);
+                for (std::size_t g = 0; g < groups; ++g) {
+                    const std::size_t begin = first + count * g / groups;
+                    for (Eigen::Index k = 0; k < solutions[g].cols(); ++k)
+                        for (Eigen::Index r = 0; r < m; ++r)
+                            if (solutions[g](r, k) > 1e-6) // far below any share that survives pruning
+                                top[vertexOf[std::size_t(r)]].offer(heated[begin + std::size_t(k)], std::min(solutions[g](r, k), 1.0), limit);
+                }
                 if (!progress(0.45 + 0.5 * double(first + count) / double(heated.size())))
                     stop = true;
             }
