@@ -12,7 +12,7 @@ PACKAGES=(
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libqt6svg6 qt6-qpa-plugins
   libgl-dev libepoxy-dev libglfw3-dev libgl1-mesa-dri
   libyaml-cpp-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libassimp-dev
-  libeigen3-dev libembree-dev libtbb-dev
+  libeigen3-dev libembree-dev libtbb-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )
