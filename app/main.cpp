@@ -5,11 +5,20 @@
 //                                        the guide loaded showed its first frame, exit
 //   rigsmith --edit-latency GUIDE        replay 100 guide drags, print the median and
 //                                        worst time from an edit to a repainted frame, exit
+//   rigsmith --edit-latency --drag CONTROLLER GUIDE   the same in Rig mode: 100 drags
+//                                        rotating the controller (a rig path, "arm.L::ctrls.fk.0")
+// Screenshot and latency setup (applied after the guide is built):
+//   --rig                                 Rig mode
+//   --pose CONTROLLER=RX,RY,RZ            set a controller's rotation (degrees); it stays
+//                                         selected (repeatable, Rig mode)
+//   --action NAME                         trigger an action by object name, e.g.
+//                                         weights:selected, skinning:dualQuaternion (repeatable)
 #include "EditLatency.h"
 #include "MainWindow.h"
 
 #include "ViewportWidget.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QPalette>
 #include <QStyleFactory>
@@ -82,6 +91,47 @@ int reportStartup(QApplication& app, rs::app::MainWindow& window, const QElapsed
     return app.exec();
 }
 
+// The values of every `option VALUE` pair in `args`, removed from it.
+QStringList takeAll(QStringList& args, const QString& option)
+{
+    QStringList values;
+    for (int at = args.indexOf(option); at >= 0 && at + 1 < args.size(); at = args.indexOf(option)) {
+        values << args.at(at + 1);
+        args.remove(at, 2);
+    }
+    return values;
+}
+
+// --rig, --pose, --action: what a screenshot or a measurement shows.
+bool applySetup(rs::app::MainWindow& window, bool rigMode, const QStringList& poses, const QStringList& actions)
+{
+    auto& session = window.session();
+    if (rigMode || !poses.isEmpty())
+        session.setMode(rs::app::EditorMode::Rig);
+    for (const QString& pose : poses) {
+        const QStringList parts = pose.split('=');
+        const QStringList angles = parts.value(1).split(',');
+        const auto* rig = session.rig();
+        const auto node = rig ? rig->findPath(parts.value(0).toStdString()) : std::nullopt;
+        if (!node || angles.size() != 3) {
+            std::fprintf(stderr, "rigsmith: --pose %s: no such controller, or not RX,RY,RZ\n", qPrintable(pose));
+            return false;
+        }
+        session.selectControllers({*node}, false);
+        for (int axis = 0; axis < 3; ++axis)
+            session.setChannel(3 + axis, angles[axis].toDouble(), false);
+    }
+    for (const QString& name : actions) {
+        QAction* a = window.findChild<QAction*>(name);
+        if (!a) {
+            std::fprintf(stderr, "rigsmith: --action %s: no such action\n", qPrintable(name));
+            return false;
+        }
+        a->trigger();
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -104,6 +154,10 @@ int main(int argc, char** argv)
         args.remove(at, 2);
     }
 
+    const bool rigMode = args.removeAll("--rig") > 0;
+    const QStringList poses = takeAll(args, "--pose");
+    const QStringList actions = takeAll(args, "--action");
+    const QStringList drags = takeAll(args, "--drag");
     const bool startupTime = args.removeAll("--startup-time") > 0;
     const bool editLatency = args.removeAll("--edit-latency") > 0;
     if (editLatency && args.isEmpty()) {
@@ -122,7 +176,8 @@ int main(int argc, char** argv)
         if (!window.session().document().instances().size())
             return 1;
         QTimer::singleShot(0, &window, [&] {
-            const int status = rs::app::reportEditLatency(window);
+            const int status = drags.isEmpty() ? rs::app::reportEditLatency(window)
+                                               : rs::app::reportRigEditLatency(window, drags.front().toStdString());
             window.setProperty("skipUnsavedPrompt", true);
             QApplication::exit(status);
         });
@@ -135,6 +190,8 @@ int main(int argc, char** argv)
     }
 
     window.buildRig();
+    if (!applySetup(window, rigMode, poses, actions))
+        return 1;
     window.viewportWidget()->frameAll();
     int status = 1;
     QTimer::singleShot(500, &window, [&] {
