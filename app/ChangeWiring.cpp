@@ -77,8 +77,9 @@ void MainWindow::follow(const edit::Change& change)
         m_channelBox->invalidate(); // a rebuilt rig has new channel indices
     if (change.has(K::Mode))
         followMode();
+    m_characterWeights.follow(m_session, change);
     if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names | K::Reference | K::Selection |
-                      K::Rig | K::Evaluation | K::Mode | K::Templates))
+                      K::Rig | K::Evaluation | K::Mode | K::Templates | K::Models | K::Weights))
         refreshScene();
     if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Selection | K::Mode))
         refreshTransformPanel();

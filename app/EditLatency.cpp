@@ -122,4 +122,66 @@ int reportEditLatency(MainWindow& window, int drags)
     return 0;
 }
 
+int reportRigEditLatency(MainWindow& window, const std::string& path, int drags)
+{
+    auto* view = window.viewportWidget();
+    window.setAutosaveEnabled(false);
+    window.buildRig();
+    auto& session = window.session();
+    session.setMode(EditorMode::Rig);
+    QApplication::processEvents();
+    const auto* rig = session.rig();
+    const auto node = rig ? rig->findPath(path) : std::nullopt;
+    if (!node || !session.evaluation()) {
+        std::fprintf(stderr, "rigsmith: no controller %s in the built rig\n", path.c_str());
+        return 1;
+    }
+    session.selectControllers({*node}, false);
+    timeToFrame(view, [] {}); // shaders, buffers, the meshes' first upload
+    std::vector<double> idle;
+    for (int i = 0; i < 20; ++i)
+        idle.push_back(timeToFrame(view, [] {}));
+    const std::uint64_t meshVertices = view->meshVerticesUploaded(), weights = view->weightVerticesUploaded();
+    std::vector<double> moves, commits;
+    const int steps = 4;
+    for (int d = 0; d < drags; ++d) {
+        const Mat4 start = session.evaluation()->worldMatrix(*node);
+        emit view->gizmoDragStarted(*node);
+        for (int s = 1; s <= steps; ++s) {
+            const double angle = 0.15 * s * (d % 2 == 0 ? 1.0 : -1.0); // out and back: the pose stays put
+            Mat4 world = start * glm::dmat4(rotationMatrix(Vec3(0.0, 0.0, 1.0), angle));
+            moves.push_back(timeToFrame(view, [&] { emit view->gizmoDragged(*node, world); }));
+        }
+        commits.push_back(timeToFrame(view, [&] { emit view->gizmoDragFinished(*node); }));
+    }
+    session.discardAutosave();
+    auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v.empty() ? 0.0 : v[v.size() / 2];
+    };
+    auto ms = [](double v) { return std::round(v * 100.0) / 100.0; };
+    std::vector<double> all = moves;
+    all.insert(all.end(), commits.begin(), commits.end());
+    std::size_t meshVertexCount = 0;
+    for (const auto& m : session.characterMeshes())
+        meshVertexCount += m.data(session.models()).vertexCount();
+    const nlohmann::json report{{"controller", path},
+                                {"drags", drags},
+                                {"frames", all.size()},
+                                {"median_ms", ms(median(all))},
+                                {"worst_ms", ms(*std::max_element(all.begin(), all.end()))},
+                                {"preview_median_ms", ms(median(moves))},
+                                {"idle_frame_median_ms", ms(median(idle))},
+                                {"edit_over_idle_median_ms", ms(median(all) - median(idle))},
+                                {"meshes", session.characterMeshes().size()},
+                                {"mesh_vertices", meshVertexCount},
+                                {"skin_bones", session.skinBones().size()},
+                                {"mesh_vertices_sent_while_posing", view->meshVerticesUploaded() - meshVertices},
+                                {"weights_sent_while_posing", view->weightVerticesUploaded() - weights},
+                                {"viewport_px", {int(view->width() * view->devicePixelRatio()), int(view->height() * view->devicePixelRatio())}}};
+    std::printf("%s\n", report.dump().c_str());
+    std::fflush(stdout);
+    return 0;
+}
+
 } // namespace rs::app

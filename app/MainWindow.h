@@ -3,6 +3,7 @@
 // wires the session (core) to the views; it holds no rigging logic itself.
 #include "EditorSession.h"
 #include "Scene.h"
+#include "SceneCharacter.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -14,6 +15,7 @@ class QAction;
 class QDockWidget;
 class QFileSystemWatcher;
 class QLabel;
+class QMenu;
 class QProgressBar;
 
 namespace rs::viewport { class ViewportWidget; }
@@ -91,6 +93,7 @@ private:
     void connectViewport();   // ViewportWiring.cpp: picks, box selection, gizmo drags
     void createEditActions();    // EditActions.cpp: delete, select all / hierarchy
     void createDisplayActions(); // DisplayActions.cpp: View > Display and Navigation, the Window menu
+    void createWeightDisplayActions(QMenu* display); // View > Display > Weights and Skinning
     void createHelpActions();    // HelpActions.cpp: About, the README, the selected template's help
     void createSkinActions();    // SkinActions.cpp: Guide > Add Model, the Skin menu
     void watchModels();          // SkinActions.cpp: the model files the guide uses
@@ -133,6 +136,7 @@ private:
     widgets::TemplateLibrary* m_library = nullptr;
     widgets::TransformPanel* m_transformPanel = nullptr;
     viewport::DisplayOptions m_display;
+    viewport::CharacterWeights m_characterWeights; // the weights objects the viewport draws
     ErrorPrompt m_errorPrompt;
     QString m_exportDialogGuide; // the guide the export dialog's path was made for
     QLabel* m_status = nullptr;

@@ -4,6 +4,8 @@
 #include "MainWindow.h"
 
 #include "ChannelBox.h"
+#include "LogPanel.h"
+#include "SceneCharacter.h"
 #include "ViewportWidget.h"
 
 #include <QAction>
@@ -77,6 +79,8 @@ void MainWindow::connectViewport()
         const QString name = rig && target < rig->nodes.size() ? QString::fromStdString(rig->nodes[target].name) : QString();
         m_session.endDrag(target, QString("%1 %2").arg(verb, name).toStdString());
     });
+    connect(m_viewport, &ViewportWidget::renderWarning, this,
+            [this](const QString& message) { m_log->addMessage(message, Severity::Warning); });
     connect(m_viewport, &ViewportWidget::viewChanged, this, [this](int view) {
         const char* names[] = {"viewPerspective", "viewFront", "viewSide", "viewTop"};
         if (QAction* a = action(names[view])) a->setChecked(true);
@@ -109,6 +113,9 @@ void MainWindow::refreshScene()
                                                 {s.instance, s.joint, s.joints, s.node, s.nodes, cvMode, s.cvs}, pose,
                                                 mirrored);
     scene.reference = m_session.referenceTriangles();
+    viewport::addCharacter(scene, m_session, m_characterWeights, rigMode);
+    if (m_display.weights == viewport::WeightDisplay::SelectedJoint)
+        scene.weightBone = viewport::skinBoneFor(m_session, rigMode);
     viewport::applyDisplay(scene, m_display, rigMode);
     m_viewport->setScene(std::move(scene));
     const auto* rig = m_session.rig();

@@ -5,11 +5,23 @@
 //                                        the guide loaded showed its first frame, exit
 //   rigsmith --edit-latency GUIDE        replay 100 guide drags, print the median and
 //                                        worst time from an edit to a repainted frame, exit
+//   rigsmith --edit-latency --drag CONTROLLER GUIDE   the same in Rig mode: 100 drags
+//                                        rotating the controller (a rig path, "arm.L::ctrls.fk.0")
+// Screenshot and latency setup (applied after the guide is built):
+//   --rig                                 Rig mode
+//   --set CONTROLLER.CHANNEL=VALUE        set a channel ("arm.L::ctrls.switch.ik_blend=0")
+//                                         before the poses (repeatable, Rig mode)
+//   --pose CONTROLLER=RX,RY,RZ            set a controller's rotation (degrees); it stays
+//                                         selected (repeatable, Rig mode)
+//   --frame X0,Y0,Z0,X1,Y1,Z1             frame this box (metres) instead of everything
+//   --action NAME                         trigger an action by object name, e.g.
+//                                         weights:selected, skinning:dualQuaternion (repeatable)
 #include "EditLatency.h"
 #include "MainWindow.h"
 
 #include "ViewportWidget.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QPalette>
 #include <QStyleFactory>
@@ -82,6 +94,67 @@ int reportStartup(QApplication& app, rs::app::MainWindow& window, const QElapsed
     return app.exec();
 }
 
+// The values of every `option VALUE` pair in `args`, removed from it.
+QStringList takeAll(QStringList& args, const QString& option)
+{
+    QStringList values;
+    for (int at = args.indexOf(option); at >= 0 && at + 1 < args.size(); at = args.indexOf(option)) {
+        values << args.at(at + 1);
+        args.remove(at, 2);
+    }
+    return values;
+}
+
+// --rig, --set, --pose, --action: what a screenshot or a measurement shows.
+bool applySetup(rs::app::MainWindow& window, bool rigMode, const QStringList& sets, const QStringList& poses,
+                const QStringList& actions)
+{
+    auto& session = window.session();
+    if (rigMode || !poses.isEmpty() || !sets.isEmpty())
+        session.setMode(rs::app::EditorMode::Rig);
+    for (const QString& set : sets) {
+        const QString target = set.section('=', 0, 0);
+        const auto* rig = session.rig();
+        const auto node = rig ? rig->findPath(target.section('.', 0, -2).toStdString()) : std::nullopt;
+        const auto channel = node && session.program()
+                                 ? session.program()->channels().find(*node, target.section('.', -1).toStdString())
+                                 : std::nullopt;
+        const rs::Status status = channel ? session.setChannel(*channel, set.section('=', 1).toDouble(), false)
+                                          : rs::Status::refused("no such controller or channel");
+        if (status.failed()) {
+            std::fprintf(stderr, "rigsmith: --set %s: %s\n", qPrintable(set), rs::formatAll(status.diagnostics()).c_str());
+            return false;
+        }
+    }
+    for (const QString& pose : poses) {
+        const QStringList parts = pose.split('=');
+        const QStringList angles = parts.value(1).split(',');
+        const auto* rig = session.rig();
+        const auto node = rig ? rig->findPath(parts.value(0).toStdString()) : std::nullopt;
+        if (!node || angles.size() != 3) {
+            std::fprintf(stderr, "rigsmith: --pose %s: no such controller, or not RX,RY,RZ\n", qPrintable(pose));
+            return false;
+        }
+        session.selectControllers({*node}, false);
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto channel = session.program()->channels().find(*node, std::string("r") + char('x' + axis));
+            const rs::Status set = channel ? session.setChannel(*channel, angles[axis].toDouble(), false)
+                                           : rs::Status::refused("no rotate channel");
+            if (set.failed())
+                std::fprintf(stderr, "rigsmith: --pose %s: %s\n", qPrintable(pose), rs::formatAll(set.diagnostics()).c_str());
+        }
+    }
+    for (const QString& name : actions) {
+        QAction* a = window.findChild<QAction*>(name);
+        if (!a) {
+            std::fprintf(stderr, "rigsmith: --action %s: no such action\n", qPrintable(name));
+            return false;
+        }
+        a->trigger();
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -104,6 +177,12 @@ int main(int argc, char** argv)
         args.remove(at, 2);
     }
 
+    const bool rigMode = args.removeAll("--rig") > 0;
+    const QStringList sets = takeAll(args, "--set");
+    const QStringList poses = takeAll(args, "--pose");
+    const QStringList actions = takeAll(args, "--action");
+    const QStringList drags = takeAll(args, "--drag");
+    const QStringList frame = takeAll(args, "--frame");
     const bool startupTime = args.removeAll("--startup-time") > 0;
     const bool editLatency = args.removeAll("--edit-latency") > 0;
     if (editLatency && args.isEmpty()) {
@@ -122,7 +201,11 @@ int main(int argc, char** argv)
         if (!window.session().document().instances().size())
             return 1;
         QTimer::singleShot(0, &window, [&] {
-            const int status = rs::app::reportEditLatency(window);
+            for (const QString& name : actions) // what is drawn while measuring (display:meshes...)
+                if (QAction* a = window.findChild<QAction*>(name))
+                    a->trigger();
+            const int status = drags.isEmpty() ? rs::app::reportEditLatency(window)
+                                               : rs::app::reportRigEditLatency(window, drags.front().toStdString());
             window.setProperty("skipUnsavedPrompt", true);
             QApplication::exit(status);
         });
@@ -135,7 +218,15 @@ int main(int argc, char** argv)
     }
 
     window.buildRig();
+    if (!applySetup(window, rigMode, sets, poses, actions))
+        return 1;
     window.viewportWidget()->frameAll();
+    if (const QStringList box = frame.value(0).split(','); box.size() == 6) {
+        auto* view = window.viewportWidget();
+        view->camera().frame({box[0].toDouble(), box[1].toDouble(), box[2].toDouble()},
+                             {box[3].toDouble(), box[4].toDouble(), box[5].toDouble()}, double(view->width()) / view->height());
+        view->update();
+    }
     int status = 1;
     QTimer::singleShot(500, &window, [&] {
         const QImage image = window.grab().toImage();

@@ -26,6 +26,8 @@ public:
     // The last rendered frame as tightly packed RGB rows, top row first.
     std::vector<std::uint8_t> readPixels() const;
     int width() const { return m_width; }
+    // The renderer (its upload counters, for tests).
+    const Renderer& renderer() const { return *m_renderer; }
     int height() const { return m_height; }
     // Interactive loop until the window closes: left drag orbits, middle drag
     // pans, wheel zooms, F frames everything.

@@ -13,6 +13,7 @@ bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const
     for (const auto& j : guideJoints) add(j.position);
     for (const auto& c : curves) for (const auto& p : c.points) add(p);
     for (const auto& j : skinJoints) add(j.position);
+    for (const auto& m : meshes) for (const auto& p : m.data().positions) add(glm::dvec3(p));
     return any;
 }
 
@@ -57,6 +58,10 @@ void applyDisplay(Scene& scene, const DisplayOptions& display, bool rigMode)
         scene.labels.clear();
     if (!display.axes)
         scene.axes.clear();
+    if (!display.meshes)
+        scene.meshes.clear();
+    scene.weightDisplay = display.weights;
+    scene.skinning = display.skinning;
 }
 
 namespace {

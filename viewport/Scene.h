@@ -4,6 +4,7 @@
 // the Renderer turns it into GL buffers and Picking hit-tests it.
 #include "eval/RigProgram.h"
 #include "model/GuideDocument.h"
+#include "model/Mesh.h"
 #include "model/Rig.h"
 #include "session/MirroredGuides.h"
 
@@ -45,6 +46,31 @@ struct SceneLabel {
     std::string text;
 };
 
+// How skinned meshes are shaded (View > Display > Weights): their materials;
+// the weights of one skin bone (Scene::weightBone) as a heat ramp, blue 0 to
+// red 1; or each vertex in its dominant bone's colour (a colour per bone).
+// Both weight views show the 4 largest influences per vertex, renormalised:
+// what the renderer skins with.
+enum class WeightDisplay { Off, SelectedJoint, DominantJoint };
+// Linear blend skinning, or dual quaternions (no candy-wrapper collapse under
+// twist; scale in the palette is ignored: dual quaternions are rigid).
+enum class Skinning { Linear, DualQuaternion };
+
+// One mesh of the character. The model is shared, so the renderer sends a
+// mesh's vertices to the GPU once per (model, mesh) and its weights once per
+// weights object, not once per scene.
+struct SceneMesh {
+    std::shared_ptr<const model::Model> model;           // owns the mesh; never null
+    std::size_t mesh = 0;                                // into model->meshes
+    std::shared_ptr<const model::MeshWeights> weights;   // joint i = Scene::palette[i]; null: unbound
+    // Drawn opaque and posed by the palette (Rig mode, bound). Otherwise
+    // see-through in the bind pose, so guides and joints stay visible.
+    bool skinned = false;
+    glm::vec3 baseColor{0.8f};                           // linear RGB, [0, 1]
+    std::string texturePath;                             // absolute; "" none
+    const model::Mesh& data() const { return model->meshes[mesh]; }
+};
+
 // What the View > Display menu shows. Controller curves are the "shapes" in
 // Guide mode (authored there) and the "controllers" in Rig mode.
 struct DisplayOptions {
@@ -55,6 +81,9 @@ struct DisplayOptions {
     bool reference = true;
     bool labels = false;
     bool axes = false;
+    bool meshes = true;
+    WeightDisplay weights = WeightDisplay::Off;
+    Skinning skinning = Skinning::Linear;
     bool operator==(const DisplayOptions&) const = default;
 };
 
@@ -86,6 +115,17 @@ struct Scene {
     std::vector<SceneCurve> axes;
     std::vector<SceneLabel> labels;
     static constexpr double kAxisLength = 0.06; // metres
+    // The character: its meshes, and per skin bone (session::Session::skinBones()
+    // order) its posed world matrix times the inverse of its bind matrix,
+    // sent to the GPU every frame. Skinning happens in the vertex shader.
+    std::vector<SceneMesh> meshes;
+    std::vector<glm::mat4> palette;
+    Skinning skinning = Skinning::Linear;
+    WeightDisplay weightDisplay = WeightDisplay::Off;
+    // The skin bone (into palette) WeightDisplay::SelectedJoint shows, -1 none:
+    // set by the caller (the selection's bone, see skinBoneFor) or chosen
+    // explicitly (a paint tool's joint).
+    int weightBone = -1;
     bool showGuides = true;
     // Set by the viewport each time it is given a new scene: the renderer sends
     // the scene's vertices again only when it changed (0: always).

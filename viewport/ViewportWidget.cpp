@@ -51,6 +51,8 @@ void ViewportWidget::cleanup()
 }
 
 std::uint64_t ViewportWidget::verticesUploaded() const { return m_renderer ? m_renderer->verticesUploaded() : 0; }
+std::uint64_t ViewportWidget::meshVerticesUploaded() const { return m_renderer ? m_renderer->meshVerticesUploaded() : 0; }
+std::uint64_t ViewportWidget::weightVerticesUploaded() const { return m_renderer ? m_renderer->weightVerticesUploaded() : 0; }
 
 void ViewportWidget::setScene(Scene scene)
 {
@@ -153,8 +155,11 @@ void ViewportWidget::paintGL()
     m_scene.overlay.clear();
     if (const auto g = gizmo())
         m_scene.overlay = gizmoCurves(*g, m_activeHandle);
-    if (m_renderer)
+    if (m_renderer) {
         m_renderer->render(m_scene, m_camera, int(width() * devicePixelRatio()), int(height() * devicePixelRatio()));
+        for (const std::string& warning : m_renderer->takeWarnings())
+            emit renderWarning(QString::fromStdString(warning));
+    }
     paintLabels();
 }
 

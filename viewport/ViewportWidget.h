@@ -43,6 +43,9 @@ public:
     const Scene& scene() const { return m_scene; }
     // Vertices the renderer has sent to the GPU (0 before the first frame).
     std::uint64_t verticesUploaded() const;
+    // Mesh vertices and vertex weights sent so far: posing sends neither.
+    std::uint64_t meshVerticesUploaded() const;
+    std::uint64_t weightVerticesUploaded() const;
     Camera& camera() { return m_camera; }
     const Camera& camera() const { return m_camera; }
     void frameAll();
@@ -84,6 +87,8 @@ signals:
     void gizmoDragged(quint32 target, const glm::dmat4& world);
     void gizmoDragFinished(quint32 target);
     void viewChanged(int view); // a CameraView
+    // A drawing problem the rigger should know of (an unreadable texture), once each.
+    void renderWarning(const QString& message);
 
 protected:
     void initializeGL() override;

@@ -1,5 +1,7 @@
 #include "Renderer.h"
 
+#include "MeshRenderer.h"
+
 #include <epoxy/gl.h>
 
 #include <cstdint>
@@ -99,7 +101,7 @@ struct Renderer::GlState {
     }
 };
 
-Renderer::Renderer() = default;
+Renderer::Renderer() : m_meshes(std::make_unique<MeshRenderer>()) {}
 Renderer::~Renderer() = default; // GL objects need a context: call release() first
 
 bool Renderer::isInitialized() const { return m_gl && m_gl->program; }
@@ -145,6 +147,8 @@ bool Renderer::initialize(std::string& error)
     }
     glBindVertexArray(0);
     gl->upload(Grid, gridVertices());
+    if (!m_meshes->initialize(error))
+        return false;
     m_gl = std::move(gl);
     return true;
 }
@@ -159,9 +163,13 @@ void Renderer::release()
     }
     glDeleteProgram(m_gl->program);
     m_gl.reset();
+    m_meshes->release();
 }
 
 std::uint64_t Renderer::verticesUploaded() const { return m_gl ? m_gl->uploads : 0; }
+std::uint64_t Renderer::meshVerticesUploaded() const { return m_meshes->vertexUploads(); }
+std::uint64_t Renderer::weightVerticesUploaded() const { return m_meshes->weightUploads(); }
+std::vector<std::string> Renderer::takeWarnings() { return m_meshes->takeWarnings(); }
 
 namespace {
 
@@ -251,6 +259,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     std::vector<Vertex> overlay;
     pushCurves(scene.overlay, overlay, false);
     m_gl->upload(Overlay, overlay);
+    m_meshes->prepare(scene); // vertices once, weights when they change, the palette every frame
 
     glUseProgram(m_gl->program);
     const glm::mat4 viewProjection(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
@@ -268,10 +277,20 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     glUniform1f(m_gl->alpha, 1.0f);
     glEnable(GL_DEPTH_TEST);
     draw(Grid, GL_LINES, 1.0f);
-    if (m_gl->buffers[Reference].count > 0) { // see-through: guides stay visible inside the model
+    const glm::mat4 meshViewProjection(viewProjection);
+    const glm::vec3 viewDirection(glm::normalize(camera.target - camera.position()));
+    m_meshes->draw(scene, meshViewProjection, viewDirection, false); // skinned: opaque
+    glUseProgram(m_gl->program);
+    const bool seeThroughMeshes = m_meshes->hasSeeThrough(scene);
+    if (m_gl->buffers[Reference].count > 0 || seeThroughMeshes) { // see-through: guides stay visible inside the model
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
+        if (seeThroughMeshes) {
+            m_meshes->draw(scene, meshViewProjection, viewDirection, true);
+            glUseProgram(m_gl->program);
+            glBindVertexArray(0);
+        }
         glUniform1f(m_gl->alpha, 0.12f);
         draw(Reference, GL_TRIANGLES, 1.0f);
         glUniform1f(m_gl->alpha, 1.0f);

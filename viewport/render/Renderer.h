@@ -1,6 +1,7 @@
 #pragma once
-// OpenGL 3.3 core renderer for a Scene: ground grid, guide joints and bones,
-// controller curves, skin joints. Host-agnostic: the caller (a Qt widget or a
+// OpenGL 3.3 core renderer for a Scene: ground grid, the character's meshes
+// (skinned on the GPU, MeshRenderer.h), guide joints and bones, controller
+// curves, skin joints. Host-agnostic: the caller (a Qt widget or a
 // GLFW window) makes its context current before every call. GL functions come
 // from libepoxy, so no GL header leaks out of this library's .cpp files.
 #include "../Camera.h"
@@ -9,8 +10,11 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rs::viewport {
+
+class MeshRenderer;
 
 class Renderer {
 public:
@@ -30,11 +34,18 @@ public:
     // Vertices sent to the GPU so far: a frame that only moves the camera sends
     // the gizmo's alone (Scene::revision unchanged).
     std::uint64_t verticesUploaded() const;
+    // Mesh vertices (positions, normals, UVs) and vertex weights sent so far:
+    // a posed frame sends neither, only the palette.
+    std::uint64_t meshVerticesUploaded() const;
+    std::uint64_t weightVerticesUploaded() const;
+    // Problems met while drawing (an unreadable texture), each reported once.
+    std::vector<std::string> takeWarnings();
 
 private:
     void uploadScene(const Scene& scene);
     struct GlState;
     std::unique_ptr<GlState> m_gl;
+    std::unique_ptr<MeshRenderer> m_meshes;
 };
 
 } // namespace rs::viewport

@@ -1,0 +1,491 @@
+#include "MeshRenderer.h"
+
+#include <QImage>
+
+#include <epoxy/gl.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <array>
+#include <map>
+
+namespace rs::viewport {
+
+namespace {
+
+const char* kMeshVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec2 uv;
+layout(location = 3) in uvec4 joints;  // the 4 largest influences, largest first
+layout(location = 4) in vec4 weights;  // summing to 1, or all 0 (no influence)
+uniform mat4 viewProjection;
+uniform samplerBuffer palette; // linear: 4 texels (matrix columns) per bone; dual quaternion: 2 (real, dual)
+uniform int skinning;          // 0 bind pose, 1 linear blend, 2 dual quaternion
+uniform int weightDisplay;     // 0 material, 1 one bone's weight, 2 dominant bone
+uniform int weightBone;
+out vec3 worldNormal;
+out vec2 texCoord;
+out vec3 weightColor;
+
+mat4 boneMatrix(uint j) {
+    int i = int(j) * 4;
+    return mat4(texelFetch(palette, i), texelFetch(palette, i + 1), texelFetch(palette, i + 2), texelFetch(palette, i + 3));
+}
+vec3 rotate(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
+vec3 heat(float w) { return clamp(vec3(4.0 * w - 2.0, 2.0 - abs(4.0 * w - 2.0), 2.0 - 4.0 * w), 0.0, 1.0); } // blue, cyan, green, yellow, red
+vec3 boneColor(uint j) { // golden-ratio hues: neighbouring bones differ
+    float h = fract(float(j) * 0.618034) * 6.0;
+    vec3 rgb = clamp(abs(mod(h + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);
+    return mix(vec3(1.0), rgb, 0.75) * 0.95;
+}
+
+void main() {
+    vec3 p = position;
+    vec3 n = normal;
+    bool weighted = dot(weights, vec4(1.0)) > 1e-6;
+    if (skinning == 1 && weighted) {
+        mat4 m = weights.x * boneMatrix(joints.x) + weights.y * boneMatrix(joints.y) +
+                 weights.z * boneMatrix(joints.z) + weights.w * boneMatrix(joints.w);
+        p = (m * vec4(position, 1.0)).xyz;
+        n = mat3(m) * normal;
+    } else if (skinning == 2 && weighted) {
+        vec4 first = texelFetch(palette, int(joints.x) * 2);
+        vec4 real = vec4(0.0), dual = vec4(0.0);
+        for (int k = 0; k < 4; ++k) {
+            int i = int(joints[k]) * 2;
+            vec4 r = texelFetch(palette, i);
+            float w = dot(r, first) < 0.0 ? -weights[k] : weights[k]; // antipodality: blend the shorter way round
+            real += w * r;
+            dual += w * texelFetch(palette, i + 1);
+        }
+        float len = max(length(real), 1e-8);
+        real /= len;
+        dual /= len;
+        vec3 t = 2.0 * (real.w * dual.xyz - dual.w * real.xyz + cross(real.xyz, dual.xyz));
+        p = rotate(real, position) + t;
+        n = rotate(real, normal);
+    }
+    if (weightDisplay == 1) {
+        float w = 0.0;
+        for (int k = 0; k < 4; ++k)
+            if (int(joints[k]) == weightBone) w += weights[k];
+        weightColor = heat(w);
+    } else if (weightDisplay == 2) {
+        weightColor = weighted ? boneColor(joints.x) : vec3(0.35);
+    } else {
+        weightColor = vec3(0.0);
+    }
+    worldNormal = n;
+    texCoord = uv;
+    gl_Position = viewProjection * vec4(p, 1.0);
+}
+)";
+
+const char* kMeshFragmentShader = R"(#version 330 core
+in vec3 worldNormal;
+in vec2 texCoord;
+in vec3 weightColor;
+uniform vec3 baseColor;
+uniform sampler2D baseTexture;
+uniform bool hasTexture;
+uniform int weightDisplay;
+uniform vec3 viewDirection;
+uniform float alpha;
+out vec4 fragmentColor;
+void main() {
+    float l = length(worldNormal);
+    float facing = l > 1e-8 ? abs(dot(worldNormal / l, viewDirection)) : 1.0;
+    float light = 0.35 + 0.65 * facing; // a headlight; both faces lit (open meshes, see-through passes)
+    vec3 albedo = weightDisplay != 0 ? weightColor
+                                     : baseColor * (hasTexture ? texture(baseTexture, texCoord).rgb : vec3(1.0));
+    fragmentColor = vec4(albedo * light, alpha);
+}
+)";
+
+struct MeshVertex {
+    float position[3], normal[3], uv[2];
+};
+struct MeshInfluence {
+    std::uint16_t joints[4];
+    float weights[4];
+};
+
+GLuint compileShader(GLenum type, const char* source, std::string& error)
+{
+    GLuint shader = glCreateShader(type);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048];
+        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+        error = std::string("mesh shader compilation failed: ") + log;
+        glDeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+// Area-weighted vertex normals, for a mesh that brings none.
+std::vector<glm::vec3> computeNormals(const model::Mesh& mesh)
+{
+    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        if (a >= normals.size() || b >= normals.size() || c >= normals.size())
+            continue;
+        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        normals[a] += n;
+        normals[b] += n;
+        normals[c] += n;
+    }
+    for (glm::vec3& n : normals)
+        n = glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f, 1.0f, 0.0f);
+    return normals;
+}
+
+} // namespace
+
+struct MeshRenderer::Gl {
+    GLuint program = 0;
+    GLint viewProjection = -1, palette = -1, skinning = -1, weightDisplay = -1, weightBone = -1, baseColor = -1,
+          baseTexture = -1, hasTexture = -1, viewDirection = -1, alpha = -1, weightDisplayFragment = -1;
+    GLuint paletteBuffer = 0, paletteTexture = 0;
+    struct GpuMesh {
+        std::shared_ptr<const model::Model> model; // held: the key's address stays this model's
+        std::size_t mesh = 0;
+        std::shared_ptr<const model::MeshWeights> weights; // what the influence buffer holds
+        bool hasInfluences = false;
+        GLuint vao = 0, vertices = 0, influences = 0, indices = 0;
+        GLsizei indexCount = 0;
+        bool used = false;
+    };
+    std::vector<GpuMesh> meshes;
+    std::map<std::string, GLuint> textures; // by absolute path; 0: could not be read (warned once)
+    std::vector<std::string> warnings;
+    std::uint64_t vertexUploads = 0, weightUploads = 0;
+
+    GpuMesh& meshFor(const SceneMesh& m);
+    void uploadWeights(GpuMesh& gpu, const SceneMesh& m);
+    GLuint texture(const std::string& path);
+    void free(GpuMesh& gpu)
+    {
+        glDeleteBuffers(1, &gpu.vertices);
+        glDeleteBuffers(1, &gpu.influences);
+        glDeleteBuffers(1, &gpu.indices);
+        glDeleteVertexArrays(1, &gpu.vao);
+    }
+};
+
+MeshRenderer::MeshRenderer() = default;
+MeshRenderer::~MeshRenderer() = default;
+
+bool MeshRenderer::initialize(std::string& error)
+{
+    auto gl = std::make_unique<Gl>();
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, kMeshVertexShader, error);
+    const GLuint fs = vs ? compileShader(GL_FRAGMENT_SHADER, kMeshFragmentShader, error) : 0;
+    if (!vs || !fs)
+        return false;
+    gl->program = glCreateProgram();
+    glAttachShader(gl->program, vs);
+    glAttachShader(gl->program, fs);
+    glLinkProgram(gl->program);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(gl->program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        error = "mesh shader link failed";
+        glDeleteProgram(gl->program);
+        return false;
+    }
+    const GLuint p = gl->program;
+    gl->viewProjection = glGetUniformLocation(p, "viewProjection");
+    gl->palette = glGetUniformLocation(p, "palette");
+    gl->skinning = glGetUniformLocation(p, "skinning");
+    gl->weightDisplay = glGetUniformLocation(p, "weightDisplay");
+    gl->weightBone = glGetUniformLocation(p, "weightBone");
+    gl->baseColor = glGetUniformLocation(p, "baseColor");
+    gl->baseTexture = glGetUniformLocation(p, "baseTexture");
+    gl->hasTexture = glGetUniformLocation(p, "hasTexture");
+    gl->viewDirection = glGetUniformLocation(p, "viewDirection");
+    gl->alpha = glGetUniformLocation(p, "alpha");
+    glGenBuffers(1, &gl->paletteBuffer);
+    glGenTextures(1, &gl->paletteTexture);
+    glBindBuffer(GL_TEXTURE_BUFFER, gl->paletteBuffer);
+    glBufferData(GL_TEXTURE_BUFFER, 16 * sizeof(float), nullptr, GL_STREAM_DRAW);
+    glBindTexture(GL_TEXTURE_BUFFER, gl->paletteTexture);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, gl->paletteBuffer);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    m_gl = std::move(gl);
+    return true;
+}
+
+void MeshRenderer::release()
+{
+    if (!m_gl)
+        return;
+    for (auto& mesh : m_gl->meshes)
+        m_gl->free(mesh);
+    for (auto& [path, texture] : m_gl->textures)
+        if (texture)
+            glDeleteTextures(1, &texture);
+    glDeleteTextures(1, &m_gl->paletteTexture);
+    glDeleteBuffers(1, &m_gl->paletteBuffer);
+    glDeleteProgram(m_gl->program);
+    m_gl.reset();
+}
+
+std::uint64_t MeshRenderer::vertexUploads() const { return m_gl ? m_gl->vertexUploads : 0; }
+std::uint64_t MeshRenderer::weightUploads() const { return m_gl ? m_gl->weightUploads : 0; }
+
+std::vector<std::string> MeshRenderer::takeWarnings()
+{
+    std::vector<std::string> out;
+    if (m_gl)
+        out.swap(m_gl->warnings);
+    return out;
+}
+
+void MeshRenderer::packInfluences(const model::MeshWeights& weights, std::size_t vertexCount,
+                                  std::vector<std::uint16_t>& joints, std::vector<float>& shares)
+{
+    joints.assign(vertexCount * 4, 0);
+    shares.assign(vertexCount * 4, 0.0f);
+    const std::size_t weighted = std::min(vertexCount, weights.vertexCount());
+    std::vector<model::Influence> top;
+    for (std::size_t v = 0; v < weighted; ++v) {
+        top.assign(weights.begin(v), weights.end(v));
+        const std::size_t keep = std::min<std::size_t>(4, top.size());
+        std::partial_sort(top.begin(), top.begin() + std::ptrdiff_t(keep), top.end(),
+                          [](const model::Influence& a, const model::Influence& b) { return a.weight > b.weight; });
+        float total = 0.0f;
+        for (std::size_t k = 0; k < keep; ++k)
+            total += std::max(0.0f, top[k].weight);
+        if (total <= 0.0f)
+            continue;
+        for (std::size_t k = 0; k < keep; ++k) {
+            joints[v * 4 + k] = std::uint16_t(std::min<std::uint32_t>(top[k].joint, 0xffff));
+            shares[v * 4 + k] = std::max(0.0f, top[k].weight) / total;
+        }
+    }
+}
+
+void MeshRenderer::toDualQuaternion(const glm::mat4& m, glm::vec4& real, glm::vec4& dual)
+{
+    glm::mat3 rotation(m);
+    for (int c = 0; c < 3; ++c) { // drop scale: dual quaternions are rigid
+        const float length = glm::length(rotation[c]);
+        if (length > 1e-12f)
+            rotation[c] /= length;
+    }
+    const glm::quat q = glm::normalize(glm::quat_cast(rotation));
+    const glm::vec3 t(m[3]);
+    const glm::quat d = glm::quat(0.0f, t.x, t.y, t.z) * q * 0.5f;
+    real = {q.x, q.y, q.z, q.w};
+    dual = {d.x, d.y, d.z, d.w};
+}
+
+MeshRenderer::Gl::GpuMesh& MeshRenderer::Gl::meshFor(const SceneMesh& m)
+{
+    for (GpuMesh& gpu : meshes)
+        if (gpu.model == m.model && gpu.mesh == m.mesh)
+            return gpu;
+    const model::Mesh& mesh = m.data();
+    GpuMesh gpu;
+    gpu.model = m.model;
+    gpu.mesh = m.mesh;
+    const std::vector<glm::vec3> computed = mesh.normals.size() == mesh.positions.size() ? std::vector<glm::vec3>{}
+                                                                                           : computeNormals(mesh);
+    const std::vector<glm::vec3>& normals = computed.empty() ? mesh.normals : computed;
+    std::vector<MeshVertex> vertices(mesh.positions.size());
+    for (std::size_t v = 0; v < vertices.size(); ++v) {
+        const glm::vec3& p = mesh.positions[v];
+        const glm::vec3& n = normals[v];
+        const glm::vec2 uv = v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f);
+        vertices[v] = {{p.x, p.y, p.z}, {n.x, n.y, n.z}, {uv.x, uv.y}};
+    }
+    std::vector<std::uint32_t> indices;
+    indices.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) // a bad index drops its triangle, not the draw
+        if (mesh.indices[t] < vertices.size() && mesh.indices[t + 1] < vertices.size() && mesh.indices[t + 2] < vertices.size())
+            indices.insert(indices.end(), mesh.indices.begin() + std::ptrdiff_t(t), mesh.indices.begin() + std::ptrdiff_t(t + 3));
+    glGenVertexArrays(1, &gpu.vao);
+    glGenBuffers(1, &gpu.vertices);
+    glGenBuffers(1, &gpu.influences);
+    glGenBuffers(1, &gpu.indices);
+    glBindVertexArray(gpu.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(MeshVertex)), vertices.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex), reinterpret_cast<void*>(offsetof(MeshVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex), reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(MeshVertex), reinterpret_cast<void*>(offsetof(MeshVertex, uv)));
+    glBindBuffer(GL_ARRAY_BUFFER, gpu.influences);
+    glVertexAttribIPointer(3, 4, GL_UNSIGNED_SHORT, sizeof(MeshInfluence), reinterpret_cast<void*>(offsetof(MeshInfluence, joints)));
+    glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, sizeof(MeshInfluence), reinterpret_cast<void*>(offsetof(MeshInfluence, weights)));
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    gpu.indexCount = GLsizei(indices.size());
+    vertexUploads += vertices.size();
+    meshes.push_back(std::move(gpu));
+    return meshes.back();
+}
+
+void MeshRenderer::Gl::uploadWeights(GpuMesh& gpu, const SceneMesh& m)
+{
+    gpu.weights = m.weights;
+    const std::size_t count = m.data().vertexCount();
+    gpu.hasInfluences = m.weights && m.weights->vertexCount() == count;
+    glBindVertexArray(gpu.vao);
+    if (gpu.hasInfluences) {
+        std::vector<std::uint16_t> joints;
+        std::vector<float> shares;
+        packInfluences(*m.weights, count, joints, shares);
+        std::vector<MeshInfluence> packed(count);
+        for (std::size_t v = 0; v < count; ++v)
+            for (int k = 0; k < 4; ++k) {
+                packed[v].joints[k] = joints[v * 4 + std::size_t(k)];
+                packed[v].weights[k] = shares[v * 4 + std::size_t(k)];
+            }
+        glBindBuffer(GL_ARRAY_BUFFER, gpu.influences);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(packed.size() * sizeof(MeshInfluence)), packed.data(), GL_STATIC_DRAW);
+        glEnableVertexAttribArray(3);
+        glEnableVertexAttribArray(4);
+        weightUploads += count;
+    } else { // the attributes' constant values: no influence
+        glDisableVertexAttribArray(3);
+        glDisableVertexAttribArray(4);
+    }
+    glBindVertexArray(0);
+}
+
+GLuint MeshRenderer::Gl::texture(const std::string& path)
+{
+    if (path.empty())
+        return 0;
+    auto known = textures.find(path);
+    if (known != textures.end())
+        return known->second;
+    GLuint id = 0;
+    QImage image(QString::fromStdString(path));
+    if (image.isNull()) {
+        warnings.push_back(path + ": warning: the texture cannot be read; the mesh is drawn in its material's base colour");
+    } else {
+        // GL's first row is the bottom (UV v = 0, as the model importer keeps it); QImage's is the top.
+        image = image.convertToFormat(QImage::Format_RGBA8888).mirrored();
+        glGenTextures(1, &id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, image.constBits());
+        glGenerateMipmap(GL_TEXTURE_2D);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    textures.emplace(path, id);
+    return id;
+}
+
+void MeshRenderer::prepare(const Scene& scene)
+{
+    if (!m_gl)
+        return;
+    for (auto& gpu : m_gl->meshes)
+        gpu.used = false;
+    for (const SceneMesh& m : scene.meshes) {
+        if (!m.model || m.mesh >= m.model->meshes.size())
+            continue;
+        const bool fresh = std::none_of(m_gl->meshes.begin(), m_gl->meshes.end(),
+                                        [&](const Gl::GpuMesh& g) { return g.model == m.model && g.mesh == m.mesh; });
+        Gl::GpuMesh& gpu = m_gl->meshFor(m);
+        gpu.used = true;
+        if (fresh || gpu.weights != m.weights)
+            m_gl->uploadWeights(gpu, m);
+        m_gl->texture(m.texturePath);
+    }
+    for (auto& gpu : m_gl->meshes) // a model no longer drawn frees its buffers
+        if (!gpu.used)
+            m_gl->free(gpu);
+    std::erase_if(m_gl->meshes, [](const Gl::GpuMesh& g) { return !g.used; });
+
+    // The palette, every frame: 4 texels per bone (linear) or 2 (dual quaternion).
+    std::vector<glm::vec4> texels;
+    texels.reserve(scene.palette.size() * 4);
+    for (const glm::mat4& m : scene.palette) {
+        if (scene.skinning == Skinning::DualQuaternion) {
+            glm::vec4 real, dual;
+            toDualQuaternion(m, real, dual);
+            texels.push_back(real);
+            texels.push_back(dual);
+        } else {
+            for (int c = 0; c < 4; ++c)
+                texels.push_back(m[c]);
+        }
+    }
+    if (texels.empty())
+        texels.push_back(glm::vec4(0.0f));
+    glBindBuffer(GL_TEXTURE_BUFFER, m_gl->paletteBuffer);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels.size() * sizeof(glm::vec4)), texels.data(), GL_STREAM_DRAW);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
+
+bool MeshRenderer::hasSeeThrough(const Scene& scene) const
+{
+    return std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const SceneMesh& m) { return !m.skinned; });
+}
+
+void MeshRenderer::draw(const Scene& scene, const glm::mat4& viewProjection, const glm::vec3& viewDirection, bool seeThrough)
+{
+    if (!m_gl || scene.meshes.empty())
+        return;
+    glUseProgram(m_gl->program);
+    glUniformMatrix4fv(m_gl->viewProjection, 1, GL_FALSE, &viewProjection[0][0]);
+    glUniform3fv(m_gl->viewDirection, 1, &viewDirection[0]);
+    glUniform1i(m_gl->palette, 1);
+    glUniform1i(m_gl->baseTexture, 0);
+    glUniform1f(m_gl->alpha, seeThrough ? 0.22f : 1.0f);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_BUFFER, m_gl->paletteTexture);
+    glActiveTexture(GL_TEXTURE0);
+    const bool dq = scene.skinning == Skinning::DualQuaternion;
+    for (const SceneMesh& m : scene.meshes) {
+        if (m.skinned == seeThrough)
+            continue;
+        auto gpu = std::find_if(m_gl->meshes.begin(), m_gl->meshes.end(),
+                                [&](const Gl::GpuMesh& g) { return g.model == m.model && g.mesh == m.mesh; });
+        if (gpu == m_gl->meshes.end() || gpu->indexCount == 0)
+            continue;
+        const bool weighted = gpu->hasInfluences;
+        glUniform1i(m_gl->skinning, m.skinned && weighted ? (dq ? 2 : 1) : 0);
+        glUniform1i(m_gl->weightDisplay, weighted ? int(scene.weightDisplay) : 0);
+        glUniform1i(m_gl->weightBone, scene.weightBone);
+        glUniform3fv(m_gl->baseColor, 1, &m.baseColor[0]);
+        const GLuint texture = m_gl->texture(m.texturePath);
+        glUniform1i(m_gl->hasTexture, texture != 0);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glBindVertexArray(gpu->vao);
+        if (!weighted) {
+            glVertexAttribI4ui(3, 0, 0, 0, 0);
+            glVertexAttrib4f(4, 0.0f, 0.0f, 0.0f, 0.0f);
+        }
+        glDrawElements(GL_TRIANGLES, gpu->indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+} // namespace rs::viewport
