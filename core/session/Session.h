@@ -24,12 +24,14 @@
 #include "model/Rig.h"
 #include "session/MirroredGuides.h"
 #include "skin/SkinBones.h"
+#include "skin/WeightTools.h"
 #include "templates/TemplateRegistry.h"
 
 #include <functional>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -188,6 +190,32 @@ public:
     void beginWeightStroke(const std::string& what);
     void endWeightStroke();
 
+    // --- weight painting (SessionPaint.cpp). Tools act on the bound,
+    // unchanged character meshes; every one keeps weights normalised and
+    // leaves locked joints alone, and is one undo step (a brush stroke too).
+    // Locks are by skin joint identity, so they hold across rebuilds.
+    const std::set<NodeKey>& lockedJoints() const { return m_lockedJoints; }
+    void setJointLocked(const NodeKey& joint, bool locked);
+    // Selected vertices (click, box), per characterMeshes() entry.
+    const std::map<std::size_t, std::vector<std::uint32_t>>& selectedVertices() const { return m_selectedVertices; }
+    void selectVertices(std::size_t mesh, std::vector<std::uint32_t> vertices, bool add);
+    void clearVertexSelection();
+    // One dab on character mesh `mesh`: `joint` (a skin bone's key) painted
+    // with `brush` (its joint field is set here). Inside a stroke when one is open.
+    Status paintWeights(std::size_t mesh, const NodeKey& joint, skin::Brush brush);
+    enum class WeightOperation { Smooth, Prune, Normalise, Limit };
+    // On the selected vertices, or every bound mesh's vertices when none is
+    // selected. `amount`: smooth strength (0 to 1), prune threshold, or the
+    // influence limit.
+    Status applyWeightOperation(WeightOperation operation, double amount);
+    // Mirrors every bound mesh's weights across x = 0, each skin joint swapped
+    // for its twin on the other branch; `fromPositive`: +x (the left of a
+    // character facing +z) is the source.
+    Status mirrorWeights(bool fromPositive = true);
+    // Copy the first selected vertex's weights; paste them onto every selected vertex.
+    Status copyVertexWeights();
+    Status pasteVertexWeights();
+
     // --- guide authoring (SessionGuide.cpp): joints are clicked (add toggles)
     // or box-selected; a drag is one transaction, previews rebuild the rig live.
     void selectGuideJoints(const std::vector<model::JointId>& joints, bool add);
@@ -251,7 +279,12 @@ private:
     // Keeps the character in step with a change before subscribers hear it.
     void followCharacter(const Change& change);
     void loadModels();
-    void matchMeshes();
+    // Pairs meshes with bindings; with `only`, carries just those bindings' weights again.
+    void matchMeshes(const std::vector<std::size_t>* only = nullptr);
+    const skin::Surface& surfaceOf(std::size_t mesh);
+    // Appends `key` to binding `b`'s joints in `edit` when it is not there; its index.
+    std::uint32_t jointIndex(edit::WeightEdit& edit, const NodeKey& key) const;
+    skin::WeightContext weightContext(std::size_t mesh, const model::MeshWeights& weights);
     void updatePalette();
 
     model::GuideDocument m_document;
@@ -303,6 +336,10 @@ private:
     std::vector<Mat4> m_bindInverse; // per skin bone
     std::vector<Mat4> m_skinPalette;
     std::string m_reportedCharacter; // the character messages last reported
+    std::map<const model::Mesh*, std::shared_ptr<const skin::Surface>> m_surfaces; // welded, for the tools
+    std::set<NodeKey> m_lockedJoints;
+    std::map<std::size_t, std::vector<std::uint32_t>> m_selectedVertices;
+    std::vector<std::pair<NodeKey, float>> m_copiedWeights;
 };
 
 } // namespace rs::session

@@ -31,8 +31,11 @@ void Session::setModelLoader(ModelLoader loader)
 void Session::followCharacter(const Change& change)
 {
     const bool models = change.hasAny(ChangeKind::Document | ChangeKind::Models);
-    if (models)
+    if (models) {
         loadModels();
+        m_surfaces.clear(); // keyed by mesh address: a reloaded model may reuse one
+        m_selectedVertices.clear();
+    }
     if (models || change.hasAny(ChangeKind::Rig | ChangeKind::Weights)) {
         std::vector<skin::SkinBone> bones;
         if (m_rig)
@@ -43,8 +46,10 @@ void Session::followCharacter(const Change& change)
         m_bindInverse.clear();
         for (const skin::SkinBone& bone : m_skinBones)
             m_bindInverse.push_back(glm::inverse(m_rig->nodes[bone.node].worldMatrix));
-        if (models || bonesChanged || change.has(ChangeKind::Weights))
+        if (models || bonesChanged)
             matchMeshes();
+        else if (change.has(ChangeKind::Weights))
+            matchMeshes(change.bindings.empty() ? nullptr : &change.bindings); // a weight edit: only its meshes again
     }
     if (models || change.hasAny(ChangeKind::Rig | ChangeKind::Evaluation | ChangeKind::Weights))
         updatePalette();
@@ -83,8 +88,36 @@ void Session::loadModels()
 // Pairs every mesh with its binding (the n-th mesh of a name with the n-th
 // record of it) and carries the weights onto the skin bones. Reports what
 // does not apply: a changed mesh, a record without its mesh, a gone joint.
-void Session::matchMeshes()
+void Session::matchMeshes(const std::vector<std::size_t>* only)
 {
+    // Only some bindings changed (a weight edit): carry just their weights
+    // again, unless a binding is new to a mesh or its weights bring a message
+    // (a gone joint): then everything is paired and reported again.
+    if (only && !m_skinBones.empty()) {
+        std::vector<std::pair<CharacterMesh*, model::MeshWeights>> updated;
+        bool whole = false;
+        for (std::size_t b : *only) {
+            auto mesh = std::find_if(m_characterMeshes.begin(), m_characterMeshes.end(),
+                                     [&](const CharacterMesh& m) { return m.binding == int(b); });
+            if (mesh == m_characterMeshes.end() || b >= m_document.bindings.size()) {
+                whole = true;
+                break;
+            }
+            if (mesh->changed)
+                continue;
+            auto retargeted = skin::retargetWeights(m_document.bindings[b].weights, m_skinBones, m_document.bindings[b].mesh);
+            if (!retargeted || !retargeted.diagnostics().empty()) {
+                whole = true;
+                break;
+            }
+            updated.emplace_back(&*mesh, retargeted.take());
+        }
+        if (!whole) {
+            for (auto& [mesh, weights] : updated)
+                mesh->weights = std::make_shared<const model::MeshWeights>(std::move(weights));
+            return;
+        }
+    }
     m_characterMeshes.clear();
     Diagnostics notes;
     std::vector<bool> used(m_document.bindings.size(), false);

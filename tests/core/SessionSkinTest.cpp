@@ -277,3 +277,96 @@ TEST(SessionSkin, WeightsAreSavedBesideTheGuideAndLoadedBack)
     EXPECT_TRUE(test::succeeded(io::loadGuideWeights(folder + "/other.yml", none))) << "no file: no weights";
     std::filesystem::remove_all(folder);
 }
+
+TEST(SessionSkin, PaintingIsOneStepPerStrokeAndRespectsLocks)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::Mesh& data = f.s.characterMeshes()[0].data(f.s.models());
+    const NodeKey hand = f.s.skinBones()[boneOf(f.s, "arm.L::skin.limb.2")].key;
+    skin::Brush brush;
+    brush.mode = skin::BrushMode::Add;
+    brush.radius = 0.06;
+    brush.strength = 1.0;
+    brush.falloff = skin::Falloff::Constant;
+    brush.vertex = 0; // the shoulder ring
+    brush.centre = Vec3(data.positions[0]);
+    const std::size_t steps = f.s.history().size();
+    f.s.beginWeightStroke("Paint weights");
+    ASSERT_TRUE(test::succeeded(f.s.paintWeights(0, hand, brush)));
+    brush.vertex = 1;
+    brush.centre = Vec3(data.positions[1]);
+    ASSERT_TRUE(test::succeeded(f.s.paintWeights(0, hand, brush)));
+    f.s.endWeightStroke();
+    EXPECT_EQ(f.s.history().size(), steps + 1);
+    const model::MeshWeights& applied = *f.s.characterMeshes()[0].weights;
+    const std::uint32_t handBone = std::uint32_t(boneOf(f.s, "arm.L::skin.limb.2"));
+    EXPECT_EQ(std::vector<model::Influence>(applied.begin(0), applied.end(0)), (std::vector<model::Influence>{{handBone, 1.0f}}));
+
+    f.s.history().undo();
+    f.s.setJointLocked(hand, true);
+    EXPECT_NE(test::refusal(f.s.paintWeights(0, hand, brush)), "") << "a locked joint is not painted";
+    f.s.setJointLocked(hand, false);
+
+    // Operations on the selected vertices only, one step each.
+    f.s.selectVertices(0, {0, 1, 2}, false);
+    ASSERT_TRUE(test::succeeded(f.s.applyWeightOperation(session::Session::WeightOperation::Limit, 1)));
+    EXPECT_EQ(f.s.history().undoText(), "Limit influences");
+    const model::MeshWeights& limited = f.s.document().bindings[0].weights;
+    for (std::uint32_t v : {0u, 1u, 2u})
+        EXPECT_EQ(limited.end(v) - limited.begin(v), 1);
+    EXPECT_NE(test::refusal(f.s.applyWeightOperation(session::Session::WeightOperation::Limit, 1)), "") << "no change, no step";
+
+    // Copy vertex 0's weights onto the far ring.
+    f.s.selectVertices(0, {0}, false);
+    ASSERT_TRUE(test::succeeded(f.s.copyVertexWeights()));
+    const std::uint32_t last = std::uint32_t(data.vertexCount() - 1);
+    f.s.selectVertices(0, {last}, false);
+    ASSERT_TRUE(test::succeeded(f.s.pasteVertexWeights()));
+    const model::MeshWeights& pasted = f.s.document().bindings[0].weights;
+    EXPECT_EQ(std::vector<model::Influence>(pasted.begin(last), pasted.end(last)),
+              std::vector<model::Influence>(pasted.begin(0), pasted.end(0)));
+}
+
+TEST(SessionSkin, MirroringCopiesTheLeftArmsWeightsOntoTheRightWithTwinJoints)
+{
+    Fixture f;
+    // Both arms' sleeves in one mesh, bound, then the right one's weights spoiled.
+    const model::Mesh left = f.files.files[kArm].meshes[0];
+    model::Mesh both = left;
+    for (glm::vec3 p : left.positions)
+        both.positions.emplace_back(-p.x, p.y, p.z);
+    for (std::uint32_t i : left.indices)
+        both.indices.push_back(i + std::uint32_t(left.vertexCount()));
+    f.files.files[kArm].meshes[0] = both;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const std::uint32_t count = std::uint32_t(left.vertexCount());
+    std::vector<std::uint32_t> right;
+    for (std::uint32_t v = count; v < 2 * count; ++v)
+        right.push_back(v);
+    f.s.selectVertices(0, right, false);
+    ASSERT_TRUE(test::succeeded(f.s.applyWeightOperation(session::Session::WeightOperation::Limit, 1)));
+    f.s.clearVertexSelection();
+    ASSERT_TRUE(test::succeeded(f.s.mirrorWeights(true)));
+    EXPECT_EQ(f.s.history().undoText(), "Mirror weights +X to -X");
+    const model::MeshWeights& w = *f.s.characterMeshes()[0].weights;
+    const model::Rig& rig = *f.s.rig();
+    for (std::uint32_t v = 0; v < count; ++v) {
+        std::vector<std::pair<NodeKey, float>> l, r;
+        for (const model::Influence* i = w.begin(v); i != w.end(v); ++i) {
+            const auto twin = rig.nodes[*rig.find(w.joints[i->joint])].twin;
+            l.emplace_back(twin == model::kNoNode ? w.joints[i->joint] : rig.nodes[twin].key, i->weight);
+        }
+        for (const model::Influence* i = w.begin(v + count); i != w.end(v + count); ++i)
+            r.emplace_back(w.joints[i->joint], i->weight);
+        std::sort(l.begin(), l.end());
+        std::sort(r.begin(), r.end());
+        ASSERT_EQ(l.size(), r.size()) << "vertex " << v;
+        for (std::size_t k = 0; k < l.size(); ++k) {
+            EXPECT_EQ(l[k].first, r[k].first);
+            EXPECT_NEAR(l[k].second, r[k].second, 1e-6);
+        }
+    }
+}
