@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <set>
 
 namespace rs::io {
 
@@ -192,13 +193,24 @@ void declareConvention(aiScene& ai, const Convention& convention)
     ai.mMetaData->Set(i++, "OriginalUpAxisSign", int32_t(1));
 }
 
+// An image's name in the file: its file name, made unique among the scene's.
+std::string uniqueImageName(const std::string& name, std::set<std::string>& taken)
+{
+    std::string out = name.empty() ? "texture.png" : name;
+    for (int n = 2; !taken.insert(out).second; ++n)
+        out = std::to_string(n) + "_" + name;
+    return out;
+}
+
 // The scene's materials and a default one last (for meshes without one, and
-// because Assimp wants at least one). Texture images are embedded (Assimp
-// writes an embedded texture "*n" as the Video's Content) under their file
-// name, so the file is the whole export.
+// because Assimp wants at least one). Texture images are embedded: the
+// material names the image by file name and an embedded texture of that name
+// holds its bytes, which Assimp writes as the Video's Content, with the
+// Texture's and the Video's file names equal (Blender pairs them by name).
 void addMaterials(aiScene& ai, const ExportScene& scene)
 {
-    std::vector<const ExportMaterial*> textured;
+    std::vector<std::pair<const ExportMaterial*, std::string>> textured;
+    std::set<std::string> taken;
     ai.mNumMaterials = unsigned(scene.materials.size() + 1);
     ai.mMaterials = newArray<aiMaterial>(scene.materials.size() + 1);
     for (std::size_t i = 0; i <= scene.materials.size(); ++i) {
@@ -216,21 +228,21 @@ void addMaterials(aiScene& ai, const ExportScene& scene)
         material->AddProperty(&colour, 1, AI_MATKEY_COLOR_DIFFUSE);
         if (source.image.empty())
             continue;
-        const aiString texture("*" + std::to_string(textured.size()));
+        textured.emplace_back(&source, uniqueImageName(source.imageName, taken));
+        const aiString texture(textured.back().second);
         material->AddProperty(&texture, AI_MATKEY_TEXTURE_DIFFUSE(0));
-        textured.push_back(&source);
     }
     ai.mNumTextures = unsigned(textured.size());
     ai.mTextures = newArray<aiTexture>(textured.size());
     for (std::size_t t = 0; t < textured.size(); ++t) {
-        const std::string& bytes = textured[t]->image;
+        const std::string& bytes = textured[t].first->image;
         auto* texture = new aiTexture;
         texture->mWidth = unsigned(bytes.size());
         texture->mHeight = 0; // compressed: mWidth bytes of a file
-        const std::string extension = std::filesystem::path(textured[t]->imageName).extension().string();
+        const std::string extension = std::filesystem::path(textured[t].second).extension().string();
         std::snprintf(texture->achFormatHint, sizeof texture->achFormatHint, "%s",
                       extension.size() > 1 ? extension.substr(1, HINTMAXTEXTURELEN - 1).c_str() : "");
-        texture->mFilename = textured[t]->imageName;
+        texture->mFilename = textured[t].second;
         texture->pcData = new aiTexel[(bytes.size() + sizeof(aiTexel) - 1) / sizeof(aiTexel)]; // ~aiTexture delete[]s it
         std::copy(bytes.begin(), bytes.end(), reinterpret_cast<char*>(texture->pcData));
         ai.mTextures[t] = texture;
