@@ -121,7 +121,10 @@ Diagnostics EditorSession::exportRig(const io::ExportRequest& request, std::func
 {
     if (!rig())
         return {makeError({request.path, 0, 0}, "build the rig before exporting it")};
-    return io::runExport(*rig(), document().pose, request, std::move(progress));
+    io::ExportCharacter character{document().bindings, {}}; // the guide's models' meshes, bound
+    for (const session::LoadedModel& m : models())
+        character.models.push_back({m.path, m.model.get()});
+    return io::runExport(*rig(), document().pose, request, std::move(progress), character.models.empty() ? nullptr : &character);
 }
 
 model::InstanceId EditorSession::instanceNamed(const QString& name) const

@@ -7,6 +7,8 @@
 #include "io/AtomicFile.h"
 #include "io/ExportRequest.h"
 #include "io/GuideFile.h"
+#include "io/ModelImport.h"
+#include "io/WeightsFile.h"
 #include "io/RigDump.h"
 #include "io/ShapeFile.h"
 #include "io/TemplateFolders.h"
@@ -19,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 
 namespace rs::cli {
 
@@ -33,14 +36,17 @@ std::string usage()
     return "usage: rigsmith-cli build GUIDE [--posed] [--dump RIG.yml]\n"
            "                          [-o OUT.glb|OUT.gltf|OUT.fbx] [--preset gltf|unreal|unity] [--controllers] [--rom]\n"
            "                          [--current-pose] [--names unity|MAP.yml] [--fix-names] [--fix-weights] [--force]\n"
-           "                          [--proxy-mesh VERTICES] [--reference EXPORT.json]\n"
+           "                          [--proxy-mesh VERTICES] [--no-meshes] [--reference EXPORT.json]\n"
            "       (--posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
            "        -o exports for engines: --preset gltf (Y-up metres), unreal (FBX Z-up centimetres, a root\n"
            "        joint at the origin), unity (humanoid names); --controllers adds the controllers as tagged\n"
            "        nodes, --rom a range-of-motion clip, --current-pose the guide's pose on the nodes;\n"
            "        --names export names from a name map; the export validator's errors refuse -o unless\n"
-           "        --force; --fix-names and --fix-weights apply its safe fixes; --proxy-mesh binds a\n"
-           "        generated mesh of about VERTICES vertices; --reference writes what was exported as JSON)\n"
+           "        --force; --fix-names and --fix-weights apply its safe fixes; the guide's models' meshes are\n"
+           "        exported with their weights (GUIDE.weights, from skin bind), normals, UVs and materials\n"
+           "        unless --no-meshes; a mesh without weights is an error (--force: rigid on the root);\n"
+           "        --proxy-mesh binds a generated mesh of about VERTICES vertices; --reference writes\n"
+           "        what was exported as JSON)\n"
            "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
            "       rigsmith-cli add GUIDE.yml TEMPLATE [--under INSTANCE[:HOOK]] [--name NAME] [--at X,Y,Z] [--set OPTION=VALUE]...\n"
            "       rigsmith-cli model add GUIDE.yml FILE   (a character model: OBJ, FBX, glTF, Collada...)\n"
@@ -58,6 +64,7 @@ namespace {
 struct BuildArguments {
     std::string guide, dump;
     bool posed = false;
+    bool meshes = true;
     io::ExportRequest exportRequest;
 };
 
@@ -75,6 +82,7 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
         else if (a == "--controllers") e.controllers = true;
         else if (a == "--rom") e.rangeOfMotion = true;
         else if (a == "--current-pose") e.currentPose = true;
+        else if (a == "--no-meshes") b.meshes = false;
         else if (a == "--preset" && hasValue) {
             const auto preset = io::presetNamed(args[++i]);
             if (!preset) {
@@ -116,12 +124,42 @@ int report(const Diagnostics& d, int status)
     return hasErrors(d) ? 1 : status;
 }
 
-int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, const io::ExportRequest& request, int status)
+// The guide's models and weights, as the editor's session holds them. A model
+// that cannot be read stays in the list without its meshes (the export says so).
+struct LoadedCharacter {
+    std::vector<std::unique_ptr<model::Model>> models;
+    io::ExportCharacter character;
+};
+
+LoadedCharacter loadCharacter(const std::string& guidePath, model::GuideDocument guide)
 {
+    LoadedCharacter out;
+    if (guide.models.empty())
+        return out;
+    const auto start = std::chrono::steady_clock::now();
+    const Status weights = io::loadGuideWeights(guidePath, guide);
+    print(weights.diagnostics());
+    for (const std::string& path : guide.models) {
+        auto read = io::importModel(path);
+        print(read.diagnostics());
+        out.models.push_back(read ? std::make_unique<model::Model>(read.take()) : nullptr);
+        out.character.models.push_back({path, out.models.back().get()});
+    }
+    out.character.bindings = std::move(guide.bindings);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::cerr << "read " << guide.models.size() << " model(s) and " << out.character.bindings.size() << " mesh weight record(s) in "
+              << ms << " ms\n";
+    return out;
+}
+
+int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, const BuildArguments& b, int status)
+{
+    const io::ExportRequest& request = b.exportRequest;
     if (request.path.empty() && request.referencePath.empty())
         return status;
+    const LoadedCharacter loaded = b.meshes ? loadCharacter(b.guide, guide) : LoadedCharacter{};
     const auto start = std::chrono::steady_clock::now();
-    const Diagnostics d = io::runExport(rig, guide.pose, request);
+    const Diagnostics d = io::runExport(rig, guide.pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     status = report(d, status);
     if (status == 0 && !request.path.empty())
@@ -165,7 +203,7 @@ int runBuild(const std::vector<std::string>& args)
         else
             status = report(io::writeFileAtomically(b.dump, text).diagnostics(), status);
     }
-    return exportBuiltRig(rig, *guide, b.exportRequest, status);
+    return exportBuiltRig(rig, *guide, b, status);
 }
 
 int runCheckTemplates(const std::vector<std::string>& args)

@@ -9,8 +9,36 @@ namespace rs::io {
 
 namespace {
 
+// The character's meshes and materials into `meshes`/`materials`; false when
+// its errors refuse the export (they are in `report`, and nothing is written).
+bool addCharacter(const model::Rig& rig, const ExportRequest& request, const ExportCharacter& character,
+                  std::vector<SkinnedMesh>& meshes, std::vector<ExportMaterial>& materials, Diagnostics& report)
+{
+    CharacterExport bound = characterExport(rig, character.bindings, character.models);
+    for (Diagnostic& d : bound.problems) {
+        if (d.where.file.empty())
+            d.where.file = request.path;
+        if (d.severity == Severity::Error && request.force) {
+            d.severity = Severity::Warning;
+            d.message = "exported anyway (forced): " + d.message;
+        }
+    }
+    report.insert(report.end(), bound.problems.begin(), bound.problems.end());
+    if (hasErrors(bound.problems))
+        return false;
+    // Materials follow any the proxy brought (none today), so indices shift by that.
+    const int first = int(materials.size());
+    for (SkinnedMesh& mesh : bound.meshes) {
+        if (mesh.material >= 0)
+            mesh.material += first;
+        meshes.push_back(std::move(mesh));
+    }
+    materials.insert(materials.end(), bound.materials.begin(), bound.materials.end());
+    return true;
+}
+
 Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
-                             std::function<bool(double)> progress)
+                             std::function<bool(double)> progress, const ExportCharacter* character)
 {
     if (request.proxyVertices > kMaxProxyVertices)
         return {makeError({request.path, 0, 0}, "a proxy mesh of " + std::to_string(request.proxyVertices) +
@@ -41,13 +69,19 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
         options.names = &names;
 
     std::vector<SkinnedMesh> meshes;
+    std::vector<ExportMaterial> materials;
     if (request.proxyVertices > 0) {
         auto skeleton = model::extractSkeleton(rig);
         if (!skeleton)
             return skeleton.takeDiagnostics();
         meshes.push_back(proxyMesh(*skeleton, request.proxyVertices));
-        options.meshes = &meshes;
     }
+    if (character && !addCharacter(rig, request, *character, meshes, materials, report))
+        return report;
+    if (!meshes.empty())
+        options.meshes = &meshes;
+    if (!materials.empty())
+        options.materials = &materials;
     if (!request.referencePath.empty()) {
         auto prepared = prepareExport(rig, options);
         if (!prepared.scene)
@@ -65,10 +99,10 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
 } // namespace
 
 Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
-                      std::function<bool(double)> progress)
+                      std::function<bool(double)> progress, const ExportCharacter* character)
 {
-    try { // the reference JSON and the proxy mesh are made here, outside exportRig's guard
-        return runExportOrThrow(rig, pose, request, std::move(progress));
+    try { // the reference JSON and the meshes are made here, outside exportRig's guard
+        return runExportOrThrow(rig, pose, request, std::move(progress), character);
     } catch (const std::exception& e) {
         return {makeError({request.path, 0, 0}, std::string("export failed: ") + e.what())};
     }

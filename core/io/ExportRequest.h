@@ -1,9 +1,11 @@
 #pragma once
 // One export as the CLI and the editor's Export dialog ask for it, by value:
 // the path (format from the extension), the preset and options, the name map
-// ("unity" or a YAML file), and a generated proxy mesh until mesh binding
-// exists. runExport turns it into io::ExportOptions and runs io::exportRig.
+// ("unity" or a YAML file), a generated proxy mesh for a rig without a
+// character. runExport turns it into io::ExportOptions, adds the character's
+// bound meshes (io/CharacterExport.h) and runs io::exportRig.
 #include "base/Diagnostic.h"
+#include "io/CharacterExport.h"
 #include "io/ExportScene.h"
 #include "model/GuideDocument.h"
 #include "model/Rig.h"
@@ -31,8 +33,18 @@ struct ExportRequest {
     std::string referencePath;      // when set, also writes exportReferenceJson there
 };
 
-// `pose` is the guide's pose (used with currentPose). `progress` as in ExportOptions.
+// The character an export carries: the guide's weight records and its models
+// as read (the editor's session has them; the CLI reads them).
+struct ExportCharacter {
+    std::vector<model::MeshBinding> bindings;
+    std::vector<CharacterModel> models;
+};
+
+// `pose` is the guide's pose (used with currentPose). `progress` as in
+// ExportOptions. With a `character`, its meshes are exported bound to the
+// rig; its errors (a mesh without weights...) refuse the export unless forced,
+// like the validator's.
 Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
-                      std::function<bool(double)> progress = {});
+                      std::function<bool(double)> progress = {}, const ExportCharacter* character = nullptr);
 
 } // namespace rs::io

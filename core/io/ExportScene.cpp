@@ -251,6 +251,8 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
             }
     }
     ExportScene scene = sceneFrom(rig, skeleton, std::move(meshes));
+    if (options.materials)
+        scene.materials = *options.materials;
     Sampler sampler{scene, {}, {}};
     for (const auto& joint : skeleton.joints)
         sampler.jointNodes.push_back(joint.node);

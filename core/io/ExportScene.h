@@ -33,6 +33,18 @@ enum class ExportPreset {
 std::optional<ExportPreset> presetNamed(const std::string& name); // "gltf", "unreal", "unity"
 const char* presetName(ExportPreset preset);
 
+// A material of the exported meshes: a base colour and, when the model has
+// one, the base colour texture's image, read once by io/CharacterExport.h (a
+// file beside the model, or an image embedded in the model file).
+struct ExportMaterial {
+    std::string name;
+    glm::vec3 baseColor{0.8f};  // linear RGB, 0..1
+    std::string imageName;      // the image's file name ("brown_eye.png"); empty: no texture
+    std::string imagePath;      // the image file, absolute; empty when the image came from inside the model
+    std::string image;          // the image's bytes; empty: no texture
+    std::string mimeType;       // "image/png" or "image/jpeg" (what glTF takes); empty for other formats
+};
+
 struct ExportOptions {
     ExportPreset preset = ExportPreset::Gltf;
     const NameMap* names = nullptr;               // export names; replaces the preset's map
@@ -43,6 +55,7 @@ struct ExportOptions {
     const model::PoseValues* pose = nullptr;      // the current pose on the nodes; bind pose unchanged
     bool rangeOfMotion = false;                   // a clip rotating each controller in turn
     const std::vector<SkinnedMesh>* meshes = nullptr; // bound meshes (bind pose, world space)
+    const std::vector<ExportMaterial>* materials = nullptr; // what the meshes' `material` indexes
     std::string generator = "Rigsmith";
     // Called with the fraction done (0..1); returning false cancels the export.
     std::function<bool(double)> progress;
@@ -85,6 +98,7 @@ struct ExportScene {
     std::vector<ExportJoint> joints; // parents first
     std::vector<ExportController> controllers; // parents first
     std::vector<SkinnedMesh> meshes; // joint indices into `joints`
+    std::vector<ExportMaterial> materials; // indexed by SkinnedMesh::material
     std::vector<ExportClip> clips;
 };
 

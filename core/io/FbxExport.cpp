@@ -6,7 +6,10 @@
 #include <assimp/Exporter.hpp>
 #include <assimp/scene.h>
 
+#include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <set>
 
 namespace rs::io {
 
@@ -64,7 +67,9 @@ aiMesh* makeMesh(const SkinnedMesh& mesh, const ExportScene& scene)
     auto* out = new aiMesh;
     out->mName = mesh.name;
     out->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
-    out->mMaterialIndex = 0;
+    // The scene's materials, then the default one (see makeMaterials).
+    const bool hasMaterial = mesh.material >= 0 && std::size_t(mesh.material) < scene.materials.size();
+    out->mMaterialIndex = unsigned(hasMaterial ? std::size_t(mesh.material) : scene.materials.size());
     out->mNumVertices = unsigned(mesh.vertexCount());
     out->mVertices = new aiVector3D[mesh.vertexCount()];
     for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
@@ -73,6 +78,12 @@ aiMesh* makeMesh(const SkinnedMesh& mesh, const ExportScene& scene)
         out->mNormals = new aiVector3D[mesh.vertexCount()];
         for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
             out->mNormals[v] = aiVector3D(mesh.normals[v].x, mesh.normals[v].y, mesh.normals[v].z);
+    }
+    if (!mesh.uvs.empty()) { // FBX UVs are OpenGL's, as imported
+        out->mNumUVComponents[0] = 2;
+        out->mTextureCoords[0] = new aiVector3D[mesh.vertexCount()];
+        for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+            out->mTextureCoords[0][v] = aiVector3D(mesh.uvs[v].x, mesh.uvs[v].y, 0.f);
     }
     out->mNumFaces = unsigned(mesh.indices.size() / 3);
     out->mFaces = new aiFace[out->mNumFaces];
@@ -182,15 +193,67 @@ void declareConvention(aiScene& ai, const Convention& convention)
     ai.mMetaData->Set(i++, "OriginalUpAxisSign", int32_t(1));
 }
 
+// An image's name in the file: its file name, made unique among the scene's.
+std::string uniqueImageName(const std::string& name, std::set<std::string>& taken)
+{
+    std::string out = name.empty() ? "texture.png" : name;
+    for (int n = 2; !taken.insert(out).second; ++n)
+        out = std::to_string(n) + "_" + name;
+    return out;
+}
+
+// The scene's materials and a default one last (for meshes without one, and
+// because Assimp wants at least one). Texture images are embedded: the
+// material names the image by file name and an embedded texture of that name
+// holds its bytes, which Assimp writes as the Video's Content, with the
+// Texture's and the Video's file names equal (Blender pairs them by name).
+void addMaterials(aiScene& ai, const ExportScene& scene)
+{
+    std::vector<std::pair<const ExportMaterial*, std::string>> textured;
+    std::set<std::string> taken;
+    ai.mNumMaterials = unsigned(scene.materials.size() + 1);
+    ai.mMaterials = newArray<aiMaterial>(scene.materials.size() + 1);
+    for (std::size_t i = 0; i <= scene.materials.size(); ++i) {
+        auto* material = new aiMaterial;
+        ai.mMaterials[i] = material;
+        if (i == scene.materials.size()) {
+            const aiString name("skin");
+            material->AddProperty(&name, AI_MATKEY_NAME);
+            continue;
+        }
+        const ExportMaterial& source = scene.materials[i];
+        const aiString name(source.name);
+        material->AddProperty(&name, AI_MATKEY_NAME);
+        const aiColor3D colour(source.baseColor.x, source.baseColor.y, source.baseColor.z);
+        material->AddProperty(&colour, 1, AI_MATKEY_COLOR_DIFFUSE);
+        if (source.image.empty())
+            continue;
+        textured.emplace_back(&source, uniqueImageName(source.imageName, taken));
+        const aiString texture(textured.back().second);
+        material->AddProperty(&texture, AI_MATKEY_TEXTURE_DIFFUSE(0));
+    }
+    ai.mNumTextures = unsigned(textured.size());
+    ai.mTextures = newArray<aiTexture>(textured.size());
+    for (std::size_t t = 0; t < textured.size(); ++t) {
+        const std::string& bytes = textured[t].first->image;
+        auto* texture = new aiTexture;
+        texture->mWidth = unsigned(bytes.size());
+        texture->mHeight = 0; // compressed: mWidth bytes of a file
+        const std::string extension = std::filesystem::path(textured[t].second).extension().string();
+        std::snprintf(texture->achFormatHint, sizeof texture->achFormatHint, "%s",
+                      extension.size() > 1 ? extension.substr(1, HINTMAXTEXTURELEN - 1).c_str() : "");
+        texture->mFilename = textured[t].second;
+        texture->pcData = new aiTexel[(bytes.size() + sizeof(aiTexel) - 1) / sizeof(aiTexel)]; // ~aiTexture delete[]s it
+        std::copy(bytes.begin(), bytes.end(), reinterpret_cast<char*>(texture->pcData));
+        ai.mTextures[t] = texture;
+    }
+}
+
 std::unique_ptr<aiScene> makeScene(const ExportScene& scene, const Convention& convention)
 {
     auto ai = std::make_unique<aiScene>();
     ai->mRootNode = new aiNode("RootNode");
-    ai->mNumMaterials = 1;
-    ai->mMaterials = newArray<aiMaterial>(1);
-    ai->mMaterials[0] = new aiMaterial;
-    const aiString materialName("skin");
-    ai->mMaterials[0]->AddProperty(&materialName, AI_MATKEY_NAME);
+    addMaterials(*ai, scene);
     ai->mNumMeshes = unsigned(scene.meshes.size());
     ai->mMeshes = newArray<aiMesh>(scene.meshes.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m)

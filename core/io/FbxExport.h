@@ -8,6 +8,9 @@
 // name them, so every joint is a bone of each mesh (zero weights where unused);
 // without meshes the joints come out as null nodes (a warning says so).
 // Controllers are plain null nodes (Assimp 5.2.5 writes no custom properties).
+// Meshes carry normals, UVs (LayerElementUV) and their materials (diffuse
+// colour; the base colour image embedded as the Video's Content, named by its
+// file name).
 #include "base/Diagnostic.h"
 #include "base/Result.h"
 #include "io/ExportScene.h"

@@ -119,6 +119,17 @@ bool isPackable(const SkinnedMesh& mesh)
     return true;
 }
 
+// UVs as glTF wants them: its origin is the image's top-left corner, the
+// imported (OpenGL) UVs' is the bottom-left.
+std::vector<float> gltfUvs(const SkinnedMesh& mesh)
+{
+    std::vector<float> uvs;
+    uvs.reserve(mesh.uvs.size() * 2);
+    for (const auto& uv : mesh.uvs)
+        uvs.insert(uvs.end(), {uv.x, 1.f - uv.y});
+    return uvs;
+}
+
 int addMesh(tinygltf::Model& m, GltfBuilder& b, const SkinnedMesh& source, std::size_t jointCount)
 {
     std::optional<SkinnedMesh> limited; // only forced exports of bad weights pay for a fixed copy
@@ -131,9 +142,13 @@ int addMesh(tinygltf::Model& m, GltfBuilder& b, const SkinnedMesh& source, std::
         positions.insert(positions.end(), {p.x, p.y, p.z});
     for (const auto& n : mesh.normals)
         normals.insert(normals.end(), {n.x, n.y, n.z});
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        double sum = 0.0; // normalised again in float, as the Khronos validator checks it
         for (std::size_t k = 0; k < mesh.influenceCount(v); ++k)
-            weights[v * 4 + k] = mesh.influencesOf(v)[k].weight;
+            sum += mesh.influencesOf(v)[k].weight;
+        for (std::size_t k = 0; k < mesh.influenceCount(v); ++k)
+            weights[v * 4 + k] = float(mesh.influencesOf(v)[k].weight / sum);
+    }
 
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
@@ -141,6 +156,11 @@ int addMesh(tinygltf::Model& m, GltfBuilder& b, const SkinnedMesh& source, std::
     if (!normals.empty())
         primitive.attributes["NORMAL"] = b.accessor(normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
                                                     mesh.vertexCount(), kArrayBuffer);
+    if (!mesh.uvs.empty())
+        primitive.attributes["TEXCOORD_0"] = b.accessor(gltfUvs(mesh), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2,
+                                                        mesh.vertexCount(), kArrayBuffer);
+    if (mesh.material >= 0 && std::size_t(mesh.material) < m.materials.size())
+        primitive.material = mesh.material;
     primitive.attributes["JOINTS_0"] =
         jointCount <= 256 ? b.accessor(packJoints<std::uint8_t>(mesh), TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                        TINYGLTF_TYPE_VEC4, mesh.vertexCount(), kArrayBuffer)
@@ -155,6 +175,43 @@ int addMesh(tinygltf::Model& m, GltfBuilder& b, const SkinnedMesh& source, std::
     out.primitives.push_back(primitive);
     m.meshes.push_back(out);
     return int(m.meshes.size() - 1);
+}
+
+// Materials in the scene's order (so SkinnedMesh::material indexes them); a
+// PNG or JPEG base colour image goes into the buffer (the .glb's BIN chunk,
+// the .gltf's .bin), other formats are left out with a warning.
+void addMaterials(tinygltf::Model& m, GltfBuilder& b, const ExportScene& scene, Diagnostics& report)
+{
+    for (const ExportMaterial& source : scene.materials) {
+        tinygltf::Material material;
+        material.name = source.name;
+        material.pbrMetallicRoughness.baseColorFactor = {source.baseColor.x, source.baseColor.y, source.baseColor.z, 1.0};
+        material.pbrMetallicRoughness.metallicFactor = 0.0; // a character's skin and cloth are not metal
+        material.pbrMetallicRoughness.roughnessFactor = 1.0;
+        material.doubleSided = false;
+        if (!source.image.empty() && source.mimeType.empty())
+            report.push_back(makeWarning({}, "material '" + source.name + "': its texture " + source.imageName +
+                                                 " is neither PNG nor JPEG, which glTF needs; exported without it"));
+        if (!source.image.empty() && !source.mimeType.empty()) {
+            if (m.samplers.empty()) {
+                tinygltf::Sampler sampler;
+                sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+                sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+                m.samplers.push_back(sampler);
+            }
+            tinygltf::Image image;
+            image.name = source.imageName;
+            image.mimeType = source.mimeType;
+            image.bufferView = b.view(std::vector<unsigned char>(source.image.begin(), source.image.end()), 0);
+            m.images.push_back(image);
+            tinygltf::Texture texture;
+            texture.sampler = 0;
+            texture.source = int(m.images.size() - 1);
+            m.textures.push_back(texture);
+            material.pbrMetallicRoughness.baseColorTexture.index = int(m.textures.size() - 1);
+        }
+        m.materials.push_back(material);
+    }
 }
 
 void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int firstController)
@@ -193,7 +250,7 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
     m.animations.push_back(animation);
 }
 
-tinygltf::Model buildModel(const ExportScene& scene, const std::string& generator)
+tinygltf::Model buildModel(const ExportScene& scene, const std::string& generator, Diagnostics& report)
 {
     tinygltf::Model m;
     m.asset.version = "2.0";
@@ -240,6 +297,7 @@ tinygltf::Model buildModel(const ExportScene& scene, const std::string& generato
         skin.joints.push_back(int(i));
     m.skins.push_back(skin);
 
+    addMaterials(m, b, scene, report);
     for (const auto& mesh : scene.meshes) {
         tinygltf::Node node;
         node.name = mesh.name;
@@ -259,13 +317,20 @@ tinygltf::Model buildModel(const ExportScene& scene, const std::string& generato
 
 Diagnostics writeGltf(const ExportScene& scene, const std::string& path, const std::string& generator)
 {
-    tinygltf::Model m = buildModel(scene, generator);
+    Diagnostics report;
+    tinygltf::Model m = buildModel(scene, generator, report);
+    for (auto& d : report)
+        d.where.file = path;
     tinygltf::TinyGLTF writer;
     std::ostringstream stream;
+    auto withReport = [&](Diagnostics written) {
+        report.insert(report.end(), written.begin(), written.end());
+        return report;
+    };
     if (std::filesystem::path(path).extension() == ".glb") {
         if (!writer.WriteGltfSceneToStream(&m, stream, false, true))
-            return {makeError({path, 0, 0}, "glTF serialisation failed")};
-        return writeFileAtomically(path, stream.str()).takeDiagnostics();
+            return withReport({makeError({path, 0, 0}, "glTF serialisation failed")});
+        return withReport(writeFileAtomically(path, stream.str()).takeDiagnostics());
     }
     // Text glTF: the JSON names the .bin beside it. tinygltf would write both
     // itself, unchecked and in place, so both are made in memory here (the
@@ -276,15 +341,15 @@ Diagnostics writeGltf(const ExportScene& scene, const std::string& path, const s
     const std::vector<unsigned char> bin = std::move(m.buffers[0].data);
     m.buffers[0].data.clear();
     if (!writer.WriteGltfSceneToStream(&m, stream, true, false))
-        return {makeError({path, 0, 0}, "glTF serialisation failed")};
+        return withReport({makeError({path, 0, 0}, "glTF serialisation failed")});
     nlohmann::json json = nlohmann::json::parse(stream.str(), nullptr, false);
     if (json.is_discarded() || !json.contains("buffers"))
-        return {makeError({path, 0, 0}, "glTF serialisation failed")};
+        return withReport({makeError({path, 0, 0}, "glTF serialisation failed")});
     json["buffers"][0]["uri"] = binName;
     json["buffers"][0]["byteLength"] = bin.size();
     const std::string text = json.dump(2);
     const std::string_view binBytes(reinterpret_cast<const char*>(bin.data()), bin.size());
-    return writeFilesAtomically({{path, text}, {(gltfPath.parent_path() / binName).string(), binBytes}}).takeDiagnostics();
+    return withReport(writeFilesAtomically({{path, text}, {(gltfPath.parent_path() / binName).string(), binBytes}}).takeDiagnostics());
 }
 
 } // namespace rs::io

@@ -3,11 +3,17 @@
 // ../shared/reference/export-facts.md §6.1: one skin whose `skeleton` is the
 // root joint, inverse bind matrices = inverse(joint bind world), node TRS = the
 // scene's pose; skinned meshes at the scene root with identity transforms and
-// bind-space vertices, JOINTS_0 (u8, or u16 past 256 joints) / WEIGHTS_0
+// bind-space vertices, NORMAL, TEXCOORD_0 (V flipped: glTF's origin is the
+// image's top-left), one material each (pbrMetallicRoughness: base colour
+// factor and texture, not metallic), JOINTS_0 (u8, or u16 past 256 joints) / WEIGHTS_0
 // (float, normalised, at most 4); every bufferView 4-byte aligned, vertex and
 // index views with their targets, min/max on positions and clip times;
 // controllers as plain nodes tagged {"rig": {"kind": "controller", ...}} in
 // extras; clips as LINEAR samplers in seconds. glTF is metres, Y-up.
+// Texture images (PNG or JPEG; other formats are left out with a warning) go
+// into the buffer through a bufferView, in .glb and .gltf alike: the .gltf's
+// .bin carries them, so the pair is the whole export, written atomically, and
+// nothing is copied beside it.
 #include "base/Diagnostic.h"
 #include "io/ExportScene.h"
 

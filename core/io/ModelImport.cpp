@@ -181,3 +181,28 @@ Result<model::Model> importModel(const std::string& path)
 }
 
 } // namespace rs::io
+
+namespace rs::io {
+
+Result<std::map<std::string, std::string>> readEmbeddedImages(const std::string& path)
+{
+    Assimp::Importer importer;
+    // No post-processing: only the textures are wanted.
+    const aiScene* scene = importer.ReadFile(path, 0);
+    if (!scene)
+        return Result<std::map<std::string, std::string>>::failure(
+            makeError({path, 0, 0}, std::string("cannot read the model: ") + importer.GetErrorString()));
+    std::map<std::string, std::string> images;
+    for (unsigned t = 0; t < scene->mNumTextures; ++t) {
+        const aiTexture& texture = *scene->mTextures[t];
+        if (texture.mHeight != 0 || !texture.pcData)
+            continue; // decoded texels, not a file's bytes
+        std::string bytes(reinterpret_cast<const char*>(texture.pcData), texture.mWidth);
+        images.emplace("*" + std::to_string(t), bytes);
+        if (texture.mFilename.length > 0)
+            images.emplace(texture.mFilename.C_Str(), std::move(bytes));
+    }
+    return images;
+}
+
+} // namespace rs::io

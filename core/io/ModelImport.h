@@ -7,6 +7,7 @@
 #include "base/Result.h"
 #include "model/Mesh.h"
 
+#include <map>
 #include <string>
 
 namespace rs::io {
@@ -14,5 +15,11 @@ namespace rs::io {
 // Fails with the reader's message (the file as location) on a missing,
 // unreadable or triangle-less file.
 Result<model::Model> importModel(const std::string& path);
+
+// The images a model file embeds (a .zae's media, a .glb's images, an FBX's
+// video content), by the name its materials use for them (Material::texture,
+// e.g. "./textures/skin.png", or "*0"), as file bytes (PNG, JPEG...). Images
+// Assimp decoded to raw texels are left out. Empty for a file without any.
+Result<std::map<std::string, std::string>> readEmbeddedImages(const std::string& path);
 
 } // namespace rs::io

@@ -125,8 +125,9 @@ Diagnostics checkInfluences(const SkinnedMesh& mesh, const model::Skeleton& skel
     };
     const std::size_t n = mesh.vertexCount();
     if (mesh.influenceStart.size() != n + 1 || mesh.influenceStart.back() != mesh.influences.size() ||
-        (!mesh.normals.empty() && mesh.normals.size() != n) || mesh.indices.size() % 3 != 0)
-        return {error("its vertex, normal, triangle and influence arrays do not match")};
+        (!mesh.normals.empty() && mesh.normals.size() != n) || (!mesh.uvs.empty() && mesh.uvs.size() != n) ||
+        mesh.indices.size() % 3 != 0)
+        return {error("its vertex, normal, UV, triangle and influence arrays do not match")};
     for (std::uint32_t index : mesh.indices)
         if (index >= n)
             return {error("a triangle uses vertex " + std::to_string(index) + ", past its " + std::to_string(n) + " vertices")};

@@ -7,12 +7,13 @@
 // what breaks that, limitInfluences is the safe fix (keeps the largest four,
 // renormalises).
 //
-// Until mesh import and binding exist (issue 7 imports reference models),
-// proxyMesh binds a generated mesh, a tube along every bone, so exports, tests
-// and the benchmark have real skinning to carry.
+// A character's bound meshes come from io/CharacterExport.h (with UVs and a
+// material); proxyMesh binds a generated mesh, a tube along every bone, so a
+// rig without a character still has real skinning to carry (tests, bench).
 #include "base/Diagnostic.h"
 #include "model/Skeleton.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -29,7 +30,9 @@ struct Influence {
 struct SkinnedMesh {
     std::string name;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;            // empty or one per position
+    std::vector<glm::vec3> normals;            // empty or one per position, unit length
+    std::vector<glm::vec2> uvs;                // empty or one per position; as imported (OpenGL: v up from the bottom)
+    int material = -1;                         // into ExportScene::materials; -1: none
     std::vector<std::uint32_t> indices;        // triangles
     std::vector<std::uint32_t> influenceStart; // positions.size() + 1 entries
     std::vector<Influence> influences;

@@ -39,7 +39,7 @@ const std::vector<Layer> kCoreLayers = {
     {"rigging", {"base", "model", "eval", "templates"}},
     {"edit", {"base", "model", "eval"}},
     {"session", {"base", "model", "eval", "templates", "rigging", "edit", "skin"}},
-    {"io", {"base", "model", "eval", "templates"}},
+    {"io", {"base", "model", "eval", "templates", "skin"}},
 };
 
 const std::vector<std::string> kScannedFolders = {"core", "viewport", "widgets", "app"};
