@@ -66,7 +66,9 @@ void MainWindow::refreshTransformPanel()
     const model::JointId joint = m_session.mode() == EditorMode::Guide ? m_session.gizmoJoint() : model::kNoId;
     const model::TemplateInstance* owner = m_session.document().ownerOf(joint);
     if (!owner) {
-        m_transformPanel->clear();
+        m_transformPanel->clear(m_session.mode() == EditorMode::Rig
+                                    ? tr("Guide joints are typed in Guide mode (F3); in Rig mode the Channel box poses controllers")
+                                    : QString());
         return;
     }
     const model::GuideJoint* j = owner->joint(joint);

@@ -34,6 +34,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -157,8 +158,30 @@ bool applySetup(rs::app::MainWindow& window, bool rigMode, const QStringList& se
 
 } // namespace
 
+// Printed without a display (no QApplication is made for it).
+const char* kUsage =
+    "usage: rigsmith [GUIDE]                     open a guide (default: an empty one)\n"
+    "       rigsmith --screenshot OUT.png [GUIDE]   load, build, render the window, save it, exit\n"
+    "       rigsmith --startup-time [GUIDE]      print how long until the window showed the guide (JSON), exit\n"
+    "       rigsmith --edit-latency GUIDE        replay 100 guide drags, print the median and worst\n"
+    "                                            edit-to-frame time (JSON), exit\n"
+    "       rigsmith --edit-latency --drag CONTROLLER GUIDE   the same in Rig mode, rotating CONTROLLER\n"
+    "                                            (a rig path, \"arm.L::ctrls.fk.0\")\n"
+    "screenshot and latency setup (applied after the guide is built):\n"
+    "  --rig                          Rig mode\n"
+    "  --set CONTROLLER.CHANNEL=VALUE set a channel (\"arm.L::ctrls.switch.ik_blend=0\"), repeatable\n"
+    "  --pose CONTROLLER=RX,RY,RZ     set a controller's rotation in degrees, repeatable\n"
+    "  --frame X0,Y0,Z0,X1,Y1,Z1      frame this box (metres) instead of everything\n"
+    "  --action NAME                  trigger an action by object name (weights:selected...), repeatable\n"
+    "The headless command line (build, bind, export) is rigsmith-cli.\n";
+
 int main(int argc, char** argv)
 {
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+            std::fputs(kUsage, stdout);
+            return 0;
+        }
     QElapsedTimer sinceMain;
     sinceMain.start();
     rs::viewport::requestOpenGl33Core();

@@ -84,10 +84,10 @@ void TransformPanel::showJoint(const QString& title, const Transform& world, con
     showValues();
 }
 
-void TransformPanel::clear()
+void TransformPanel::clear(const QString& why)
 {
     m_hasJoint = false;
-    m_title->setText(tr("Select guide joints to type their position and rotation"));
+    m_title->setText(why.isEmpty() ? tr("Select guide joints to type their position and rotation") : why);
     showValues();
 }
 

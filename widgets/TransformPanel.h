@@ -30,7 +30,9 @@ public:
 
     // `world` and `local` are the joint's transforms in both spaces; the panel shows the chosen one.
     void showJoint(const QString& title, const Transform& world, const Transform& local);
-    void clear(); // nothing selected: the fields are disabled
+    // Nothing to type into: the fields are disabled and `why` says what to do
+    // (empty: select guide joints).
+    void clear(const QString& why = {});
     Space space() const;
     void setSpace(Space space);
     bool isRelative() const;
