@@ -39,6 +39,8 @@ void MainWindow::createPaintDock()
     m_paintPanel = new widgets::WeightPaintPanel(this);
     m_paintPanel->setObjectName("paintPanel");
     QDockWidget* dock = addDock(m_paintPanel, tr("Paint"), "paintDock", Qt::RightDockWidgetArea);
+    if (auto* channels = findChild<QDockWidget*>("channelBoxDock"))
+        tabifyDockWidget(channels, dock); // the full height for the joint list; raised with the paint mode
     dock->hide(); // shown with the paint mode
 }
 

@@ -28,6 +28,10 @@ WeightPaintPanel::WeightPaintPanel(QWidget* parent) : QWidget(parent)
     m_joints->setColumnCount(2);
     m_joints->setHeaderLabels({tr("Joint"), tr("Lock")});
     m_joints->setRootIsDecorated(false);
+    m_joints->setMinimumHeight(160);
+    // The dark theme draws unchecked boxes almost black on black: outline them, fill a lock.
+    m_joints->setStyleSheet("QTreeView::indicator { width: 11px; height: 11px; border: 1px solid #8a8f98; border-radius: 2px; }"
+                            "QTreeView::indicator:checked { background: #e0a030; border-color: #f0c060; }");
     m_joints->header()->setStretchLastSection(false);
     m_joints->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_joints->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
@@ -51,6 +55,7 @@ QWidget* WeightPaintPanel::makeBrushBox()
     auto* box = new QGroupBox(tr("Brush"), this);
     auto* form = new QFormLayout(box);
     auto* tools = new QHBoxLayout;
+    box->setStyleSheet("QToolButton:checked { background: palette(highlight); color: palette(highlighted-text); }");
     m_tools = new QButtonGroup(this);
     const std::pair<QString, QString> toolNames[] = {
         {tr("Add"), tr("Add weight of the chosen joint (Ctrl+drag subtracts, Shift+drag smooths)")},
