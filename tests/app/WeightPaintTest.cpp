@@ -248,6 +248,9 @@ TEST(WeightPaint, BoxSelectThenLimitChangesOnlyTheSelectedVertices)
         }
     }
     EXPECT_GT(front, 10u);
+    e.view->update();
+    QTest::qWait(50);
+    e.window.grab().save(QString::fromStdString(outputPath("weight-paint-selection.png"))); // to look at
     auto count = [](const model::MeshWeights& m, std::size_t v) { return m.offsets[v + 1] - m.offsets[v]; };
     ASSERT_TRUE(std::any_of(picked.begin(), picked.end(), [&](std::uint32_t v) { return count(before, v) > 1; }));
 
