@@ -140,6 +140,7 @@ void MainWindow::connectPaint()
             return;
         }
         skin::Brush brush = m_paintPanel->brush();
+        brush.radius = m_viewport->brushRadius(); // the circle the rigger sees (the dock rounds to millimetres)
         if (stroke == int(viewport::PaintStroke::Subtract))
             brush.mode = skin::BrushMode::Subtract;
         else if (stroke == int(viewport::PaintStroke::Smooth))

@@ -196,7 +196,10 @@ void ViewportWidget::paintOverlay()
         return;
     if (m_paintTool == PaintTool::Brush && m_hover)
         m_scene.overlay.push_back(brushCircle(m_hover->point, m_hover->normal, m_brushRadius, m_resizeKey ? kResizeColor : kBrushColor));
-    m_scene.overlayPoints = selectedVertexPositions(m_scene, posedCharacter());
+    const bool anySelected = std::any_of(m_scene.meshes.begin(), m_scene.meshes.end(),
+                                         [](const SceneMesh& mesh) { return !mesh.selectedVertices.empty(); });
+    if (anySelected)
+        m_scene.overlayPoints = selectedVertexPositions(m_scene, posedCharacter());
 }
 
 } // namespace rs::viewport

@@ -9,6 +9,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QListWidgetItem>
 #include <QSpinBox>
 #include <QTreeWidget>
@@ -296,4 +297,29 @@ TEST(WeightPaint, MirrorFromTheDockCopiesAStrokeOntoTheOtherArm)
     EXPECT_EQ(w.session().history().index(), steps + 1);
     EXPECT_NEAR(weightOf(weights(w), hit->vertex + half, right), painted, 1e-3);
     EXPECT_LT(largestSumError(weights(w)), 1e-4);
+}
+
+TEST(WeightPaint, BracketsAndBDragResizeTheBrushWithoutPainting)
+{
+    PaintEditor e("sleeves-radius.obj");
+    const double start = e.panel->brush().radius;
+    QTest::keyClick(e.view, Qt::Key_BracketRight);
+    EXPECT_NEAR(e.view->brushRadius(), start * 1.25, 1e-9);
+    EXPECT_NEAR(e.panel->brush().radius, start * 1.25, 1e-3) << "the dock follows the viewport (in millimetres)";
+    QTest::keyClick(e.view, Qt::Key_BracketLeft);
+    EXPECT_NEAR(e.panel->brush().radius, start, 1e-3);
+
+    const std::size_t steps = e.w.session().history().index();
+    const QPoint at = e.onArm(0.3);
+    QTest::keyPress(e.view, Qt::Key_B);
+    QTest::mousePress(e.view, Qt::LeftButton, {}, at);
+    QTest::mouseMove(e.view, at + QPoint(60, 0));
+    QTest::mouseRelease(e.view, Qt::LeftButton, {}, at + QPoint(60, 0));
+    QTest::keyRelease(e.view, Qt::Key_B);
+    EXPECT_GT(e.panel->brush().radius, start * 1.2);
+    EXPECT_EQ(e.w.session().history().index(), steps) << "resizing paints nothing";
+
+    // The dock's radius drives the viewport's brush circle.
+    e.panel->findChild<QDoubleSpinBox*>("paintRadius")->setValue(0.02);
+    EXPECT_NEAR(e.view->brushRadius(), 0.02, 1e-9);
 }
