@@ -222,8 +222,8 @@ void MainWindow::followMode()
     if (QAction* a = action(rigMode ? "modeRig" : "modeGuide"))
         a->setChecked(true);
     m_viewport->setRigMode(rigMode);
-    // The dock for the mode: the transform panel in Guide mode, the channel box in Rig mode.
-    if (auto* dock = findChild<QDockWidget*>(rigMode ? "channelBoxDock" : "transformDock"))
+    // The dock for the mode: the transform panel in Guide mode, the channel box in Rig mode (the Paint dock while painting).
+    if (auto* dock = findChild<QDockWidget*>(isPainting() ? "paintDock" : rigMode ? "channelBoxDock" : "transformDock"))
         dock->raise();
 }
 

@@ -78,6 +78,8 @@ void MainWindow::follow(const edit::Change& change)
     if (change.has(K::Mode))
         followMode();
     m_characterWeights.follow(m_session, change);
+    if (change.hasAny(K::Document | K::Rig | K::Templates))
+        refreshPaintPanel(); // new skin joints
     if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names | K::Reference | K::Selection |
                       K::Rig | K::Evaluation | K::Mode | K::Templates | K::Models | K::Weights))
         refreshScene();

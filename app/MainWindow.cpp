@@ -128,6 +128,7 @@ void MainWindow::createDocks()
     m_transformPanel = new widgets::TransformPanel(this);
     tabifyDockWidget(channelDock, addDock(m_transformPanel, tr("Transform"), "transformDock", Qt::RightDockWidgetArea));
     m_options = new widgets::OptionsEditor(this);
+    createPaintDock();
     resizeDocks({addDock(m_options, tr("Options"), "optionsDock", Qt::RightDockWidgetArea), outlinerDock}, {340, 250},
                 Qt::Horizontal);
 
@@ -188,6 +189,7 @@ void MainWindow::connectDocument()
     connectRigMode();
     connectOptions();
     connectTransformPanel();
+    connectPaint();
 
     m_log->addDiagnostics(m_session.templateDiagnostics());
     refreshViews();

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 
 class QAction;
 class QDockWidget;
@@ -19,7 +20,7 @@ class QMenu;
 class QProgressBar;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; class WeightPaintPanel; }
 
 namespace rs::app {
 
@@ -38,6 +39,7 @@ public:
     widgets::HistoryView* historyView() const { return m_historyView; }
     widgets::TemplateLibrary* templateLibrary() const { return m_library; }
     widgets::TransformPanel* transformPanel() const { return m_transformPanel; }
+    widgets::WeightPaintPanel* paintPanel() const { return m_paintPanel; }
     const viewport::DisplayOptions& displayOptions() const { return m_display; }
     QAction* action(const QString& objectName) const;
 
@@ -82,6 +84,13 @@ public:
     using ReloadPrompt = std::function<bool(const QString& file)>;
     void setReloadPrompt(ReloadPrompt prompt) { m_reloadPrompt = std::move(prompt); }
 
+    // Skin > Paint Weights (PaintWiring.cpp): the viewport's paint mode and the Paint dock.
+    void setPaintMode(bool on);
+    bool isPainting() const;
+    // The painted joint (into session().skinBones()), -1 none; choosing one also shows its weights.
+    int paintBone() const;
+    void choosePaintJoint(int bone);
+
 protected:
     void closeEvent(QCloseEvent* event) override;
 
@@ -99,6 +108,12 @@ private:
     void watchModels();          // SkinActions.cpp: the model files the guide uses
     void modelFileChanged(const QString& path);
     void finishBind();
+    void createPaintActions(QMenu* skinMenu); // PaintWiring.cpp
+    void createPaintDock();
+    void connectPaint();
+    void refreshPaintPanel();
+    void showPaintedWeights();
+    QString skinBoneName(int bone) const;
     void connectTransformPanel(); // TransformWiring.cpp
     void refreshTransformPanel();
     void showHelpText(const QString& title, const QString& markdown);
@@ -135,6 +150,10 @@ private:
     widgets::HistoryView* m_historyView = nullptr;
     widgets::TemplateLibrary* m_library = nullptr;
     widgets::TransformPanel* m_transformPanel = nullptr;
+    widgets::WeightPaintPanel* m_paintPanel = nullptr;
+    std::optional<NodeKey> m_paintJoint; // the painted skin joint, by identity
+    skin::Brush m_strokeBrush;           // the stroke under way
+    bool m_strokeOpen = false, m_strokeRefused = false;
     viewport::DisplayOptions m_display;
     viewport::CharacterWeights m_characterWeights; // the weights objects the viewport draws
     ErrorPrompt m_errorPrompt;

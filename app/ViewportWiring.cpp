@@ -115,7 +115,7 @@ void MainWindow::refreshScene()
     scene.reference = m_session.referenceTriangles();
     viewport::addCharacter(scene, m_session, m_characterWeights, rigMode);
     if (m_display.weights == viewport::WeightDisplay::SelectedJoint)
-        scene.weightBone = viewport::skinBoneFor(m_session, rigMode);
+        scene.weightBone = isPainting() ? paintBone() : viewport::skinBoneFor(m_session, rigMode);
     viewport::applyDisplay(scene, m_display, rigMode);
     m_viewport->setScene(std::move(scene));
     const auto* rig = m_session.rig();

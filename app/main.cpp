@@ -16,12 +16,16 @@
 //   --frame X0,Y0,Z0,X1,Y1,Z1             frame this box (metres) instead of everything
 //   --action NAME                         trigger an action by object name, e.g.
 //                                         weights:selected, skinning:dualQuaternion (repeatable)
+//   --stroke X0,Y0,Z0,X1,Y1,Z1            with --action paintWeights: drag a paint stroke with the
+//                                         mouse from one world point's pixel to the other's (what
+//                                         lies under them is painted), the brush left at the end
 #include "EditLatency.h"
 #include "MainWindow.h"
 
 #include "ViewportWidget.h"
 
 #include <QAction>
+#include <QMouseEvent>
 #include <QApplication>
 #include <QPalette>
 #include <QStyleFactory>
@@ -156,6 +160,27 @@ bool applySetup(rs::app::MainWindow& window, bool rigMode, const QStringList& se
     return true;
 }
 
+// --stroke: the left button dragged across the viewport as a rigger would.
+void dragStroke(rs::viewport::ViewportWidget* view, const QStringList& numbers)
+{
+    if (numbers.size() != 6) {
+        std::fprintf(stderr, "rigsmith: --stroke needs X0,Y0,Z0,X1,Y1,Z1\n");
+        return;
+    }
+    const QPointF from = view->toWidgetPixels({numbers[0].toDouble(), numbers[1].toDouble(), numbers[2].toDouble()});
+    const QPointF to = view->toWidgetPixels({numbers[3].toDouble(), numbers[4].toDouble(), numbers[5].toDouble()});
+    auto send = [view](QEvent::Type type, QPointF at, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent event(type, at, view->mapToGlobal(at), button, buttons, Qt::NoModifier);
+        QApplication::sendEvent(view, &event);
+    };
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+    constexpr int kSteps = 24;
+    for (int i = 1; i <= kSteps; ++i)
+        send(QEvent::MouseMove, from + (to - from) * (double(i) / kSteps), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+    send(QEvent::MouseMove, to, Qt::NoButton, Qt::NoButton); // hovering: the brush circle
+}
+
 } // namespace
 
 // Printed without a display (no QApplication is made for it).
@@ -206,6 +231,7 @@ int main(int argc, char** argv)
     const QStringList actions = takeAll(args, "--action");
     const QStringList drags = takeAll(args, "--drag");
     const QStringList frame = takeAll(args, "--frame");
+    const QStringList strokes = takeAll(args, "--stroke");
     const bool startupTime = args.removeAll("--startup-time") > 0;
     const bool editLatency = args.removeAll("--edit-latency") > 0;
     if (editLatency && args.isEmpty()) {
@@ -250,8 +276,12 @@ int main(int argc, char** argv)
                              {box[3].toDouble(), box[4].toDouble(), box[5].toDouble()}, double(view->width()) / view->height());
         view->update();
     }
+    QTimer::singleShot(250, &window, [&] { // once the viewport has its size
+        for (const QString& stroke : strokes)
+            dragStroke(window.viewportWidget(), stroke.split(','));
+    });
     int status = 1;
-    QTimer::singleShot(500, &window, [&] {
+    QTimer::singleShot(800, &window, [&] {
         const QImage image = window.grab().toImage();
         status = image.save(screenshot) ? 0 : 1;
         if (status != 0)

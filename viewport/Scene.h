@@ -68,6 +68,8 @@ struct SceneMesh {
     bool skinned = false;
     glm::vec3 baseColor{0.8f};                           // linear RGB, [0, 1]
     std::string texturePath;                             // absolute; "" none
+    std::size_t characterMesh = 0;                       // into session::Session::characterMeshes()
+    std::vector<std::uint32_t> selectedVertices;         // weight painting's vertex selection, sorted
     const model::Mesh& data() const { return model->meshes[mesh]; }
 };
 
@@ -109,7 +111,8 @@ struct Scene {
     std::shared_ptr<const std::vector<glm::vec3>> reference;
     std::vector<SceneCv> cvs;             // CV mode: pickable control points
     std::vector<SceneCurve> hulls;        // CV mode: the hulls joining them
-    std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo)
+    std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo, the paint brush)
+    std::vector<glm::dvec3> overlayPoints; // drawn last, on top (weight painting's selected vertices)
     // Each guide joint's (Guide mode) or skin joint's (Rig mode) local axes:
     // X red, Y green, Z blue, kAxisLength long. Not pickable.
     std::vector<SceneCurve> axes;

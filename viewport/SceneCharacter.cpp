@@ -42,6 +42,9 @@ void addCharacter(Scene& scene, const session::Session& session, const Character
         SceneMesh mesh;
         mesh.model = loaded.model;
         mesh.mesh = character.mesh;
+        mesh.characterMesh = i;
+        if (auto selected = session.selectedVertices().find(i); selected != session.selectedVertices().end())
+            mesh.selectedVertices = selected->second;
         if (mesh.mesh >= mesh.model->meshes.size())
             continue;
         mesh.weights = i < weights.weights().size() ? weights.weights()[i] : character.weights;

@@ -132,7 +132,7 @@ void ViewportWidget::setGizmoWorldSpace(bool world)
 
 std::optional<Gizmo> ViewportWidget::gizmo() const
 {
-    if (m_gizmoTarget == model::kNoNode || m_selectTool)
+    if (m_gizmoTarget == model::kNoNode || m_selectTool || m_paintMode)
         return std::nullopt;
     Gizmo g = m_gizmo;
     g.size = Gizmo::sizeFor(m_camera, g.origin(), height());
@@ -155,6 +155,7 @@ void ViewportWidget::paintGL()
     m_scene.overlay.clear();
     if (const auto g = gizmo())
         m_scene.overlay = gizmoCurves(*g, m_activeHandle);
+    paintOverlay();
     if (m_renderer) {
         m_renderer->render(m_scene, m_camera, int(width() * devicePixelRatio()), int(height() * devicePixelRatio()));
         for (const std::string& warning : m_renderer->takeWarnings())
@@ -229,6 +230,8 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
     m_cameraDrag = cameraDragFor(event->button(), event->modifiers());
     if (event->button() != Qt::LeftButton || m_cameraDrag != CameraDrag::None)
         return;
+    if (paintPress(event))
+        return;
     const glm::dvec2 pixel(event->position().x(), event->position().y());
     if (const auto g = gizmo()) {
         const int handle = pickGizmoHandle(*g, m_camera, width(), height(), pixel);
@@ -243,6 +246,8 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 {
+    if (paintMove(event))
+        return;
     const QPoint p = event->position().toPoint();
     const QPoint delta = p - m_lastPosition;
     m_lastPosition = p;
@@ -277,6 +282,12 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
     const bool add = event->modifiers() & Qt::ShiftModifier;
+    if (paintRelease(event)) {
+        m_dragButton = Qt::NoButton;
+        m_cameraDrag = CameraDrag::None;
+        update();
+        return;
+    }
     if (m_gizmoDrag) {
         m_gizmoDrag.reset();
         m_activeHandle = -1;
@@ -365,7 +376,7 @@ bool ViewportWidget::handleViewKey(QKeyEvent* event)
 
 void ViewportWidget::keyPressEvent(QKeyEvent* event)
 {
-    if (handleViewKey(event))
+    if (handleViewKey(event) || paintKey(event))
         return;
     const std::pair<int, GizmoMode> gizmoKeys[] = {
         {Qt::Key_W, GizmoMode::Translate}, {Qt::Key_E, GizmoMode::Rotate}, {Qt::Key_R, GizmoMode::Scale}};

@@ -11,13 +11,18 @@
 // top orthographic views and 5 (or 0) back to perspective, as Blender's keypad.
 // W/E/R pick the gizmo (translate, rotate, scale; Q hides it) whose handles drag the
 // target the app sets (a guide joint, a shape, CVs or a controller). In Rig mode the arrow
-// keys pickwalk and M walks to the mirror twin. Knows nothing about the
+// keys pickwalk and M walks to the mirror twin. In paint mode (setPaintMode,
+// ViewportPaint.cpp) the left button paints weights on the character's meshes
+// as drawn (posed in Rig mode, the bind pose in Guide mode) or, with the
+// select-vertices tool, picks and box-selects mesh vertices; the camera keys
+// and buttons work as always. Knows nothing about the
 // widgets library or the app; it reports picks, walks and drags as signals
 // carrying core ids and world matrices.
 #include "Camera.h"
 #include "Manipulator.h"
 #include "Picking.h"
 #include "Scene.h"
+#include "WeightPaint.h"
 
 #include <QOpenGLWidget>
 
@@ -32,6 +37,11 @@ class Renderer;
 
 // How mouse buttons and the wheel move the camera (see the class comment).
 enum class Navigation { Maya, Blender, Touchpad };
+
+// Paint mode's left button: paint with the brush, or select vertices.
+enum class PaintTool { Brush, SelectVertices };
+// What a stroke's modifiers ask for: the panel's tool, Ctrl subtracts, Shift smooths.
+enum class PaintStroke { Tool, Subtract, Smooth };
 
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
@@ -73,6 +83,23 @@ public:
     void setNavigation(Navigation navigation) { m_navigation = navigation; }
     Navigation navigation() const { return m_navigation; }
 
+    // Weight painting (ViewportPaint.cpp). In the brush tool a left drag on a
+    // mesh is one stroke: paintStrokeStarted, a paintDabbed every quarter
+    // radius along the drag (the first where the press hits), then
+    // paintStrokeFinished. Ctrl+drag subtracts, Shift+drag smooths. B+drag
+    // (right: larger) or [ and ] change the radius. In the select-vertices
+    // tool a click picks the vertex nearest the hit, a drag box-selects the
+    // vertices facing the camera (Shift adds). The mesh is posed on the CPU
+    // once per stroke (and when the scene changes between strokes).
+    void setPaintMode(bool on);
+    bool isPaintMode() const { return m_paintMode; }
+    void setPaintTool(PaintTool tool);
+    PaintTool paintTool() const { return m_paintTool; }
+    void setBrushRadius(double metres); // clamped to [0.001, 10]
+    double brushRadius() const { return m_brushRadius; }
+    // The mesh under a widget pixel, as painting sees it (tests and tools).
+    std::optional<MeshHit> meshHitAt(QPoint pixel);
+
 signals:
     void guideJointPicked(quint32 joint, quint32 owner, bool add);
     void guideJointsBoxSelected(const QList<quint32>& joints, bool add);
@@ -87,6 +114,13 @@ signals:
     void gizmoDragged(quint32 target, const glm::dmat4& world);
     void gizmoDragFinished(quint32 target);
     void viewChanged(int view); // a CameraView
+    void paintStrokeStarted(int stroke); // a PaintStroke
+    // One dab on characterMeshes()[mesh]: the hit point and its nearest vertex.
+    void paintDabbed(quint64 mesh, const glm::dvec3& centre, quint32 vertex);
+    void paintStrokeFinished();
+    // Select-vertices tool: per character mesh, the vertices clicked or boxed (empty: nothing hit).
+    void verticesSelected(const rs::viewport::VertexSelection& vertices, bool add);
+    void brushRadiusChanged(double metres);
     // A drawing problem the rigger should know of (an unreadable texture), once each.
     void renderWarning(const QString& message);
 
@@ -98,6 +132,7 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
     bool event(QEvent* event) override; // pinch to zoom
 
 private:
@@ -106,6 +141,14 @@ private:
     void cleanup();
     bool handleViewKey(QKeyEvent* event);
     void paintLabels();
+    // Paint mode's mouse and keys (ViewportPaint.cpp); true when handled.
+    bool paintPress(QMouseEvent* event);
+    bool paintMove(QMouseEvent* event);
+    bool paintRelease(QMouseEvent* event);
+    bool paintKey(QKeyEvent* event);
+    void paintOverlay();                // the brush circle and the selected vertices
+    const PosedCharacter& posedCharacter(); // the scene's meshes as drawn, made again when the scene changed
+    void dabAlong(QPoint from, QPoint to); // dabs spaced along a drag
 
     std::unique_ptr<Renderer> m_renderer;
     Scene m_scene;
@@ -125,6 +168,19 @@ private:
     int m_activeHandle = -1;
     QRubberBand* m_rubberBand = nullptr;
     QWidget* m_labels = nullptr; // LabelOverlay, made on the first paint
+    bool m_paintMode = false;
+    PaintTool m_paintTool = PaintTool::Brush;
+    double m_brushRadius = 0.05;
+    PosedCharacter m_posed;
+    bool m_posedValid = false;
+    bool m_painting = false;         // the left button is down with the brush tool
+    bool m_stroking = false;         // ... and a stroke has started (it hit a mesh)
+    int m_stroke = 0;                // PaintStroke of the stroke under way
+    glm::dvec3 m_lastDab{0.0};
+    std::optional<MeshHit> m_hover;  // under the cursor (the brush circle)
+    bool m_resizeKey = false;        // B held
+    bool m_resizing = false;         // B+drag under way
+    double m_resizeStart = 0.0;
 };
 
 // Must run before the QApplication is created: asks for OpenGL 3.3 core.

@@ -76,7 +76,7 @@ const glm::dvec3 kReferenceColor(0.55, 0.6, 0.7);
 // uploaded once, the reference model when the model changes, the scene's
 // layers when the scene changes (not when only the camera moves), the gizmo
 // (a few hundred vertices) every frame.
-enum Layer { Grid, Reference, Lines, Curves, SkinPoints, MirrorPoints, GuidePoints, Hulls, CvPoints, Overlay, kLayerCount };
+enum Layer { Grid, Reference, Lines, Curves, SkinPoints, MirrorPoints, GuidePoints, Hulls, CvPoints, Overlay, OverlayPoints, kLayerCount };
 
 struct Renderer::GlState {
     GLuint program = 0;
@@ -95,7 +95,7 @@ struct Renderer::GlState {
         Buffer& b = buffers[layer];
         glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(),
-                     layer == Overlay ? GL_STREAM_DRAW : GL_DYNAMIC_DRAW);
+                     layer == Overlay || layer == OverlayPoints ? GL_STREAM_DRAW : GL_DYNAMIC_DRAW);
         b.count = GLsizei(vertices.size());
         uploads += vertices.size();
     }
@@ -259,6 +259,10 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     std::vector<Vertex> overlay;
     pushCurves(scene.overlay, overlay, false);
     m_gl->upload(Overlay, overlay);
+    std::vector<Vertex> overlayPoints;
+    for (const glm::dvec3& p : scene.overlayPoints)
+        push(overlayPoints, p, kSelectedCvColor);
+    m_gl->upload(OverlayPoints, overlayPoints);
     m_meshes->prepare(scene); // vertices once, weights when they change, the palette every frame
 
     glUseProgram(m_gl->program);
@@ -308,6 +312,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     glLineWidth(2.0f); // core profiles may clamp this to 1; the gizmo colours still stand out
     draw(Overlay, GL_LINES, 1.0f);
     glLineWidth(1.0f);
+    draw(OverlayPoints, GL_POINTS, 5.0f);
     glBindVertexArray(0);
     glUseProgram(0);
 }
