@@ -80,7 +80,7 @@ void MainWindow::follow(const edit::Change& change)
     m_characterWeights.follow(m_session, change);
     if (change.hasAny(K::Document | K::Rig | K::Templates))
         refreshPaintPanel(); // new skin joints
-    if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names | K::Reference | K::Selection |
+    if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names |  K::Selection |
                       K::Rig | K::Evaluation | K::Mode | K::Templates | K::Models | K::Weights))
         refreshScene();
     if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Selection | K::Mode))

@@ -29,7 +29,6 @@ void MainWindow::createDisplayActions()
         {"shapes", tr("&Shapes (Guide mode)"), &viewport::DisplayOptions::shapes, {}},
         {"controllers", tr("&Controllers (Rig mode)"), &viewport::DisplayOptions::controllers, {}},
         {"skinJoints", tr("S&kin Joints"), &viewport::DisplayOptions::skinJoints, {}},
-        {"reference", tr("&Reference Model"), &viewport::DisplayOptions::reference, {}},
         {"meshes", tr("Character &Meshes"), &viewport::DisplayOptions::meshes, {}},
         {"labels", tr("&Labels"), &viewport::DisplayOptions::labels, {}},
         {"axes", tr("Joint &Axes"), &viewport::DisplayOptions::axes, QKeySequence(tr("Ctrl+Shift+X"))}};

@@ -4,7 +4,6 @@
 #include "io/GuideFile.h"
 #include "io/ModelImport.h"
 #include "io/WeightsFile.h"
-#include "io/ReferenceModel.h"
 #include "io/TemplateFolders.h"
 #include "templates/GuideTemplates.h"
 
@@ -17,13 +16,6 @@ namespace {
 std::shared_ptr<const templates::TemplateRegistry> loadTemplates(Diagnostics& diagnostics)
 {
     return io::loadDefaultTemplates(diagnostics);
-}
-
-std::optional<std::vector<glm::vec3>> readReference(const std::string& path, Diagnostics& diagnostics)
-{
-    auto model = io::loadReferenceModel(path);
-    diagnostics = model.diagnostics();
-    return model ? std::optional(model.take().triangles) : std::nullopt;
 }
 
 } // namespace
@@ -39,8 +31,6 @@ EditorSession::EditorSession(QObject* parent) : QObject(parent), session::Sessio
         emit buildProgressed(fraction, QString::fromStdString(stage));
     });
     subscribe([this](const session::Change& change) {
-        if (change.has(session::ChangeKind::Reference) || change.has(session::ChangeKind::Document))
-            syncReference();
         if (change.has(session::ChangeKind::History) && history().isClean())
             discardAutosave(); // undone back to the saved state: the autosave would bring the undone edits back
         emit changed(change);
@@ -131,40 +121,6 @@ model::InstanceId EditorSession::instanceNamed(const QString& name) const
 {
     const auto* instance = document().instanceNamed(name.toStdString());
     return instance ? instance->id : model::kNoId;
-}
-
-Status EditorSession::loadReference(const QString& path)
-{
-    if (path.isEmpty())
-        return setReferenceModel({}); // the change clears the view
-    const std::string absolute = std::filesystem::absolute(path.toStdString()).lexically_normal().string();
-    Diagnostics diagnostics;
-    auto triangles = readReference(absolute, diagnostics);
-    if (!triangles)
-        return Status::failure(std::move(diagnostics)); // the shown model and the document stay
-    m_reference = std::make_shared<const std::vector<glm::vec3>>(std::move(*triangles));
-    m_referencePath = absolute;
-    if (Status set = setReferenceModel(absolute); set.failed())
-        return set;
-    return Status::success(std::move(diagnostics));
-}
-
-void EditorSession::syncReference()
-{
-    if (document().referenceModel == m_referencePath)
-        return;
-    m_referencePath = document().referenceModel;
-    m_reference.reset();
-    if (m_referencePath.empty())
-        return;
-    Diagnostics diagnostics;
-    if (auto triangles = readReference(m_referencePath, diagnostics))
-        m_reference = std::make_shared<const std::vector<glm::vec3>>(std::move(*triangles));
-    else
-        diagnostics.insert(diagnostics.begin(), makeError({m_referencePath, 0, 0},
-                                                          "the guide's reference model could not be loaded (the guide keeps its path)"));
-    if (!diagnostics.empty())
-        emit diagnosticsReported(diagnostics);
 }
 
 } // namespace rs::app

@@ -2,7 +2,7 @@
 // The editor's Qt adapter of one open guide: a core session::Session (the
 // document, history, selection, built rig and evaluated pose, Qt-free) plus
 // what needs files or Qt: the file path, autosave and recovery, opening and
-// saving, the template folders, the reference model's triangles and export.
+// saving, the template folders, the model loader and export.
 // Every core change is re-emitted as one `changed` signal carrying the typed
 // edit::Change, so each view refreshes only what it names.
 #include "io/ExportRequest.h"
@@ -69,13 +69,6 @@ public:
     Diagnostics reloadTemplates();
     model::InstanceId instanceNamed(const QString& name) const;
 
-    // A reference model (FBX, OBJ, glTF...) shown see-through for placing
-    // guides; empty path clears it. The guide keeps its path (one undo step).
-    // A file that fails to load fails (with the reader's diagnostics) and
-    // changes nothing; a success carries the reader's warnings.
-    Status loadReference(const QString& path);
-    // Shared with the viewport's scene (uploaded to the GPU once per model); null without one.
-    const std::shared_ptr<const std::vector<glm::vec3>>& referenceTriangles() const { return m_reference; }
 
 signals:
     void changed(const rs::edit::Change& change);
@@ -85,15 +78,11 @@ signals:
 
 private:
     void replaceWith(model::GuideDocument document, const QString& path);
-    // Shows the document's reference model when it changed (open, undo, redo).
-    void syncReference();
 
     Diagnostics m_templateDiagnostics;
     QString m_filePath;
     QByteArray m_baseHash; // contentHash of m_filePath as opened or last saved
     mutable bool m_ownsAutosave = false;
-    std::shared_ptr<const std::vector<glm::vec3>> m_reference;
-    std::string m_referencePath; // what m_reference shows
 };
 
 } // namespace rs::app

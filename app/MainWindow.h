@@ -67,8 +67,6 @@ public:
     bool exportRig(const io::ExportRequest& request);
     widgets::ExportDialog* exportDialog(); // File > Export..., made on first use
     void buildRig();
-    // Shows a model see-through for placing guides (Guide > Import Reference Model); empty clears it.
-    bool loadReference(const QString& path);
     void reloadTemplates();
 
     // The character (SkinActions.cpp). Guide > Add Model: reads the file and

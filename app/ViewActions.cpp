@@ -1,6 +1,6 @@
 // MainWindow's View and Guide menus: camera views and framing (the viewport
 // handles the same keys when it has focus), symmetric editing, grid snapping,
-// CV mode, duplicating and the reference model.
+// CV mode and duplicating.
 #include "MainWindow.h"
 
 #include "ActionKit.h"
@@ -67,34 +67,10 @@ void MainWindow::createViewActions()
         logStatus(ids.empty() ? Status::refused(tr("select the templates to duplicate").toStdString())
                              : m_session.duplicateInstances(ids));
     });
-    QAction* reference = makeAction(this, "importReference", tr("Import &Reference Model..."), {});
-    reference->setToolTip(tr("Show a model (FBX, OBJ, glTF...) see-through to place guides on"));
-    connect(reference, &QAction::triggered, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Reference model"), {},
-                                                          tr("Models (*.fbx *.obj *.gltf *.glb *.dae *.ply *.stl);;All files (*)"));
-        if (!path.isEmpty())
-            loadReference(path);
-    });
-    QAction* clearReference = makeAction(this, "clearReference", tr("&Clear Reference Model"), {});
-    connect(clearReference, &QAction::triggered, this, [this] { loadReference({}); });
     guide->addActions({symmetry, snap, cvMode});
     guide->addSeparator();
     guide->addAction(duplicate);
-    guide->addSeparator();
-    guide->addActions({reference, clearReference});
     findChild<QToolBar*>("mainToolBar")->addActions({symmetry, cvMode});
-}
-
-bool MainWindow::loadReference(const QString& path)
-{
-    const Status loaded = m_session.loadReference(path);
-    if (!path.isEmpty())
-        report(loaded.ok() ? tr("Reference model %1: %2 triangles").arg(path).arg(m_session.referenceTriangles() ? m_session.referenceTriangles()->size() / 3 : 0)
-                           : tr("Could not load the reference model %1").arg(path),
-               loaded.diagnostics());
-    else
-        logStatus(loaded);
-    return loaded.ok();
 }
 
 } // namespace rs::app

@@ -112,7 +112,6 @@ void MainWindow::refreshScene()
     viewport::Scene scene = viewport::makeScene(m_session.document(), drawnRig,
                                                 {s.instance, s.joint, s.joints, s.node, s.nodes, cvMode, s.cvs}, pose,
                                                 mirrored);
-    scene.reference = m_session.referenceTriangles();
     viewport::addCharacter(scene, m_session, m_characterWeights, rigMode);
     if (m_display.weights == viewport::WeightDisplay::SelectedJoint)
         scene.weightBone = isPainting() ? paintBone() : viewport::skinBoneFor(m_session, rigMode);

@@ -52,8 +52,6 @@ void applyDisplay(Scene& scene, const DisplayOptions& display, bool rigMode)
         if (rigMode)
             scene.axes.clear();
     }
-    if (!display.reference)
-        scene.reference.reset();
     if (!display.labels)
         scene.labels.clear();
     if (!display.axes)

@@ -80,7 +80,6 @@ struct DisplayOptions {
     bool shapes = true;
     bool controllers = true;
     bool skinJoints = true;
-    bool reference = true;
     bool labels = false;
     bool axes = false;
     bool meshes = true;
@@ -106,9 +105,6 @@ struct Scene {
     // The other side of mirrored branches (`branches: [L, R]`): derived from the
     // authored guide, drawn dimmer, not pickable; they follow every edit.
     std::vector<SceneJoint> mirrorJoints;
-    // A see-through reference model, triangles; shared, so the renderer sends
-    // it to the GPU once per model, not once per scene.
-    std::shared_ptr<const std::vector<glm::vec3>> reference;
     std::vector<SceneCv> cvs;             // CV mode: pickable control points
     std::vector<SceneCurve> hulls;        // CV mode: the hulls joining them
     std::vector<SceneCurve> overlay;      // drawn last, on top (the gizmo, the paint brush)

@@ -17,7 +17,7 @@ enum class ChangeKind : std::uint32_t {
     Shapes = 1u << 4,     // controller shape edits
     Names = 1u << 5,      // name overrides
     Pose = 1u << 6,       // the test pose
-    Reference = 1u << 7,  // the reference model
+    // 1u << 7: free (was the reference model, now one of the models)
     History = 1u << 8,    // the undo stack or its clean state
     Selection = 1u << 9,  // session: the selection
     Rig = 1u << 10,       // session: the rig was rebuilt (node indices may have moved)

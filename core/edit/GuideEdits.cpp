@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cctype>
-#include <filesystem>
 #include <optional>
 
 namespace rs::edit {
@@ -333,17 +332,6 @@ Status setPose(History& history, model::PoseValues pose, const std::string& what
         return Status::refused("the pose did not change");
     history.push(std::make_unique<SetDocumentField<model::PoseValues>>(&GuideDocument::pose, ChangeKind::Pose, history.document().pose,
                                                                        std::move(pose), what));
-    return {};
-}
-
-Status setReferenceModel(History& history, const std::string& path)
-{
-    const std::string& current = history.document().referenceModel;
-    if (path == current)
-        return {};
-    const std::string what = path.empty() ? "Clear reference model"
-                                          : "Reference model " + std::filesystem::path(path).filename().string();
-    history.push(std::make_unique<SetDocumentField<std::string>>(&GuideDocument::referenceModel, ChangeKind::Reference, current, path, what));
     return {};
 }
 

@@ -54,9 +54,6 @@ Status replaceInstance(History& history, model::TemplateInstance instance, const
 // nothing changes, so no empty step lands on the stack.
 Status setPose(History& history, model::PoseValues pose, const std::string& what);
 
-// The reference model shown while placing guides (a file path; empty clears
-// it). One undo step; no step when it does not change. The file is not read here.
-Status setReferenceModel(History& history, const std::string& path);
 
 bool isValidInstanceName(const std::string& name);
 

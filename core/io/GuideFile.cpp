@@ -4,6 +4,7 @@
 #include "io/GuidePose.h"
 #include "io/YamlSupport.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -259,14 +260,18 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
         if (key == "name") { if (auto s = r.string(kv.second, "name")) doc.name = *s; }
         else if (key == "naming") readNaming(r, kv.second, doc.naming);
         else if (key == "pose" || key == "legacy_pose") readPose(r, kv.second, doc.pose, legacyPose);
-        else if (key == "reference_model") { if (auto s = r.string(kv.second, "reference_model")) doc.referenceModel = *s; }
+        else if (key == "reference_model") { // an older guide's one see-through model: now one of its models
+            if (auto s = r.string(kv.second, "reference_model"); s && !s->empty() &&
+                std::find(doc.models.begin(), doc.models.end(), *s) == doc.models.end())
+                doc.models.insert(doc.models.begin(), *s);
+        }
         else if (key == "models") {
             if (kv.second.IsNull()) continue;
             if (!r.expectSequence(kv.second, "models")) continue;
             for (const auto& item : kv.second)
                 if (auto s = r.string(item, "models")) {
                     if (s->empty()) r.error(item, "a model path is empty");
-                    else doc.models.push_back(*s);
+                    else if (std::find(doc.models.begin(), doc.models.end(), *s) == doc.models.end()) doc.models.push_back(*s);
                 }
         }
         else if (key == "instances") {
@@ -291,11 +296,6 @@ Result<GuideDocument> readGuideFile(const std::string& path)
     if (!text)
         return Result<GuideDocument>::failure(text.takeDiagnostics());
     auto doc = readGuideText(*text, path);
-    if (doc && !doc->referenceModel.empty()) { // relative to the guide file
-        const fs::path reference(doc->referenceModel);
-        if (reference.is_relative())
-            doc->referenceModel = (fs::absolute(path).parent_path() / reference).lexically_normal().string();
-    }
     if (doc)
         for (std::string& model : doc->models)
             if (fs::path(model).is_relative())
@@ -323,12 +323,6 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
                 << ", side: " << quoteIfNeeded(n.side) << ", suffixes: " << (n.suffixes ? "on" : "off")
                 << ", lowercase: " << (n.lowercase ? "on" : "off") << "}\n";
         }
-    }
-    if (!doc.referenceModel.empty()) {
-        std::string reference = doc.referenceModel;
-        if (!directory.empty() && fs::path(reference).is_absolute()) // kept relative so the guide and model move together
-            reference = fs::path(reference).lexically_relative(fs::absolute(directory)).string();
-        out << "reference_model: " << quoteIfNeeded(reference.empty() ? doc.referenceModel : reference) << "\n";
     }
     if (!doc.models.empty()) {
         out << "models:\n";

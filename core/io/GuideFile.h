@@ -10,7 +10,8 @@
 
 namespace rs::io {
 
-// A relative `reference_model` is resolved against the file's folder.
+// Relative `models:` paths are resolved against the file's folder (an older
+// guide's `reference_model:` is read as the first of its models).
 Result<model::GuideDocument> readGuideFile(const std::string& path);
 Result<model::GuideDocument> readGuideText(const std::string& text, const std::string& displayName);
 std::string writeGuideText(const model::GuideDocument& document);

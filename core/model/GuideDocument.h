@@ -109,12 +109,11 @@ public:
     NamingRules naming;              // how rig nodes are named (preset "mikan" unless the file says)
     PoseValues pose;                 // edited through rs::edit::SetPose
     LegacyPoseValues legacyPose;     // unmatched records of an older guide, kept
-    // A model shown see-through while placing guides (display only, not built).
-    // An absolute path in memory; the guide file keeps it relative to itself.
-    std::string referenceModel;
     // The character's models (any format io::importModel reads), bound to the
-    // rig by skin weights kept beside the guide (`<guide>.weights`). Absolute
-    // paths in memory; the guide file keeps them relative to itself.
+    // rig by skin weights kept beside the guide (`<guide>.weights`); drawn
+    // see-through for placing guides until bound. Absolute paths in memory;
+    // the guide file keeps them relative to itself. (An older guide's
+    // `reference_model:` is read as one of them.)
     std::vector<std::string> models;
     // The skin weights of the models' meshes, kept in `<guide>.weights` beside
     // the guide file (io/GuideBindings.h), not in it. A record whose model or

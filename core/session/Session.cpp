@@ -333,6 +333,5 @@ Status Session::reparentInstance(model::InstanceId id, model::JointId hookJoint)
     return edit::reparentInstance(m_history, id, hookJoint);
 }
 
-Status Session::setReferenceModel(const std::string& path) { return edit::setReferenceModel(m_history, path); }
 
 } // namespace rs::session

@@ -161,7 +161,6 @@ public:
     Status setNameOverride(model::InstanceId id, const std::string& token, const std::string& name);
     Status duplicateInstances(const std::vector<model::InstanceId>& ids);
     Status reparentInstance(model::InstanceId id, model::JointId hookJoint);
-    Status setReferenceModel(const std::string& path);
 
     // --- the character (SessionSkin.cpp): the guide's models, read through
     // the host's loader (io::importModel; the session reads no file itself),

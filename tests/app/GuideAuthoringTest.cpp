@@ -1,6 +1,6 @@
 // Guide authoring in the viewport with the real widgets: picking and box
 // selection, the W/E/R gizmo on guide joints, views and framing, the
-// see-through reference model.
+// see-through character model.
 #include "EditorTestSupport.h"
 
 #include "LogPanel.h"
@@ -116,36 +116,38 @@ TEST(GuideAuthoring, BoxSelectingFramesAndMovesSeveralJointsTogether)
     EXPECT_TRUE(w.action("viewPerspective")->isChecked());
 }
 
-TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
+TEST(GuideAuthoring, AModelIsShownSeeThroughUntilBoundAndABadOneIsReported)
 {
     Editor editor;
     app::MainWindow& w = editor.window;
-    // A reference character: the biped's own proxy mesh exported as glTF.
+    // A character to place guides on: the biped's own proxy mesh exported as glTF.
     w.buildRig();
     io::ExportRequest request;
     request.path = outputPath("reference.glb");
     request.proxyVertices = 6000;
     ASSERT_TRUE(w.exportRig(request));
     w.session().setMode(app::EditorMode::Guide);
-    ASSERT_TRUE(w.loadReference(QString::fromStdString(request.path)));
-    EXPECT_GT(w.viewportWidget()->scene().reference->size(), 3000u);
-    EXPECT_EQ(w.viewportWidget()->scene().reference->size() % 3, 0u);
-    QTest::keyClick(w.viewportWidget(), Qt::Key_1);
-    w.viewportWidget()->frameAll();
+    ASSERT_TRUE(w.addModel(QString::fromStdString(request.path)));
+    auto* view = w.viewportWidget();
+    ASSERT_EQ(view->scene().meshes.size(), 1u);
+    EXPECT_FALSE(view->scene().meshes[0].skinned) << "see-through until bound";
+    const std::size_t modelVertices = view->scene().meshes[0].data().vertexCount();
+    EXPECT_GT(modelVertices, 3000u);
+    QTest::keyClick(view, Qt::Key_1);
+    view->frameAll();
     QApplication::processEvents();
     w.grab().save(QString::fromStdString(outputPath("reference-model.png")));
 
     // Persistent GPU buffers: a repaint that only moves the camera sends no
     // scene vertices, and a guide edit sends the guide but not the model again.
-    auto* view = w.viewportWidget();
     auto repaint = [&] {
         QSignalSpy swapped(view, &QOpenGLWidget::frameSwapped);
         view->update();
         return swapped.wait(2000);
     };
     ASSERT_TRUE(repaint());
-    const std::size_t modelVertices = view->scene().reference->size();
     std::uint64_t before = view->verticesUploaded();
+    std::uint64_t meshBefore = view->meshVerticesUploaded();
     ASSERT_TRUE(repaint());
     EXPECT_LT(view->verticesUploaded() - before, 500u) << "only the gizmo";
     const model::JointId neck = w.session().document().instanceNamed("neck")->joints[1].id;
@@ -155,37 +157,38 @@ TEST(GuideAuthoring, AReferenceModelIsShownSeeThroughAndABadOneIsReported)
     ASSERT_TRUE(edit::setJointTransform(w.session().history(), neck, moved).ok());
     ASSERT_TRUE(repaint());
     EXPECT_GT(view->verticesUploaded() - before, 10u) << "the moved guide is sent";
-    EXPECT_LT(view->verticesUploaded() - before, modelVertices) << "the model is not sent again";
+    EXPECT_EQ(view->meshVerticesUploaded(), meshBefore) << "the model is not sent again";
     w.action("undo")->trigger();
 
     const std::string broken = outputPath("broken.obj");
     std::ofstream(broken) << "this is not a model\n";
     const int messages = w.log()->count();
-    EXPECT_FALSE(w.loadReference(QString::fromStdString(broken)));
+    EXPECT_FALSE(w.addModel(QString::fromStdString(broken)));
     EXPECT_GT(w.log()->count(), messages);
     EXPECT_TRUE(w.log()->item(w.log()->count() - 1)->text().contains("broken.obj"));
-    EXPECT_GT(w.viewportWidget()->scene().reference->size(), 3000u) << "the shown model stays";
-    EXPECT_EQ(w.session().document().referenceModel, request.path) << "and the guide keeps the good one";
+    EXPECT_EQ(view->scene().meshes.size(), 1u) << "the shown model stays";
+    EXPECT_EQ(w.session().document().models, std::vector<std::string>{request.path}) << "and the guide keeps the good one";
 
-    // The guide remembers its reference model (relative to the guide file): reopened, it shows again.
-    EXPECT_EQ(w.session().history().undoText(), "Reference model reference.glb");
+    // The guide remembers its model (relative to the guide file): reopened, it shows again.
+    EXPECT_EQ(w.session().history().undoText(), "Add model reference.glb");
     const QString saved = QString::fromStdString(outputPath("with-reference.yml"));
     Diagnostics diagnostics;
     ASSERT_TRUE(w.session().save(saved, diagnostics)) << formatAll(diagnostics);
     std::ifstream in(saved.toStdString());
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("\nreference_model: reference.glb\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\nmodels:\n  - reference.glb\n"), std::string::npos) << text;
     {
         Editor second;
         ASSERT_TRUE(second.window.openFile(saved));
-        EXPECT_EQ(second.window.viewportWidget()->scene().reference->size(), w.viewportWidget()->scene().reference->size());
+        ASSERT_EQ(second.window.viewportWidget()->scene().meshes.size(), 1u);
+        EXPECT_EQ(second.window.viewportWidget()->scene().meshes[0].data().vertexCount(), modelVertices);
     }
 
-    w.action("clearReference")->trigger();
-    EXPECT_FALSE(w.viewportWidget()->scene().reference);
-    EXPECT_TRUE(w.session().document().referenceModel.empty());
     w.action("undo")->trigger();
-    EXPECT_GT(w.viewportWidget()->scene().reference->size(), 3000u) << "undoing the clear shows it again";
+    EXPECT_TRUE(view->scene().meshes.empty());
+    EXPECT_TRUE(w.session().document().models.empty());
+    w.action("redo")->trigger();
+    EXPECT_EQ(view->scene().meshes.size(), 1u) << "redoing the add shows it again";
 }
 
 TEST(GuideAuthoring, TheGizmoEditsASelectedControllersShapeInGuideMode)

@@ -1,5 +1,6 @@
 #include "core/TestSupport.h"
 #include "edit/GuideEdits.h"
+#include "edit/SkinEdits.h"
 #include "io/GuideFile.h"
 
 #include <gtest/gtest.h>
@@ -102,31 +103,36 @@ TEST(GuideFile, KeepsNamingRulesAndRejectsAnUnknownPreset)
     EXPECT_EQ(bad.diagnostics()[0].format(), "g.yml:2:9: error: unknown naming preset 'maya' (known: mikan, suffix)");
 }
 
-TEST(GuideFile, KeepsTheReferenceModelRelativeToTheGuideAndUndoesItsChange)
+TEST(GuideFile, KeepsModelsRelativeToTheGuideAndReadsAnOlderReferenceModelAsOne)
 {
-    const auto dir = std::filesystem::temp_directory_path() / "rigsmith-guidefile-reference";
+    const auto dir = std::filesystem::temp_directory_path() / "rigsmith-guidefile-models";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir / "guides");
     model::GuideDocument doc = test::loadSample("biped");
     const model::GuideDocument original = doc;
     edit::History history(doc);
     const std::string model = (dir / "scans" / "actor.fbx").string();
-    ASSERT_TRUE(test::succeeded(edit::setReferenceModel(history, model)));
-    EXPECT_EQ(history.undoText(), "Reference model actor.fbx");
-    EXPECT_TRUE(test::succeeded(edit::setReferenceModel(history, model)));
-    EXPECT_EQ(history.size(), 1u) << "no step when nothing changes";
+    ASSERT_TRUE(test::succeeded(edit::addModel(history, model)));
+    EXPECT_EQ(history.undoText(), "Add model actor.fbx");
+    EXPECT_NE(test::refusal(edit::addModel(history, model)), "") << "the same model twice";
 
     const std::string path = (dir / "guides" / "hero.yml").string();
     ASSERT_TRUE(io::saveGuideFile(doc, path).ok());
     std::ifstream in(path);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("\nreference_model: \"../scans/actor.fbx\"\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\nmodels:\n  - \"../scans/actor.fbx\"\n"), std::string::npos) << text;
     auto read = io::readGuideFile(path);
     ASSERT_TRUE(read) << formatAll(read.diagnostics());
-    EXPECT_EQ(read->referenceModel, model) << "absolute again in memory";
+    EXPECT_EQ(read->models, std::vector<std::string>{model}) << "absolute again in memory";
     EXPECT_TRUE(*read == doc);
 
     history.undo();
     EXPECT_TRUE(doc == original);
-    EXPECT_EQ(io::writeGuideText(doc).find("reference_model"), std::string::npos);
+
+    // A guide written before models existed: its reference model is the first model, written back as one.
+    std::ofstream(path) << io::writeGuideText(original) << "reference_model: \"../scans/actor.fbx\"\n";
+    auto older = io::readGuideFile(path);
+    ASSERT_TRUE(older) << formatAll(older.diagnostics());
+    EXPECT_EQ(older->models, std::vector<std::string>{model});
+    EXPECT_EQ(io::writeGuideText(*older).find("reference_model"), std::string::npos);
 }

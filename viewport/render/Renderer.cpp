@@ -68,7 +68,6 @@ const glm::dvec3 kSelectedColor(1.0, 1.0, 1.0);
 const glm::dvec3 kCvColor(0.85, 0.45, 1.0);         // CV mode, as Maya's violet CVs
 const glm::dvec3 kSelectedCvColor(1.0, 0.95, 0.2);
 const glm::dvec3 kSkinColor(0.3, 0.9, 0.9);
-const glm::dvec3 kReferenceColor(0.55, 0.6, 0.7);
 
 } // namespace
 
@@ -76,7 +75,7 @@ const glm::dvec3 kReferenceColor(0.55, 0.6, 0.7);
 // uploaded once, the reference model when the model changes, the scene's
 // layers when the scene changes (not when only the camera moves), the gizmo
 // (a few hundred vertices) every frame.
-enum Layer { Grid, Reference, Lines, Curves, SkinPoints, MirrorPoints, GuidePoints, Hulls, CvPoints, Overlay, OverlayPoints, kLayerCount };
+enum Layer { Grid, Lines, Curves, SkinPoints, MirrorPoints, GuidePoints, Hulls, CvPoints, Overlay, OverlayPoints, kLayerCount };
 
 struct Renderer::GlState {
     GLuint program = 0;
@@ -87,7 +86,6 @@ struct Renderer::GlState {
     };
     Buffer buffers[kLayerCount];
     std::uint64_t sceneRevision = ~std::uint64_t(0); // what the scene layers hold
-    const void* reference = nullptr;                // the reference model the buffer holds
     std::uint64_t uploads = 0;                      // vertex uploads so far (tests, measurements)
 
     void upload(Layer layer, const std::vector<Vertex>& vertices)
@@ -235,15 +233,6 @@ void Renderer::uploadScene(const Scene& scene)
     m_gl->upload(Curves, curves);
     m_gl->upload(Hulls, hulls);
     m_gl->upload(CvPoints, cvPoints);
-    const void* reference = scene.reference ? static_cast<const void*>(scene.reference.get()) : nullptr;
-    if (reference != m_gl->reference) { // a model of 100k triangles is not sent again on every edit
-        std::vector<Vertex> triangles;
-        if (scene.reference)
-            for (const glm::vec3& p : *scene.reference)
-                push(triangles, glm::dvec3(p), kReferenceColor);
-        m_gl->upload(Reference, triangles);
-        m_gl->reference = reference;
-    }
     m_gl->sceneRevision = scene.revision;
 }
 
@@ -286,18 +275,13 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     m_meshes->draw(scene, meshViewProjection, viewDirection, false); // skinned: opaque
     glUseProgram(m_gl->program);
     const bool seeThroughMeshes = m_meshes->hasSeeThrough(scene);
-    if (m_gl->buffers[Reference].count > 0 || seeThroughMeshes) { // see-through: guides stay visible inside the model
+    if (seeThroughMeshes) { // see-through: guides stay visible inside the model
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
-        if (seeThroughMeshes) {
-            m_meshes->draw(scene, meshViewProjection, viewDirection, true);
-            glUseProgram(m_gl->program);
-            glBindVertexArray(0);
-        }
-        glUniform1f(m_gl->alpha, 0.12f);
-        draw(Reference, GL_TRIANGLES, 1.0f);
-        glUniform1f(m_gl->alpha, 1.0f);
+        m_meshes->draw(scene, meshViewProjection, viewDirection, true);
+        glUseProgram(m_gl->program);
+        glBindVertexArray(0);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
