@@ -2,9 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <set>
 
 namespace rs::skin {
+
+std::string formatExportTime(std::int64_t microseconds)
+{
+    const std::time_t seconds = std::time_t(microseconds / 1000000);
+    std::tm utc{};
+    if (!gmtime_r(&seconds, &utc))
+        return "(no date)";
+    char text[40];
+    std::strftime(text, sizeof(text), "%Y-%m-%d %H:%M:%S UTC", &utc);
+    return text;
+}
 
 std::vector<glm::vec3> vertexNormals(const model::Mesh& mesh)
 {

@@ -87,6 +87,9 @@ struct ChunkExportOptions {
 // weights do not fit the mesh or the bones, or a vertex id is out of range.
 Result<SkinChunk> makeSkinChunk(const ChunkSource& source, const std::vector<SkinBone>& bones, const ChunkExportOptions& options);
 
+// An export time as people read it: "2024-05-01 13:45:12 UTC".
+std::string formatExportTime(std::int64_t microsecondsSince1970);
+
 // Area-weighted vertex normals of a mesh's triangles (unit; +Y where a vertex has none).
 std::vector<glm::vec3> vertexNormals(const model::Mesh& mesh);
 

@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <map>
 #include <optional>
 
@@ -51,17 +50,6 @@ Status validateTransferOptions(const TransferOptions& o)
     if (o.maxInfluences < 0 || o.maxInfluences > 16)
         refuse("the influence limit must be from 1 to 16 (0: the source's)");
     return problems.empty() ? Status() : Status::failure(std::move(problems));
-}
-
-std::string formatExportTime(std::int64_t microseconds)
-{
-    const std::time_t seconds = std::time_t(microseconds / 1000000);
-    std::tm utc{};
-    if (!gmtime_r(&seconds, &utc))
-        return "(no date)";
-    char text[40];
-    std::strftime(text, sizeof(text), "%Y-%m-%d %H:%M:%S UTC", &utc);
-    return text;
 }
 
 Result<std::vector<SkinChunk>> mergeChunks(std::vector<SkinChunk> chunks)

@@ -116,7 +116,4 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
 Result<std::vector<model::MeshWeights>> importChunks(const std::vector<SkinChunk>& chunks, const std::vector<const model::Mesh*>& targets,
                                                      const TransferOptions& options, std::vector<MeshImportReport>* reports = nullptr);
 
-// "2024-05-01 13:45:12 UTC"
-std::string formatExportTime(std::int64_t microsecondsSince1970);
-
 } // namespace rs::skin
