@@ -1,11 +1,12 @@
 // The fallback methods of skin/Transfer.h: the source point cloud (vertices,
-// triangle fans, normals, weights, a nanoflann KD-tree) and, per target
+// triangle fans, normals, weights, skin/NearestPoints) and, per target
 // vertex, closest point on triangles or closest neighbours, with the normal
 // filter; then the optional smoothing steps. Target vertices are done in
 // slices (progress and cancel between them), each slice in parallel (oneTBB).
 #include "skin/Transfer.h"
 
-#include <nanoflann.hpp>
+#include "skin/NearestPoints.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -18,18 +19,9 @@ namespace rs::skin {
 
 namespace {
 
-struct Cloud {
-    const std::vector<glm::vec3>* points = nullptr;
-    std::size_t kdtree_get_point_count() const { return points->size(); }
-    float kdtree_get_pt(std::size_t i, std::size_t d) const { return (*points)[i][int(d)]; }
-    template <class B>
-    bool kdtree_get_bbox(B&) const { return false; }
-};
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, Cloud>, Cloud, 3, std::uint32_t>;
-
-constexpr int kFanVertices = 3;   // closest point: the triangle fans of this many nearest vertices
+constexpr int kFanVertices = 2;   // closest point: the triangle fans of this many nearest vertices
 constexpr int kFilterCandidates = 16; // the normal filter looks among this many nearest vertices
-constexpr int kMaxCandidates = 32;
+constexpr int kMaxCandidates = NearestPoints::kMaxK;
 constexpr int kMixCapacity = 64;  // distinct joints one target vertex can blend
 constexpr float kCoincident = 1e-5f; // metres: a target vertex this near a source vertex is at it
 
@@ -39,11 +31,14 @@ struct TransferSource::Data {
     std::vector<glm::vec3> positions, normals;
     std::vector<std::uint32_t> triangles;             // flat, three corners each
     std::vector<glm::vec3> faceNormals;               // unit (zero for a degenerate triangle)
+    struct Corner {
+        glm::vec3 a, ab, ac;                          // a triangle's first corner and its two edges from it
+    };
+    std::vector<Corner> geometry;                     // per triangle
     std::vector<std::uint32_t> fanOffsets, fans;      // vertex -> the triangles around it
     model::MeshWeights weights;                       // per vertex; joints: the union of the chunks'
     int maxInfluences = 0;                            // the most one vertex has
-    Cloud cloud;
-    std::unique_ptr<Tree> tree;
+    std::unique_ptr<NearestPoints> nearest;
 };
 
 namespace {
@@ -120,23 +115,22 @@ Result<std::shared_ptr<const Data>> build(const std::vector<const SkinChunk*>& c
         const glm::vec3 normal = glm::cross(d->positions[d->triangles[3 * t + 1]] - a, d->positions[d->triangles[3 * t + 2]] - a);
         const float length = glm::length(normal);
         d->faceNormals[t] = length > 0.0f ? normal / length : glm::vec3(0.0f);
+        d->geometry.push_back({a, d->positions[d->triangles[3 * t + 1]] - a, d->positions[d->triangles[3 * t + 2]] - a});
     }
-    d->cloud.points = &d->positions;
-    d->tree = std::make_unique<Tree>(3, d->cloud, nanoflann::KDTreeSingleIndexAdaptorParams(12));
-    d->tree->buildIndex();
+    d->nearest = std::make_unique<NearestPoints>(d->positions);
     return Out(std::shared_ptr<const Data>(std::move(d)));
 }
 
 // Barycentric coordinates (of a, b, c) of the point of triangle abc closest to
-// p (Ericson, Real-Time Collision Detection, 5.1.5). A degenerate triangle
-// gives its nearest corner.
-glm::vec3 closestOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
+// p (Ericson, Real-Time Collision Detection, 5.1.5), from a and the edges
+// ab, ac. A degenerate triangle gives its nearest corner.
+glm::vec3 closestOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& ab, const glm::vec3& ac)
 {
-    const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
+    const glm::vec3 ap = p - a;
     const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
     if (d1 <= 0.0f && d2 <= 0.0f)
         return {1, 0, 0};
-    const glm::vec3 bp = p - b;
+    const glm::vec3 bp = ap - ab;
     const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
     if (d3 >= 0.0f && d4 <= d3)
         return {0, 1, 0};
@@ -145,7 +139,7 @@ glm::vec3 closestOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::v
         const float t = d1 / (d1 - d3);
         return {1 - t, t, 0};
     }
-    const glm::vec3 cp = p - c;
+    const glm::vec3 cp = ap - ac;
     const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
     if (d6 >= 0.0f && d5 <= d6)
         return {0, 0, 1};
@@ -196,32 +190,36 @@ struct Mix {
 // Target weights: `capacity` slots per vertex (the largest first), normalised.
 struct Slots {
     int capacity = 4;
-    std::vector<std::uint32_t> joint;
-    std::vector<float> weight;
+    std::vector<model::Influence> slot; // capacity per vertex; the first count[v] used
     std::vector<std::uint8_t> count;
     // The `capacity` largest of `mix`, normalised; `fallbackJoint` when nothing weighs.
     void store(std::size_t v, Mix& mix, std::uint32_t fallbackJoint)
     {
+        // Insertion sort, largest first (ties: the lower joint): a handful of entries.
         std::array<int, kMixCapacity> order;
-        for (int k = 0; k < mix.size; ++k)
-            order[k] = k;
+        for (int k = 0; k < mix.size; ++k) {
+            int at = k;
+            for (; at > 0; --at) {
+                const int o = order[at - 1];
+                if (mix.weight[o] > mix.weight[k] || (mix.weight[o] == mix.weight[k] && mix.joint[o] < mix.joint[k]))
+                    break;
+                order[at] = o;
+            }
+            order[at] = k;
+        }
         const int keep = std::min(capacity, mix.size);
-        std::partial_sort(order.begin(), order.begin() + keep, order.begin() + mix.size,
-                          [&](int a, int b) { return mix.weight[a] > mix.weight[b] || (mix.weight[a] == mix.weight[b] && mix.joint[a] < mix.joint[b]); });
         float sum = 0.0f;
         int kept = 0;
         for (int k = 0; k < keep && mix.weight[order[k]] > 0.0f; ++k, ++kept)
             sum += mix.weight[order[k]];
         const std::size_t at = v * std::size_t(capacity);
         if (!(sum > 0.0f) || !std::isfinite(sum)) {
-            joint[at] = fallbackJoint;
-            weight[at] = 1.0f;
+            slot[at] = {fallbackJoint, 1.0f};
             count[v] = 1;
             return;
         }
         for (int k = 0; k < kept; ++k) {
-            joint[at + k] = mix.joint[order[k]];
-            weight[at + k] = mix.weight[order[k]] / sum;
+            slot[at + k] = {mix.joint[order[k]], mix.weight[order[k]] / sum};
         }
         count[v] = std::uint8_t(kept);
     }
@@ -236,11 +234,7 @@ struct Query {
     // Up to `k` nearest source vertices, nearest first; returns how many.
     int nearest(const glm::vec3& p, int k, std::uint32_t* index, float* distance2) const
     {
-        k = int(std::min<std::size_t>(std::size_t(k), d.positions.size()));
-        nanoflann::KNNResultSet<float, std::uint32_t> found{std::size_t(k)};
-        found.init(index, distance2);
-        d.tree->findNeighbors(found, &p.x, nanoflann::SearchParams());
-        return int(found.size());
+        return d.nearest->nearest(p, k, index, distance2);
     }
     bool passes(const glm::vec3& a, const glm::vec3& b) const { return glm::dot(a, b) >= float(o.normalTolerance); }
 
@@ -252,7 +246,13 @@ struct Query {
         float best = std::numeric_limits<float>::infinity();
         std::uint32_t bestTriangle = ~0u, bestVertex = ~0u;
         glm::vec3 bestBary(0.0f);
+        std::array<std::uint32_t, 32> tested; // fans overlap: each triangle once
+        int testedCount = 0;
         for (int i = 0; i < count; ++i) {
+            // Inside a triangle of the nearest vertex's fan (not on its rim):
+            // the next fans would only hold points farther on a smooth surface.
+            if (i > 0 && bestTriangle != ~0u && bestBary.x > 0.0f && bestBary.y > 0.0f && bestBary.z > 0.0f)
+                break;
             const std::uint32_t v = vertices[i];
             bool any = false;
             for (std::uint32_t f = d.fanOffsets[v]; f < d.fanOffsets[v + 1]; ++f) {
@@ -260,10 +260,14 @@ struct Query {
                 if (normal && !passes(d.faceNormals[t], *normal))
                     continue;
                 any = true;
-                const std::uint32_t* c = &d.triangles[3 * t];
-                const glm::vec3 bary = closestOnTriangle(p, d.positions[c[0]], d.positions[c[1]], d.positions[c[2]]);
-                const glm::vec3 q = bary.x * d.positions[c[0]] + bary.y * d.positions[c[1]] + bary.z * d.positions[c[2]];
-                const float d2 = glm::dot(q - p, q - p);
+                if (std::find(tested.begin(), tested.begin() + testedCount, t) != tested.begin() + testedCount)
+                    continue;
+                if (testedCount < int(tested.size()))
+                    tested[testedCount++] = t;
+                const Data::Corner& g = d.geometry[t];
+                const glm::vec3 bary = closestOnTriangle(p, g.a, g.ab, g.ac);
+                const glm::vec3 offset = g.a + bary.y * g.ab + bary.z * g.ac - p;
+                const float d2 = glm::dot(offset, offset);
                 if (d2 < best) {
                     best = d2;
                     bestTriangle = t;
@@ -311,34 +315,41 @@ struct Query {
         std::array<std::uint32_t, kMaxCandidates> index;
         std::array<float, kMaxCandidates> distance2;
         const bool neighbours = o.method == TransferMethod::ClosestNeighbours;
-        const int wanted = o.normalFilter ? std::max(kFilterCandidates, neighbours ? o.neighbourCount : 0)
-                                          : neighbours ? o.neighbourCount : kFanVertices;
-        const int found = nearest(p, std::min(wanted, kMaxCandidates), index.data(), distance2.data());
+        const int wanted = neighbours ? o.neighbourCount : kFanVertices;
+        int found = nearest(p, wanted, index.data(), distance2.data());
         nearestDistance = found > 0 ? std::sqrt(distance2[0]) : 0.0f;
-        if (!o.normalFilter) {
-            if (neighbours)
-                this->neighbours(index.data(), distance2.data(), found, mix);
-            else
-                closestPoint(p, index.data(), distance2.data(), std::min(found, kFanVertices), nullptr, mix);
-            return neighbours ? kNeighbours : kClosestPoint;
-        }
-        // The normal filter: keep the candidates facing the target's way.
-        int kept = 0;
-        for (int i = 0; i < found; ++i)
-            if (passes(d.normals[index[i]], normal)) {
-                index[kept] = index[i];
-                distance2[kept++] = distance2[i];
+        if (o.normalFilter) {
+            // The normal filter: the candidates facing the target's way. When
+            // the nearest all do (most vertices), they are what a wider search
+            // would keep first; otherwise look among the kFilterCandidates nearest.
+            bool all = true;
+            for (int i = 0; i < found && all; ++i)
+                all = passes(d.normals[index[i]], normal);
+            if (!all)
+                found = nearest(p, std::max(kFilterCandidates, wanted), index.data(), distance2.data());
+            int kept = 0;
+            for (int i = 0; i < found; ++i)
+                if (passes(d.normals[index[i]], normal)) {
+                    index[kept] = index[i];
+                    distance2[kept++] = distance2[i];
+                }
+            if (kept > 0 && neighbours) {
+                this->neighbours(index.data(), distance2.data(), std::min(kept, wanted), mix);
+                return kNeighbours;
             }
-        if (kept > 0 && neighbours) {
-            this->neighbours(index.data(), distance2.data(), kept, mix);
+            if (kept > 0 && closestPoint(p, index.data(), distance2.data(), std::min(kept, kFanVertices), &normal, mix))
+                return kClosestPoint;
+            // Nothing faces the target's way: closest point, unfiltered.
+            found = nearest(p, kFanVertices, index.data(), distance2.data());
+            closestPoint(p, index.data(), distance2.data(), found, nullptr, mix);
+            return kFilterFallback;
+        }
+        if (neighbours) {
+            this->neighbours(index.data(), distance2.data(), found, mix);
             return kNeighbours;
         }
-        if (kept > 0 && closestPoint(p, index.data(), distance2.data(), std::min(kept, kFanVertices), &normal, mix))
-            return kClosestPoint;
-        // Nothing faces the target's way: closest point, unfiltered.
-        const int near = nearest(p, kFanVertices, index.data(), distance2.data());
-        closestPoint(p, index.data(), distance2.data(), near, nullptr, mix);
-        return kFilterFallback;
+        closestPoint(p, index.data(), distance2.data(), found, nullptr, mix);
+        return kClosestPoint;
     }
 };
 
@@ -368,8 +379,8 @@ void edgeNeighbours(const model::Mesh& mesh, std::vector<std::uint32_t>& offsets
 float weightOf(const Slots& s, std::size_t v, std::uint32_t joint)
 {
     for (int k = 0; k < s.count[v]; ++k)
-        if (s.joint[v * s.capacity + k] == joint)
-            return s.weight[v * s.capacity + k];
+        if (s.slot[v * s.capacity + k].joint == joint)
+            return s.slot[v * s.capacity + k].weight;
     return 0.0f;
 }
 
@@ -377,10 +388,10 @@ float weightOf(const Slots& s, std::size_t v, std::uint32_t joint)
 bool differs(const Slots& s, std::size_t v, std::size_t u, float threshold)
 {
     for (int k = 0; k < s.count[v]; ++k)
-        if (std::abs(s.weight[v * s.capacity + k] - weightOf(s, u, s.joint[v * s.capacity + k])) > threshold)
+        if (std::abs(s.slot[v * s.capacity + k].weight - weightOf(s, u, s.slot[v * s.capacity + k].joint)) > threshold)
             return true;
     for (int k = 0; k < s.count[u]; ++k)
-        if (std::abs(s.weight[u * s.capacity + k] - weightOf(s, v, s.joint[u * s.capacity + k])) > threshold)
+        if (std::abs(s.slot[u * s.capacity + k].weight - weightOf(s, v, s.slot[u * s.capacity + k].joint)) > threshold)
             return true;
     return false;
 }
@@ -406,10 +417,10 @@ std::size_t smooth(const model::Mesh& target, const std::vector<float>& nearest,
                     continue;
                 mix.size = 0;
                 for (int k = 0; k < slots.count[v]; ++k)
-                    mix.add(slots.joint[v * slots.capacity + k], slots.weight[v * slots.capacity + k]);
+                    mix.add(slots.slot[v * slots.capacity + k].joint, slots.slot[v * slots.capacity + k].weight);
                 for (std::uint32_t e = offsets[v]; e < offsets[v + 1]; ++e)
                     for (int k = 0; k < slots.count[around[e]]; ++k)
-                        mix.add(slots.joint[around[e] * slots.capacity + k], slots.weight[around[e] * slots.capacity + k]);
+                        mix.add(slots.slot[around[e] * slots.capacity + k].joint, slots.slot[around[e] * slots.capacity + k].weight);
                 next.store(v, mix, fallbackJoint);
                 changed[v] = 1;
             }
@@ -466,8 +477,7 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
     const std::size_t n = target.vertexCount();
     Slots slots;
     slots.capacity = std::clamp(options.maxInfluences > 0 ? options.maxInfluences : d.maxInfluences, 1, 16);
-    slots.joint.assign(n * std::size_t(slots.capacity), 0);
-    slots.weight.assign(n * std::size_t(slots.capacity), 0.0f);
+    slots.slot.resize(n * std::size_t(slots.capacity));
     slots.count.assign(n, 0);
     std::uint32_t fallbackJoint = 0; // a vertex nothing weighs goes to the first root
     for (std::size_t j = 0; j < d.weights.parents.size(); ++j)
@@ -500,17 +510,20 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
     if (options.smoothSteps > 0 && n > d.positions.size())
         smoothed = smooth(target, nearest, options, slots, fallbackJoint);
 
+    // The slots become the influences, compacted in place (each vertex's move left).
     model::MeshWeights out;
     out.joints = d.weights.joints;
     out.parents = d.weights.parents;
-    out.offsets.reserve(n + 1);
-    out.offsets.push_back(0);
-    out.influences.reserve(n * std::size_t(slots.capacity));
+    out.offsets.resize(n + 1);
+    out.offsets[0] = 0;
+    std::size_t used = 0;
     for (std::size_t v = 0; v < n; ++v) {
         for (int k = 0; k < slots.count[v]; ++k)
-            out.influences.push_back({slots.joint[v * slots.capacity + k], slots.weight[v * slots.capacity + k]});
-        out.offsets.push_back(std::uint32_t(out.influences.size()));
+            slots.slot[used++] = slots.slot[v * std::size_t(slots.capacity) + std::size_t(k)];
+        out.offsets[v + 1] = std::uint32_t(used);
     }
+    slots.slot.resize(used);
+    out.influences = std::move(slots.slot);
     if (report) {
         report->vertices = n;
         report->closestPoint += std::size_t(std::count(route.begin(), route.end(), kClosestPoint)) +
