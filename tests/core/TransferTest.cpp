@@ -7,6 +7,7 @@
 #include "io/ModelImport.h"
 #include "rigging/RigBuilder.h"
 #include "skin/AutoWeights.h"
+#include "skin/NearestPoints.h"
 #include "skin/Surface.h"
 #include "skin/Transfer.h"
 
@@ -284,6 +285,47 @@ TEST(Transfer, SmoothingStepsSoftenOnlyWhereWeightsJumpAndNeverAtASourceVertex)
     options.weightDifferenceThreshold = 1.0; // no neighbour differs by more than everything
     ASSERT_TRUE(skin::importChunks({chunkOf(coarse, hard)}, {&fine}, options, &reports).ok());
     EXPECT_EQ(reports[0].smoothed, 0u);
+}
+
+TEST(Transfer, NearestPointsAreExactNearAndFarFromTheCloud)
+{
+    // Points on a wavy sheet (the grid's case) and two clumps; queries on it,
+    // just off it and far away (the KD-tree's case), against brute force.
+    std::vector<glm::vec3> points;
+    std::uint32_t seed = 12345;
+    auto random = [&] {
+        seed = seed * 1664525u + 1013904223u;
+        return float(seed >> 8) / float(1u << 24);
+    };
+    for (int i = 0; i < 4000; ++i) {
+        const float u = random(), v = random();
+        points.push_back({u, v, 0.05f * std::sin(7.0f * u)});
+    }
+    for (int i = 0; i < 50; ++i)
+        points.push_back({2.0f + 0.001f * random(), 0.0f, 0.0f});
+    points.push_back(points[17]); // a duplicate
+    const skin::NearestPoints nearest(points);
+    for (int q = 0; q < 1500; ++q) {
+        const float spread = q < 500 ? 0.001f : q < 1000 ? 0.05f : 3.0f;
+        const glm::vec3 p(random() * 1.2f - 0.1f, random() * 1.2f - 0.1f, (random() - 0.5f) * spread);
+        std::vector<float> all;
+        for (const glm::vec3& x : points)
+            all.push_back(glm::dot(x - p, x - p));
+        std::partial_sort(all.begin(), all.begin() + 16, all.end());
+        for (const int k : {1, 3, 16}) {
+            std::uint32_t index[32];
+            float distance2[32];
+            ASSERT_EQ(nearest.nearest(p, k, index, distance2), k);
+            for (int i = 0; i < k; ++i) {
+                ASSERT_EQ(distance2[i], all[std::size_t(i)]) << "query " << q << " k " << k << " rank " << i;
+                ASSERT_EQ(glm::dot(points[index[i]] - p, points[index[i]] - p), distance2[i]);
+            }
+        }
+    }
+    std::uint32_t index[5];
+    float distance2[5];
+    EXPECT_EQ(skin::NearestPoints({{0, 0, 0}}).nearest({1, 1, 1}, 5, index, distance2), 1) << "one point: one found";
+    EXPECT_EQ(skin::NearestPoints({}).nearest({1, 1, 1}, 5, index, distance2), 0);
 }
 
 TEST(Transfer, BadOptionsAreRefusedByName)
