@@ -36,10 +36,13 @@ struct Writer {
         out.append(bytes, sizeof(T));
     }
     template <class T>
-    void array(const std::vector<T>& values)
+    void array(const std::vector<T>& values, std::size_t count)
     {
-        out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+        if (count > 0)
+            out.append(reinterpret_cast<const char*>(values.data()), count * sizeof(T));
     }
+    template <class T>
+    void array(const std::vector<T>& values) { array(values, values.size()); }
     void text(const std::string& s)
     {
         raw(std::uint32_t(s.size()));
@@ -104,7 +107,8 @@ struct Reader {
         if (n > left() / sizeof(T))
             return fail("the file ends early");
         values.resize(n);
-        std::memcpy(values.data(), in.data() + at, n * sizeof(T));
+        if (n > 0) // (memcpy from or to no buffer is undefined even for 0 bytes)
+            std::memcpy(values.data(), in.data() + at, n * sizeof(T));
         at += n * sizeof(T);
         return true;
     }
@@ -190,7 +194,7 @@ void writeChunk(Writer& w, const skin::SkinChunk& c)
         w.raw(influence.weight);
     }
     w.raw(std::uint32_t(c.triangles.size() / 3));
-    w.out.append(reinterpret_cast<const char*>(c.triangles.data()), c.triangles.size() / 3 * 12);
+    w.array(c.triangles, c.triangles.size() / 3 * 3);
     w.raw(std::uint32_t(c.neighbours.size()));
     if (c.neighbourOffsets.size() == n + 1)
         w.array(c.neighbourOffsets);

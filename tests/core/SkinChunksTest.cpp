@@ -102,6 +102,17 @@ TEST(SkinChunks, ARoundTripKeepsEveryFieldByteForByte)
     EXPECT_EQ(c.neighbours, s.neighbours);
     EXPECT_EQ(io::writeSkinChunks(*loaded), io::writeSkinChunks(chunks));
     EXPECT_EQ(skin::formatExportTime(s.exportedAtMicroseconds), "2024-05-01 13:45:12 UTC");
+
+    // Empty arrays everywhere (a chunk of no vertex, no influence): found by fuzz-skinchunks
+    // as a copy from no buffer (undefined behaviour even for 0 bytes).
+    skin::SkinChunk empty;
+    empty.mesh = "nothing";
+    empty.neighbourOffsets = {0};
+    empty.weights.offsets = {0};
+    const std::string bytes = io::writeSkinChunks({empty});
+    auto read = io::readSkinChunks(bytes, "empty.rschunks");
+    ASSERT_TRUE(read.ok()) << formatAll(read.diagnostics());
+    EXPECT_EQ(io::writeSkinChunks(*read), bytes);
 }
 
 TEST(SkinChunks, DamagedOrTruncatedFilesAreErrorsNamingTheByte)
