@@ -30,13 +30,14 @@ using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<fl
 
 constexpr std::size_t kMaxCells = std::size_t(1) << 24;
 constexpr int kRings = 1;
+constexpr float kPointsPerCell = 1.0f; // points per filled cell the grid aims at
 
 // The k best so far, nearest first.
 struct Best {
     int k = 0, size = 0;
     std::uint32_t* index;
     float* distance2;
-    float worst() const { return size < k ? std::numeric_limits<float>::infinity() : distance2[size - 1]; }
+    float worst() const { return size < k ? std::numeric_limits<float>::infinity() : distance2[k - 1]; }
     void offer(std::uint32_t i, float d2)
     {
         if (size == k && d2 >= distance2[size - 1])
@@ -112,31 +113,31 @@ struct NearestPoints::Impl {
         const glm::vec3 extent = glm::max(hi - lo, glm::vec3(1e-6f));
         // First about two cells per point by volume. Points on a surface fill
         // few of them, crowded: the side then shrinks (as the square root, a
-        // surface's count per cell going as its area) to about two points per
-        // filled cell, so the 27 cells around a query hold a dozen points.
+        // surface's count per cell going as its area) to about kPointsPerCell
+        // per filled cell (1 measured fastest of 0.5, 1, 2 and 4 on the bench).
         fill(lo, extent, std::cbrt(extent.x * extent.y * extent.z / float(2 * points.size())));
         std::size_t filled = 0;
         for (std::size_t c = 0; c + 1 < cells.size(); ++c)
             filled += cells[c + 1] > cells[c];
         const float perCell = float(points.size()) / float(std::max<std::size_t>(filled, 1));
-        if (perCell > 3.0f)
-            fill(lo, extent, cell * std::max(0.25f, std::sqrt(2.0f / perCell)));
+        if (perCell > 1.5f * kPointsPerCell)
+            fill(lo, extent, cell * std::max(0.25f, std::sqrt(kPointsPerCell / perCell)));
     }
 
-    void scan(const glm::vec3& q, int x0, int x1, int y0, int y1, int z0, int z1, Best& best, int skipRing, const int* c) const
+    // The points of the cells from c - r to c + r on each axis: each row of
+    // cells along x is one run of `sorted`.
+    void scan(const glm::vec3& q, const int* c, int r, Best& best) const
     {
-        for (int z = std::max(z0, 0); z <= std::min(z1, n[2] - 1); ++z)
-            for (int y = std::max(y0, 0); y <= std::min(y1, n[1] - 1); ++y) {
+        const int x0 = std::max(c[0] - r, 0), x1 = std::min(c[0] + r, n[0] - 1);
+        for (int z = std::max(c[2] - r, 0); z <= std::min(c[2] + r, n[2] - 1); ++z)
+            for (int y = std::max(c[1] - r, 0); y <= std::min(c[1] + r, n[1] - 1); ++y) {
                 const std::size_t row = (std::size_t(z) * std::size_t(n[1]) + std::size_t(y)) * std::size_t(n[0]);
-                for (int x = std::max(x0, 0); x <= std::min(x1, n[0] - 1); ++x) {
-                    // The inner block was scanned by the ring before.
-                    if (skipRing > 0 && std::abs(x - c[0]) < skipRing && std::abs(y - c[1]) < skipRing && std::abs(z - c[2]) < skipRing)
-                        continue;
-                    const std::size_t id = row + std::size_t(x);
-                    for (std::uint32_t i = cells[id]; i < cells[id + 1]; ++i) {
-                        const glm::vec3 d = sorted[i] - q;
-                        best.offer(sortedIndex[i], d.x * d.x + d.y * d.y + d.z * d.z);
-                    }
+                const std::uint32_t end = cells[row + std::size_t(x1) + 1];
+                for (std::uint32_t i = cells[row + std::size_t(x0)]; i < end; ++i) {
+                    const glm::vec3 d = sorted[i] - q;
+                    const float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+                    if (d2 < best.worst())
+                        best.offer(sortedIndex[i], d2);
                 }
             }
     }
@@ -178,7 +179,9 @@ int NearestPoints::nearest(const glm::vec3& q, int k, std::uint32_t* index, floa
     const int c[3] = {g.cellOf(q.x, 0), g.cellOf(q.y, 1), g.cellOf(q.z, 2)};
     Best best{k, 0, index, distance2};
     for (int r = 1; r <= kRings; ++r) {
-        g.scan(q, c[0] - r, c[0] + r, c[1] - r, c[1] + r, c[2] - r, c[2] + r, best, r == 1 ? 0 : r, c);
+        if (r > 1)
+            best.size = 0; // the block of ring r holds ring r - 1's points again
+        g.scan(q, c, r, best);
         const float bound = g.settled(q, c, r);
         if (best.size == k && best.worst() <= bound * bound)
             return k;

@@ -239,9 +239,14 @@ struct Query {
     bool passes(const glm::vec3& a, const glm::vec3& b) const { return glm::dot(a, b) >= float(o.normalTolerance); }
 
     // The closest point on the fans of `vertices` (of those with passing face
-    // normals when `normal` is set); false when no triangle or vertex is left.
+    // normals when `normal` is set), blended into `mix`; false when no
+    // triangle or vertex is left. Once the best point is in the open star of
+    // the nearest vertex (its weight there above 0), the next fans are not
+    // searched: on a smooth surface they only hold farther points. When it is
+    // on the first fan's rim and `rim` is set, nothing is blended and *rim is
+    // set: the caller searches again with more vertices.
     bool closestPoint(const glm::vec3& p, const std::uint32_t* vertices, const float* distance2, int count, const glm::vec3* normal,
-                      Mix& mix) const
+                      Mix& mix, bool* rim = nullptr) const
     {
         float best = std::numeric_limits<float>::infinity();
         std::uint32_t bestTriangle = ~0u, bestVertex = ~0u;
@@ -249,10 +254,6 @@ struct Query {
         std::array<std::uint32_t, 32> tested; // fans overlap: each triangle once
         int testedCount = 0;
         for (int i = 0; i < count; ++i) {
-            // Inside a triangle of the nearest vertex's fan (not on its rim):
-            // the next fans would only hold points farther on a smooth surface.
-            if (i > 0 && bestTriangle != ~0u && bestBary.x > 0.0f && bestBary.y > 0.0f && bestBary.z > 0.0f)
-                break;
             const std::uint32_t v = vertices[i];
             bool any = false;
             for (std::uint32_t f = d.fanOffsets[v]; f < d.fanOffsets[v + 1]; ++f) {
@@ -278,6 +279,16 @@ struct Query {
                 best = distance2[i];
                 bestTriangle = ~0u;
                 bestVertex = v;
+            }
+            if (i == 0 && bestTriangle != ~0u) {
+                const std::uint32_t* c = &d.triangles[3 * bestTriangle];
+                const float centre = c[0] == v ? bestBary.x : c[1] == v ? bestBary.y : bestBary.z;
+                if (centre > 0.0f)
+                    break;
+                if (rim && count == 1) {
+                    *rim = true;
+                    return true;
+                }
             }
         }
         if (bestTriangle != ~0u) {
@@ -315,7 +326,9 @@ struct Query {
         std::array<std::uint32_t, kMaxCandidates> index;
         std::array<float, kMaxCandidates> distance2;
         const bool neighbours = o.method == TransferMethod::ClosestNeighbours;
-        const int wanted = neighbours ? o.neighbourCount : kFanVertices;
+        // Closest point asks for the nearest vertex first, and for more only
+        // when the closest point lies on the rim of its fan.
+        const int wanted = neighbours ? o.neighbourCount : o.normalFilter ? kFanVertices : 1;
         int found = nearest(p, wanted, index.data(), distance2.data());
         nearestDistance = found > 0 ? std::sqrt(distance2[0]) : 0.0f;
         if (o.normalFilter) {
@@ -348,7 +361,12 @@ struct Query {
             this->neighbours(index.data(), distance2.data(), found, mix);
             return kNeighbours;
         }
-        closestPoint(p, index.data(), distance2.data(), found, nullptr, mix);
+        bool rim = false;
+        closestPoint(p, index.data(), distance2.data(), found, nullptr, mix, &rim);
+        if (rim) {
+            found = nearest(p, kFanVertices, index.data(), distance2.data());
+            closestPoint(p, index.data(), distance2.data(), found, nullptr, mix);
+        }
         return kClosestPoint;
     }
 };

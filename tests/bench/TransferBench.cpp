@@ -14,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <ctime>
 
 using namespace rs;
 
@@ -72,6 +73,13 @@ skin::SkinChunk sourceChunk()
     return c;
 }
 
+double processSeconds()
+{
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 const model::Mesh& target(bool mismatched)
 {
     static const model::Mesh remesh = sheet("cloth", 1000, 0.0f, 0.001f), offPhase = sheet("cloth", 1000, 0.4f, 0.001f);
@@ -85,11 +93,18 @@ void transfer(benchmark::State& state, skin::TransferMethod method)
     skin::TransferOptions options;
     options.method = method;
     options.normalFilter = state.range(1) != 0;
+    double cpu = 0.0;
     for (auto _ : state) {
+        const double before = processSeconds();
         auto built = skin::TransferSource::fromChunk(source, true);
         auto weights = skin::transferWeights(*built, target, options);
         benchmark::DoNotOptimize(weights.ok());
+        cpu += processSeconds() - before;
     }
+    // CPU time of every thread per iteration: on a loaded machine the wall
+    // time says how much of the cores it got; this says what the work costs
+    // (two idle cores: about half of it, the loops being parallel).
+    state.counters["cpu_s_all_threads"] = cpu / double(state.iterations());
     state.counters["source_vertices"] = double(source.vertexCount());
     state.counters["target_vertices"] = double(target.vertexCount());
 }
