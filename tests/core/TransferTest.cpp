@@ -111,6 +111,47 @@ TEST(Transfer, AOneToOneRoundTripIsExact)
     EXPECT_EQ(reports[0].closestPoint, 0u);
 }
 
+TEST(Transfer, ASubsetChunkLoadsItsVerticesOneToOneAndTransfersTheRest)
+{
+    const model::Mesh mesh = grid("sheet", 20, 20, 0.0f);
+    const model::MeshWeights weights = rampWeights(mesh, 0.19f);
+    // Export the left half only (x < 10 cm): ids, points, weights and the triangles among them.
+    const skin::SkinChunk whole = chunkOf(mesh, weights);
+    skin::SkinChunk half = whole;
+    half.vertexIds.clear();
+    half.positions.clear();
+    half.normals.clear();
+    half.weights.offsets = {0};
+    half.weights.influences.clear();
+    std::vector<std::uint32_t> at(mesh.vertexCount(), ~0u);
+    for (std::uint32_t v = 0; v < mesh.vertexCount(); ++v)
+        if (mesh.positions[v].x < 0.1f) {
+            at[v] = std::uint32_t(half.vertexIds.size());
+            half.vertexIds.push_back(v);
+            half.positions.push_back(whole.positions[v]);
+            half.normals.push_back(whole.normals[v]);
+            half.weights.influences.insert(half.weights.influences.end(), weights.begin(v), weights.end(v));
+            half.weights.offsets.push_back(std::uint32_t(half.weights.influences.size()));
+        }
+    half.triangles.clear();
+    for (std::size_t k = 0; k + 2 < mesh.indices.size(); k += 3)
+        if (at[mesh.indices[k]] != ~0u && at[mesh.indices[k + 1]] != ~0u && at[mesh.indices[k + 2]] != ~0u)
+            half.triangles.insert(half.triangles.end(), {at[mesh.indices[k]], at[mesh.indices[k + 1]], at[mesh.indices[k + 2]]});
+    std::vector<skin::MeshImportReport> reports;
+    auto imported = skin::importChunks({half}, {&mesh}, {}, &reports);
+    ASSERT_TRUE(imported.ok()) << formatAll(imported.diagnostics());
+    EXPECT_EQ(reports[0].route, skin::ImportRoute::OneToOne);
+    EXPECT_EQ(reports[0].oneToOne, half.vertexCount());
+    EXPECT_EQ(reports[0].closestPoint, mesh.vertexCount() - half.vertexCount());
+    const model::MeshWeights& w = imported->front();
+    for (std::uint32_t v = 0; v < mesh.vertexCount(); ++v) {
+        ASSERT_GE(w.end(v) - w.begin(v), 1) << "vertex " << v << " is unweighted";
+        if (at[v] != ~0u) {
+            ASSERT_TRUE(std::equal(w.begin(v), w.end(v), weights.begin(v), weights.end(v))) << "vertex " << v << " is not 1:1";
+        }
+    }
+}
+
 TEST(Transfer, AReorderedMeshWithTheSameCountIsTransferredNotLoadedOneToOne)
 {
     const model::Mesh mesh = grid("sheet", 30, 20, 0.0f);
