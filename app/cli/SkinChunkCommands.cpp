@@ -188,7 +188,7 @@ int parseImportOption(const std::vector<std::string>& args, std::size_t& i, Impo
     if (a == "--method") {
         const auto method = skin::parseTransferMethod(value);
         if (!method)
-            return bad("closest or neighbours");
+            return bad("closest, neighbours or inpaint");
         o.method = *method;
     } else if (a == "--normal-filter") {
         if (!parseNumber(value, -1.0, 1.0, o.normalTolerance))
@@ -200,6 +200,12 @@ int parseImportOption(const std::vector<std::string>& args, std::size_t& i, Impo
     } else if (a == "--distance-multiplier") {
         if (!parseNumber(value, 1.0, 1000.0, o.neighbourDistanceMultiplier))
             return bad("a number from 1 to 1000");
+    } else if (a == "--inpaint-distance") {
+        if (!parseNumber(value, 0.0, 1000.0, o.inpaintDistance))
+            return bad("metres, at least 0 (0: 5% of the mesh's size)");
+    } else if (a == "--inpaint-angle") {
+        if (!parseNumber(value, 0.0, 180.0, o.inpaintAngleDegrees))
+            return bad("degrees from 0 to 180");
     } else if (a == "--smooth") {
         if (!parseCount(value, 0, 100, o.smoothSteps))
             return bad("a whole number of steps from 0 to 100");
@@ -285,7 +291,7 @@ std::string reportJson(const ImportArguments& m, const std::vector<skin::SkinChu
             << ", \"why\": " << jsonString(r.why) << ", \"method\": \"" << skin::transferMethodName(m.options.method)
             << "\", \"oneToOne\": " << r.oneToOne << ", \"singleInfluence\": " << r.singleInfluence << ", \"closestPoint\": " << r.closestPoint
             << ", \"closestNeighbours\": " << r.closestNeighbours << ", \"normalFilterFallbacks\": " << r.normalFilterFallbacks
-            << ", \"smoothed\": " << r.smoothed << ", \"milliseconds\": " << r.milliseconds << "}";
+            << ", \"inpainted\": " << r.inpainted << ", \"smoothed\": " << r.smoothed << ", \"milliseconds\": " << r.milliseconds << "}";
     }
     out << "]}\n";
     return out.str();
@@ -296,7 +302,7 @@ void printReport(const skin::MeshImportReport& r)
     std::cout << r.mesh << ": " << r.vertices << " vertices, " << skin::importRouteName(r.route) << " from "
               << (r.source == "uber chunk" ? r.source : "chunk '" + r.source + "'") << " (" << r.why << "): " << r.oneToOne << " 1:1, "
               << r.singleInfluence << " single influence, " << r.closestPoint << " closest point (" << r.normalFilterFallbacks
-              << " where nothing passed the normal filter), " << r.closestNeighbours << " closest neighbours, " << r.smoothed << " smoothed, "
+              << " where nothing passed the normal filter), " << r.closestNeighbours << " closest neighbours, " << r.inpainted << " inpainted, " << r.smoothed << " smoothed, "
               << int(r.milliseconds) << " ms\n";
 }
 

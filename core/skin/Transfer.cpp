@@ -11,7 +11,12 @@ namespace rs::skin {
 
 const char* transferMethodName(TransferMethod method)
 {
-    return method == TransferMethod::ClosestNeighbours ? "neighbours" : "closest";
+    switch (method) {
+    case TransferMethod::ClosestPoint: return "closest";
+    case TransferMethod::ClosestNeighbours: return "neighbours";
+    case TransferMethod::Inpainting: return "inpaint";
+    }
+    return "closest";
 }
 
 std::optional<TransferMethod> parseTransferMethod(const std::string& name)
@@ -20,6 +25,8 @@ std::optional<TransferMethod> parseTransferMethod(const std::string& name)
         return TransferMethod::ClosestPoint;
     if (name == "neighbours" || name == "neighbors" || name == "closest-neighbours")
         return TransferMethod::ClosestNeighbours;
+    if (name == "inpaint" || name == "inpainting")
+        return TransferMethod::Inpainting;
     return std::nullopt;
 }
 
@@ -47,6 +54,10 @@ Status validateTransferOptions(const TransferOptions& o)
         refuse("the smoothing steps must be from 0 to 100");
     if (!(o.weightDifferenceThreshold >= 0.0 && o.weightDifferenceThreshold <= 1.0))
         refuse("the weight difference threshold must be from 0 to 1");
+    if (!(o.inpaintDistance >= 0.0) || !std::isfinite(o.inpaintDistance))
+        refuse("the inpainting distance must be a number of metres, at least 0 (0: 5% of the mesh's size)");
+    if (!(o.inpaintAngleDegrees >= 0.0 && o.inpaintAngleDegrees <= 180.0))
+        refuse("the inpainting angle must be from 0 to 180 degrees");
     if (o.maxInfluences < 0 || o.maxInfluences > 16)
         refuse("the influence limit must be from 1 to 16 (0: the source's)");
     return problems.empty() ? Status() : Status::failure(std::move(problems));

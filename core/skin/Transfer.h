@@ -32,8 +32,13 @@
 //    of averaging with edge neighbours, only on vertices not at a source
 //    vertex's position and whose weights differ from a neighbour's by more
 //    than weightDifferenceThreshold (for some joint).
+//  - Inpainting (Abdrashitov et al., "Robust Skin Weights Transfer via Weight
+//    Inpainting", SIGGRAPH Asia 2023): closest point on triangles is kept
+//    only where the point is within inpaintDistance and its normal within
+//    inpaintAngleDegrees of the target vertex's; the other vertices' weights
+//    are solved for (skin/TransferInpaint.h), so overlapping or mismatched
+//    shapes do not stretch. The normal filter does not apply.
 // Every result vertex keeps at most maxInfluences weights, normalised.
-// (Next: inpainting, Abdrashitov et al. 2023, as a TransferMethod.)
 #include "base/Result.h"
 #include "model/Mesh.h"
 #include "skin/SkinChunk.h"
@@ -46,8 +51,8 @@
 
 namespace rs::skin {
 
-enum class TransferMethod { ClosestPoint, ClosestNeighbours };
-const char* transferMethodName(TransferMethod method); // "closest", "neighbours"
+enum class TransferMethod { ClosestPoint, ClosestNeighbours, Inpainting };
+const char* transferMethodName(TransferMethod method); // "closest", "neighbours", "inpaint"
 std::optional<TransferMethod> parseTransferMethod(const std::string& name);
 
 struct TransferOptions {
@@ -62,6 +67,8 @@ struct TransferOptions {
     int smoothSteps = 0;                 // 0: none
     double weightDifferenceThreshold = 0.25;
     int maxInfluences = 0;               // 1 to 16; 0: the most any source vertex has
+    double inpaintDistance = 0.0;        // Inpainting: metres a copied closest point may be away; 0: 5% of the target's bounding box diagonal
+    double inpaintAngleDegrees = 30.0;   // Inpainting: the most its normal may turn from the target vertex's (0 to 180)
     // Hears the fraction of all target vertices done; false cancels (no result).
     std::function<bool(double)> progress;
 };
@@ -79,6 +86,7 @@ struct MeshImportReport {
     std::size_t vertices = 0;
     std::size_t oneToOne = 0, singleInfluence = 0, closestPoint = 0, closestNeighbours = 0;
     std::size_t normalFilterFallbacks = 0; // counted in closestPoint too
+    std::size_t inpainted = 0;             // vertices whose weights were inpainted (not counted in closestPoint)
     std::size_t smoothed = 0;              // vertices a smoothing step changed
     double milliseconds = 0.0;
 };

@@ -6,6 +6,7 @@
 #include "skin/Transfer.h"
 
 #include "skin/NearestPoints.h"
+#include "skin/TransferInpaint.h"
 
 #include <tbb/parallel_for.h>
 
@@ -227,6 +228,13 @@ struct Slots {
 
 enum Route : std::uint8_t { kClosestPoint, kNeighbours, kFilterFallback };
 
+// Where a closest point was found: its squared distance and the source's normal
+// there (its vertex normals blended as its weights are).
+struct Hit {
+    float distance2 = 0.0f;
+    glm::vec3 normal{0.0f};
+};
+
 struct Query {
     const Data& d;
     const TransferOptions& o;
@@ -246,7 +254,7 @@ struct Query {
     // on the first fan's rim and `rim` is set, nothing is blended and *rim is
     // set: the caller searches again with more vertices.
     bool closestPoint(const glm::vec3& p, const std::uint32_t* vertices, const float* distance2, int count, const glm::vec3* normal,
-                      Mix& mix, bool* rim = nullptr) const
+                      Mix& mix, bool* rim = nullptr, Hit* hit = nullptr) const
     {
         float best = std::numeric_limits<float>::infinity();
         std::uint32_t bestTriangle = ~0u, bestVertex = ~0u;
@@ -295,11 +303,18 @@ struct Query {
             const std::uint32_t* c = &d.triangles[3 * bestTriangle];
             for (int k = 0; k < 3; ++k)
                 mix.addVertex(d.weights, c[k], bestBary[k]);
+            if (hit) { // the source's vertex normals interpolated at the point
+                const glm::vec3 n = bestBary.x * d.normals[c[0]] + bestBary.y * d.normals[c[1]] + bestBary.z * d.normals[c[2]];
+                const float length = glm::length(n);
+                *hit = {best, length > 0.0f ? n / length : d.faceNormals[bestTriangle]};
+            }
             return true;
         }
         if (bestVertex == ~0u)
             return false;
         mix.addVertex(d.weights, bestVertex, 1.0f);
+        if (hit)
+            *hit = {best, d.normals[bestVertex]};
         return true;
     }
 
@@ -321,7 +336,7 @@ struct Query {
     }
 
     // One target vertex: its route; `nearestDistance` to the nearest source vertex.
-    Route transfer(const glm::vec3& p, const glm::vec3& normal, Mix& mix, float& nearestDistance) const
+    Route transfer(const glm::vec3& p, const glm::vec3& normal, Mix& mix, float& nearestDistance, Hit* hit) const
     {
         std::array<std::uint32_t, kMaxCandidates> index;
         std::array<float, kMaxCandidates> distance2;
@@ -362,10 +377,10 @@ struct Query {
             return kNeighbours;
         }
         bool rim = false;
-        closestPoint(p, index.data(), distance2.data(), found, nullptr, mix, &rim);
+        closestPoint(p, index.data(), distance2.data(), found, nullptr, mix, &rim, hit);
         if (rim) {
             found = nearest(p, kFanVertices, index.data(), distance2.data());
-            closestPoint(p, index.data(), distance2.data(), found, nullptr, mix);
+            closestPoint(p, index.data(), distance2.data(), found, nullptr, mix, nullptr, hit);
         }
         return kClosestPoint;
     }
@@ -481,6 +496,23 @@ const model::MeshWeights& TransferSource::weights() const
     return m_data ? m_data->weights : none;
 }
 
+namespace {
+
+// The inpainting match distance: the option, or 5% of the target's bounding box diagonal (the paper's).
+double inpaintDistance(const TransferOptions& options, const model::Mesh& target)
+{
+    if (options.inpaintDistance > 0.0)
+        return options.inpaintDistance;
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const glm::vec3& p : target.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return target.positions.empty() ? 0.0 : 0.05 * double(glm::length(hi - lo));
+}
+
+} // namespace
+
 Result<model::MeshWeights> transferWeights(const TransferSource& source, const model::Mesh& target, const TransferOptions& options,
                                            MeshImportReport* report)
 {
@@ -503,12 +535,19 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
             fallbackJoint = std::uint32_t(j);
             break;
         }
-    const std::vector<glm::vec3> normals = options.normalFilter ? vertexNormals(target) : std::vector<glm::vec3>();
-    const std::vector<glm::vec3>& targetNormals =
-        options.normalFilter && target.normals.size() == n ? target.normals : normals;
+    // Inpainting copies by closest point (no filter: its own test is below).
+    const bool inpainting = options.method == TransferMethod::Inpainting;
+    TransferOptions queryOptions = options;
+    if (inpainting)
+        queryOptions.normalFilter = false;
+    const bool needNormals = options.normalFilter || inpainting;
+    const std::vector<glm::vec3> normals = needNormals && target.normals.size() != n ? vertexNormals(target) : std::vector<glm::vec3>();
+    const std::vector<glm::vec3>& targetNormals = target.normals.size() == n ? target.normals : normals;
     std::vector<float> nearest(n, 0.0f);
-    std::vector<std::uint8_t> route(n, kClosestPoint);
-    const Query query{d, options};
+    std::vector<std::uint8_t> route(n, kClosestPoint), matched(inpainting ? n : 0, 0);
+    const Query query{d, queryOptions};
+    const float matchDistance2 = inpainting ? float(std::pow(inpaintDistance(options, target), 2.0)) : 0.0f;
+    const float matchCosine = float(std::cos(options.inpaintAngleDegrees * 3.14159265358979 / 180.0));
     const std::size_t slice = std::max<std::size_t>(16384, n / 50);
     for (std::size_t first = 0; first < n; first += slice) {
         const std::size_t last = std::min(n, first + slice);
@@ -516,13 +555,29 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
             Mix mix;
             for (std::size_t v = range.begin(); v != range.end(); ++v) {
                 mix.size = 0;
-                const glm::vec3 normal = options.normalFilter ? glm::normalize(targetNormals[v]) : glm::vec3(0.0f);
-                route[v] = query.transfer(target.positions[v], normal, mix, nearest[v]);
+                const glm::vec3 normal = needNormals ? glm::normalize(targetNormals[v]) : glm::vec3(0.0f);
+                Hit hit;
+                route[v] = query.transfer(target.positions[v], normal, mix, nearest[v], &hit);
                 slots.store(v, mix, fallbackJoint);
+                if (inpainting) // near, and facing the target's way
+                    matched[v] = hit.distance2 <= matchDistance2 && glm::dot(hit.normal, normal) >= matchCosine;
             }
         });
         if (options.progress && !options.progress(double(last) / double(n)))
             return Out::failure(makeError({}, "mesh '" + target.name + "': the transfer was cancelled"));
+    }
+    Diagnostics notes;
+    std::size_t inpainted = 0;
+    if (inpainting) {
+        auto solved = inpaintWeights(target, matched, slots.capacity, slots.slot, slots.count);
+        if (solved)
+            inpainted = *solved;
+        else
+            for (Diagnostic diagnostic : solved.diagnostics()) {
+                diagnostic.severity = Severity::Warning;
+                diagnostic.message += "; its vertices keep the closest point's weights";
+                notes.push_back(std::move(diagnostic));
+            }
     }
     std::size_t smoothed = 0;
     if (options.smoothSteps > 0 && n > d.positions.size())
@@ -549,9 +604,11 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
         report->closestNeighbours += std::size_t(std::count(route.begin(), route.end(), kNeighbours));
         report->normalFilterFallbacks += std::size_t(std::count(route.begin(), route.end(), kFilterFallback));
         report->smoothed += smoothed;
+        report->inpainted += inpainted;
+        report->closestPoint -= std::min(report->closestPoint, inpainted);
         report->milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
-    return out;
+    return Out(std::move(out), std::move(notes));
 }
 
 } // namespace rs::skin

@@ -137,3 +137,34 @@ void BM_TransferNearestPoints(benchmark::State& state)
 BENCHMARK(BM_TransferNearestPoints)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 } // namespace
+
+namespace {
+
+// Inpainting onto a 100k-vertex target (the mismatched sheet, 316 x 316): the
+// vertices whose closest point's normal turns more than Arg degrees from
+// theirs are solved for (the counter says how many: at 30 degrees, the
+// default, none here). Target: <= 3 s.
+void BM_TransferInpainting(benchmark::State& state)
+{
+    static const skin::SkinChunk source = sourceChunk();
+    static const model::Mesh target = sheet("cloth", 316, 0.4f, 0.001f);
+    skin::TransferOptions options;
+    options.method = skin::TransferMethod::Inpainting;
+    options.inpaintAngleDegrees = double(state.range(0));
+    skin::MeshImportReport report;
+    double cpu = 0.0;
+    for (auto _ : state) {
+        report = {};
+        const double before = processSeconds();
+        auto built = skin::TransferSource::fromChunk(source, true);
+        auto weights = skin::transferWeights(*built, target, options, &report);
+        benchmark::DoNotOptimize(weights.ok());
+        cpu += processSeconds() - before;
+    }
+    state.counters["cpu_s_all_threads"] = cpu / double(state.iterations());
+    state.counters["target_vertices"] = double(target.vertexCount());
+    state.counters["inpainted"] = double(report.inpainted);
+}
+BENCHMARK(BM_TransferInpainting)->Arg(3)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace

@@ -250,6 +250,44 @@ TEST(Transfer, TheNormalFilterKeepsAnOverlappingSurfacesWeightsOff)
     EXPECT_EQ(dominant(fallback->front(), 0), 2u);
 }
 
+TEST(Transfer, InpaintingFillsWhatTheClosestPointWouldTakeFromTheWrongSurface)
+{
+    // The lower sheet (joint a) faces up under the whole target; the upper one
+    // (joint c) faces down over its left half only, nearer than the lower.
+    const model::Mesh lower = grid("lower", 10, 10, 0.0f, true), upper = grid("upper", 5, 10, 0.01f, false);
+    const model::Mesh target = grid("pants", 12, 12, 0.006f, true, 0.0075f);
+    const std::vector<skin::SkinChunk> chunks = {chunkOf(lower, allOn(lower, 0)), chunkOf(upper, allOn(upper, 2))};
+    std::vector<skin::MeshImportReport> reports;
+    auto closest = skin::importChunks(chunks, {&target}, {}, &reports);
+    ASSERT_TRUE(closest.ok());
+    std::size_t wrong = 0;
+    for (std::size_t v = 0; v < target.vertexCount(); ++v)
+        wrong += dominant(closest->front(), v) != 0;
+    EXPECT_GT(wrong, target.vertexCount() / 4) << "closest point takes the upper sheet's joint on the left";
+    skin::TransferOptions options;
+    options.method = skin::TransferMethod::Inpainting;
+    options.inpaintDistance = 0.02; // 5% of this small sheet's diagonal (the default) is under the 6 mm gap
+    reports.clear();
+    auto inpainted = skin::importChunks(chunks, {&target}, options, &reports);
+    ASSERT_TRUE(inpainted.ok()) << formatAll(inpainted.diagnostics());
+    EXPECT_EQ(reports[0].inpainted, wrong);
+    EXPECT_EQ(reports[0].closestPoint + reports[0].inpainted, target.vertexCount());
+    for (std::size_t v = 0; v < target.vertexCount(); ++v) {
+        ASSERT_EQ(dominant(inpainted->front(), v), 0u) << "vertex " << v;
+        float sum = 0.0f;
+        for (auto* i = inpainted->front().begin(v); i != inpainted->front().end(v); ++i)
+            sum += i->weight;
+        ASSERT_NEAR(sum, 1.0f, 1e-5);
+    }
+    // Where every closest point is near and agrees, inpainting is closest point.
+    const model::Mesh coarse = grid("sheet", 11, 11, 0.0f, true, 0.02f), fine = grid("sheet", 41, 41, 0.002f, true, 0.005f);
+    const model::MeshWeights ramp = rampWeights(coarse, 0.2f);
+    auto a = skin::importChunks({chunkOf(coarse, ramp)}, {&fine}, {}, nullptr);
+    auto b = skin::importChunks({chunkOf(coarse, ramp)}, {&fine}, options, nullptr);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->front(), b->front());
+}
+
 TEST(Transfer, TheDecisionTreeFindsTheChunkOfTheSameCountAndOrderUnlessToldNot)
 {
     const model::Mesh mesh = grid("old_name", 12, 12, 0.0f);
@@ -473,7 +511,8 @@ TEST(Transfer, ADenserRemeshOfTheHumanKeepsItsDominantJoints)
     std::vector<const model::Mesh*> targets;
     for (const model::Mesh& mesh : dense)
         targets.push_back(&mesh);
-    for (const skin::TransferMethod method : {skin::TransferMethod::ClosestPoint, skin::TransferMethod::ClosestNeighbours}) {
+    for (const skin::TransferMethod method :
+         {skin::TransferMethod::ClosestPoint, skin::TransferMethod::ClosestNeighbours, skin::TransferMethod::Inpainting}) {
         skin::TransferOptions options;
         options.method = method;
         std::vector<skin::MeshImportReport> reports;

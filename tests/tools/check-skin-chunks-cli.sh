@@ -72,5 +72,8 @@ set +e
 "$cli" skin import "$dir/guide.yml" "$dir/human.rschunks" --method nearest 2> "$dir/usage.txt"; code=$?
 set -e
 [ "$code" = 2 ] || fail "a bad --method exited $code, not 2"
-grep -q -- "--method is closest or neighbours, not 'nearest'" "$dir/usage.txt" || fail "usage message"
+grep -q -- "--method is closest, neighbours or inpaint, not 'nearest'" "$dir/usage.txt" || fail "usage message"
+# Inpainting from the command line: the box far from the human copies nothing near, so it keeps closest point.
+"$cli" skin import "$dir/box.yml" "$dir/human.rschunks" --method inpaint --json - > "$dir/inpaint.txt" || fail "inpaint import"
+grep -q '"inpainted": ' "$dir/inpaint.txt" || fail "inpaint report"
 echo "skin chunks from the command line: ok"
