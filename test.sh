@@ -28,7 +28,7 @@ if [ "${RIGSMITH_SKIP_ASAN:-0}" != "1" ]; then
   echo "AddressSanitizer core tests: $(( $(date +%s) - start )) s"
 fi
 
-# libFuzzer over every file reader (guides, manifests, conditions, shapes, skin weights):
+# libFuzzer over every file reader (guides, manifests, conditions, shapes, skin weights, skin chunks):
 # a separate small clang build of the core layers they need, with ASan + UBSan,
 # each target run for RIGSMITH_FUZZ_SECONDS (30) over its corpus in
 # tests/fuzz/<target>/corpus. Skipped when clang is missing (run.sh

@@ -1,5 +1,6 @@
 // rigsmith-cli skin bind: automatic weights without a display.
 #include "cli/Commands.h"
+#include "cli/SkinCharacter.h"
 
 #include "io/AtomicFile.h"
 #include "io/GuideFile.h"
@@ -21,18 +22,6 @@
 namespace rs::cli {
 
 namespace {
-
-std::string jsonString(const std::string& text)
-{
-    std::string out = "\"";
-    for (const char c : text) {
-        if (c == '"' || c == '\\')
-            out += '\\';
-        if (static_cast<unsigned char>(c) >= 0x20)
-            out += c;
-    }
-    return out + "\"";
-}
 
 void jsonPoint(std::ostream& out, const Vec3& p)
 {
@@ -85,8 +74,14 @@ std::string weightsJson(const model::Rig& rig, const std::vector<skin::SkinBone>
 
 int runSkin(const std::vector<std::string>& args)
 {
+    if (!args.empty() && args[0] == "export")
+        return runSkinExport(args);
+    if (!args.empty() && args[0] == "import")
+        return runSkinImport(args);
+    if (!args.empty() && args[0] == "info")
+        return runSkinInfo(args);
     if (args.empty() || args[0] != "bind") {
-        std::cerr << "rigsmith-cli skin: expected 'bind'\n" << usage();
+        std::cerr << "rigsmith-cli skin: expected bind, export, import or info\n" << usage();
         return 2;
     }
     std::string guidePath, modelPath, output, jsonPath;

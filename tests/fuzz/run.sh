@@ -11,7 +11,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 build="$1"
 seconds="${2:-30}"
 status=0
-for target in guide manifest condition shape weights; do
+for target in guide manifest condition shape weights skinchunks; do
   work="$build/fuzz-corpus/$target"
   artifacts="$build/fuzz-artifacts/$target"
   mkdir -p "$work" "$artifacts"

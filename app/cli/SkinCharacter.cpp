@@ -1,0 +1,146 @@
+#include "cli/SkinCharacter.h"
+
+#include "cli/Commands.h"
+#include "io/AtomicFile.h"
+#include "io/GuideFile.h"
+#include "io/ModelImport.h"
+#include "io/TemplateFolders.h"
+#include "io/WeightsFile.h"
+#include "rigging/RigBuilder.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include <unistd.h>
+
+namespace rs::cli {
+
+std::optional<Character> loadCharacter(const std::string& guidePath)
+{
+    Diagnostics templateDiagnostics;
+    auto templates = io::loadDefaultTemplates(templateDiagnostics);
+    auto guide = io::readGuideFile(guidePath);
+    print(guide.diagnostics());
+    if (!guide)
+        return std::nullopt;
+    Character c;
+    c.guide = guide.take();
+    const Status weights = io::loadGuideWeights(guidePath, c.guide);
+    print(weights.diagnostics());
+    if (weights.failed())
+        return std::nullopt;
+    c.rig = rigging::buildRig(c.guide, *templates);
+    if (hasErrors(c.rig.diagnostics)) {
+        print(c.rig.diagnostics);
+        return std::nullopt;
+    }
+    auto bones = skin::skinBones(c.rig);
+    if (!bones) {
+        print(bones.diagnostics());
+        return std::nullopt;
+    }
+    c.bones = bones.take();
+    if (c.guide.models.empty()) {
+        std::cerr << guidePath << ": error: the guide has no model; add one with 'rigsmith-cli model add " << guidePath << " FILE'\n";
+        return std::nullopt;
+    }
+    c.models.reserve(c.guide.models.size()); // meshes point into it
+    for (const std::string& path : c.guide.models) {
+        auto model = io::importModel(path);
+        print(model.diagnostics());
+        if (!model)
+            return std::nullopt;
+        c.models.push_back(model.take());
+        for (const model::Mesh& mesh : c.models.back().meshes)
+            c.meshes.push_back({path, &mesh, -1});
+    }
+    for (CharacterMesh& m : c.meshes)
+        m.binding = bindingOf(c, m.model, *m.mesh);
+    return c;
+}
+
+bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBone>& bones)
+{
+    if (weights.joints.size() != bones.size() || weights.parents.size() != bones.size())
+        return false;
+    for (std::size_t b = 0; b < bones.size(); ++b)
+        if (weights.joints[b] != bones[b].key || weights.parents[b] != bones[b].parent)
+            return false;
+    return true;
+}
+
+int bindingOf(const Character& c, const std::string& model, const model::Mesh& mesh)
+{
+    // The how-many-th mesh of this name in its model...
+    int nth = 0;
+    for (const CharacterMesh& m : c.meshes) {
+        if (m.mesh == &mesh)
+            break;
+        nth += m.model == model && m.mesh->name == mesh.name;
+    }
+    // ...pairs with the same-numbered record of that model and name.
+    for (std::size_t b = 0; b < c.guide.bindings.size(); ++b)
+        if (c.guide.bindings[b].model == model && c.guide.bindings[b].mesh == mesh.name && nth-- == 0)
+            return int(b);
+    return -1;
+}
+
+std::string jsonString(const std::string& text)
+{
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20)
+            out += c;
+    }
+    return out + "\"";
+}
+
+int usageError(const std::string& command, const std::string& message)
+{
+    std::cerr << "rigsmith-cli " << command << ": " << message << '\n' << usage();
+    return 2;
+}
+
+bool parseCount(const std::string& text, int low, int high, int& out)
+{
+    char* end = nullptr;
+    const long n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || n < low || n > high)
+        return false;
+    out = int(n);
+    return true;
+}
+
+bool parseNumber(const std::string& text, double low, double high, double& out)
+{
+    char* end = nullptr;
+    const double x = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(x) || x < low || x > high)
+        return false;
+    out = x;
+    return true;
+}
+
+bool canWriteBeside(const std::string& path, const std::string& what)
+{
+    std::string target;
+    const Status writable = io::resolveWriteTarget(path, target);
+    if (writable.failed()) {
+        print(writable.diagnostics());
+        return false;
+    }
+    const auto folder = std::filesystem::absolute(target).parent_path();
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec) || access(folder.c_str(), W_OK) != 0) {
+        std::cerr << path << ": error: cannot write the " << what << " there: " << folder.string()
+                  << " is not a folder this user may write to\n";
+        return false;
+    }
+    return true;
+}
+
+} // namespace rs::cli

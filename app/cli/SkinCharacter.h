@@ -1,0 +1,51 @@
+#pragma once
+// What the skin chunk commands read from a guide: its built rig and skin
+// bones, its weight records (GUIDE.weights), its models, and each mesh paired
+// with its record as the session pairs them (the n-th mesh of a name in a
+// model with the n-th record of that model and name). Plus the small argument
+// helpers those commands share.
+#include "model/GuideDocument.h"
+#include "model/Mesh.h"
+#include "model/Rig.h"
+#include "skin/SkinBones.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rs::cli {
+
+struct CharacterMesh {
+    std::string model;                 // the model file (absolute, as in the guide)
+    const model::Mesh* mesh = nullptr; // into Character::models
+    int binding = -1;                  // into guide.bindings; -1: none
+};
+
+struct Character {
+    model::GuideDocument guide;
+    model::Rig rig;
+    std::vector<skin::SkinBone> bones;
+    std::vector<model::Model> models; // one per guide model
+    std::vector<CharacterMesh> meshes;
+};
+
+// Prints every problem (stderr); nothing when the guide, its rig, its weights
+// file or one of its models cannot be read, or it has no model.
+std::optional<Character> loadCharacter(const std::string& guidePath);
+// The record of `mesh` in `character` after bindings were added: see the pairing above.
+int bindingOf(const Character& character, const std::string& model, const model::Mesh& mesh);
+
+// Whether `weights` are on `bones` already (their keys and parents, in order):
+// then they need no retargeting, which would renormalise them (bits change).
+bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBone>& bones);
+
+// "rigsmith-cli COMMAND: MESSAGE" and the usage on stderr; returns 2.
+int usageError(const std::string& command, const std::string& message);
+bool parseCount(const std::string& text, int low, int high, int& out);
+bool parseNumber(const std::string& text, double low, double high, double& out);
+// A JSON string literal of `text` (control characters dropped).
+std::string jsonString(const std::string& text);
+// Whether `path` may be written (checked before long work), with a message when not.
+bool canWriteBeside(const std::string& path, const std::string& what);
+
+} // namespace rs::cli
