@@ -67,7 +67,8 @@ struct SceneMesh {
     // see-through in the bind pose, so guides and joints stay visible.
     bool skinned = false;
     glm::vec3 baseColor{0.8f};                           // linear RGB, [0, 1]
-    std::string texturePath;                             // absolute; "" none
+    std::string texturePath;                             // absolute (or "<model>#<name>" when embedded); "" none
+    std::shared_ptr<const std::string> textureImage;     // an embedded texture's encoded bytes; null: read texturePath
     std::size_t characterMesh = 0;                       // into session::Session::characterMeshes()
     std::vector<std::uint32_t> selectedVertices;         // weight painting's vertex selection, sorted
     const model::Mesh& data() const { return model->meshes[mesh]; }

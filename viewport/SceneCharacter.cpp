@@ -54,7 +54,10 @@ void addCharacter(Scene& scene, const session::Session& session, const Character
         if (material >= 0 && std::size_t(material) < mesh.model->materials.size()) {
             const model::Material& m = mesh.model->materials[std::size_t(material)];
             mesh.baseColor = glm::vec3(m.baseColor);
-            if (!m.texture.empty()) {
+            if (m.image) { // embedded in the model file (GLB, FBX, .zae)
+                mesh.texturePath = loaded.path + "#" + m.texture;
+                mesh.textureImage = m.image;
+            } else if (!m.texture.empty()) {
                 const std::filesystem::path texture(m.texture);
                 mesh.texturePath = (texture.is_absolute() ? texture : std::filesystem::path(loaded.path).parent_path() / texture)
                                        .lexically_normal()

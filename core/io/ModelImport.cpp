@@ -166,6 +166,17 @@ Result<model::Model> importModel(const std::string& path)
         if (source.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
             source.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS)
             material.texture = texture.C_Str();
+        // An embedded image: named "*N" (its index) or by the file name the material uses.
+        for (unsigned t = 0; t < scene->mNumTextures && !material.texture.empty() && !material.image; ++t) {
+            const aiTexture& image = *scene->mTextures[t];
+            if (image.mHeight != 0 || !image.pcData || image.mWidth == 0)
+                continue; // decoded texels, not a file's bytes
+            const std::string file = image.mFilename.C_Str();
+            const auto baseName = [](const std::string& p) { return p.substr(p.find_last_of("/\\") + 1); };
+            if (material.texture == "*" + std::to_string(t) ||
+                (!file.empty() && (file == material.texture || baseName(file) == baseName(material.texture))))
+                material.image = std::make_shared<const std::string>(reinterpret_cast<const char*>(image.pcData), image.mWidth);
+        }
         out.materials.push_back(std::move(material));
     }
     Walker walker{*scene, convention, out, {}, {}, 0};

@@ -6,6 +6,7 @@
 #include "base/Math.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -70,7 +71,10 @@ namespace rs::model {
 struct Material {
     std::string name;
     Vec3 baseColor{0.8};
-    std::string texture; // base colour texture: a path relative to the model file, or "" (none / embedded)
+    std::string texture; // base colour texture: a path relative to the model file, "*N" (embedded), or "" (none)
+    // The texture's encoded bytes (PNG, JPEG...) when the model file embeds it
+    // (GLB, FBX, .zae); null when it is a file beside the model.
+    std::shared_ptr<const std::string> image;
 };
 
 // A joint of a skeleton the model file brings (a skinned character's own rig):

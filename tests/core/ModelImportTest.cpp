@@ -37,6 +37,13 @@ TEST(ModelImport, TheHumanKeepsItsMeshesNamesAndVertexOrder)
         bottom = std::min(bottom, p.y);
     }
     EXPECT_NEAR(top - bottom, 1.66f, 0.02f);
+    // The eyes' texture is inside the .zae: the material carries its bytes for the viewport.
+    const int eyes = human->meshes[1].material;
+    ASSERT_GE(eyes, 0);
+    const auto& image = human->materials[std::size_t(eyes)].image;
+    ASSERT_TRUE(image) << "texture '" << human->materials[std::size_t(eyes)].texture << "' not found embedded";
+    const bool png = image->rfind("\x89PNG", 0) == 0, jpeg = image->rfind("\xFF\xD8", 0) == 0;
+    EXPECT_TRUE(png || jpeg) << "encoded image bytes";
 }
 
 TEST(ModelImport, ABlenderFileIsTurnedFromZUpToYUp)

@@ -170,7 +170,7 @@ struct MeshRenderer::Gl {
 
     GpuMesh& meshFor(const SceneMesh& m);
     void uploadWeights(GpuMesh& gpu, const SceneMesh& m);
-    GLuint texture(const std::string& path);
+    GLuint texture(const std::string& path, const std::string* image);
     void free(GpuMesh& gpu)
     {
         glDeleteBuffers(1, &gpu.vertices);
@@ -368,7 +368,7 @@ void MeshRenderer::Gl::uploadWeights(GpuMesh& gpu, const SceneMesh& m)
     glBindVertexArray(0);
 }
 
-GLuint MeshRenderer::Gl::texture(const std::string& path)
+GLuint MeshRenderer::Gl::texture(const std::string& path, const std::string* encoded)
 {
     if (path.empty())
         return 0;
@@ -376,7 +376,11 @@ GLuint MeshRenderer::Gl::texture(const std::string& path)
     if (known != textures.end())
         return known->second;
     GLuint id = 0;
-    QImage image(QString::fromStdString(path));
+    QImage image;
+    if (encoded)
+        image.loadFromData(reinterpret_cast<const uchar*>(encoded->data()), int(encoded->size()));
+    else
+        image.load(QString::fromStdString(path));
     if (image.isNull()) {
         warnings.push_back(path + ": warning: the texture cannot be read; the mesh is drawn in its material's base colour");
     } else {
@@ -412,7 +416,7 @@ void MeshRenderer::prepare(const Scene& scene)
         gpu.used = true;
         if (fresh || gpu.weights != m.weights)
             m_gl->uploadWeights(gpu, m);
-        m_gl->texture(m.texturePath);
+        m_gl->texture(m.texturePath, m.textureImage.get());
     }
     for (auto& gpu : m_gl->meshes) // a model no longer drawn frees its buffers
         if (!gpu.used)
@@ -471,7 +475,7 @@ void MeshRenderer::draw(const Scene& scene, const glm::mat4& viewProjection, con
         glUniform1i(m_gl->weightDisplay, weighted ? int(scene.weightDisplay) : 0);
         glUniform1i(m_gl->weightBone, scene.weightBone);
         glUniform3fv(m_gl->baseColor, 1, &m.baseColor[0]);
-        const GLuint texture = m_gl->texture(m.texturePath);
+        const GLuint texture = m_gl->texture(m.texturePath, m.textureImage.get());
         glUniform1i(m_gl->hasTexture, texture != 0);
         glBindTexture(GL_TEXTURE_2D, texture);
         glBindVertexArray(gpu->vao);
