@@ -10,25 +10,6 @@ namespace rs::viewport {
 
 namespace {
 
-std::vector<glm::vec3> vertexNormals(const model::Mesh& mesh, const std::vector<glm::vec3>& positions)
-{
-    std::vector<glm::vec3> normals(positions.size(), glm::vec3(0.0f));
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-        if (a >= positions.size() || b >= positions.size() || c >= positions.size())
-            continue;
-        const glm::vec3 n = glm::cross(positions[b] - positions[a], positions[c] - positions[a]); // area-weighted
-        normals[a] += n;
-        normals[b] += n;
-        normals[c] += n;
-    }
-    for (glm::vec3& n : normals) {
-        const float length = glm::length(n);
-        n = length > 0.0f ? n / length : glm::vec3(0.0f);
-    }
-    return normals;
-}
-
 // Möller-Trumbore; both faces. The distance along the ray, or a negative number.
 double rayTriangle(const Ray& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
 {
@@ -72,7 +53,7 @@ PosedCharacter PosedCharacter::of(const Scene& scene)
             if (job.validate().ok())
                 job.run();
         }
-        posed.normals = vertexNormals(*posed.data, posed.positions);
+        posed.normals = model::vertexNormals(*posed.data, posed.positions, glm::vec3(0.0f));
         out.meshes.push_back(std::move(posed));
     }
     return out;

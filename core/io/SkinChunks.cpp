@@ -1,6 +1,7 @@
 #include "io/SkinChunks.h"
 
 #include "io/AtomicFile.h"
+#include "io/BinaryCodec.h"
 
 #include <cmath>
 #include <cstring>
@@ -15,144 +16,9 @@ constexpr char kMagic[8] = {'R', 'S', 'C', 'H', 'U', 'N', 'K', 'S'};
 constexpr std::uint32_t kVersion = 1;
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(2) << 30;
 
-std::uint64_t fnv1a(const char* data, std::size_t size)
-{
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::size_t i = 0; i < size; ++i) {
-        h ^= std::uint8_t(data[i]);
-        h *= 1099511628211ull;
-    }
-    return h;
-}
-
-// The host is little-endian (x86-64, ARM64): values are copied as they are.
-struct Writer {
-    std::string out;
-    template <class T>
-    void raw(T value)
-    {
-        char bytes[sizeof(T)];
-        std::memcpy(bytes, &value, sizeof(T));
-        out.append(bytes, sizeof(T));
-    }
-    template <class T>
-    void array(const std::vector<T>& values, std::size_t count)
-    {
-        if (count > 0)
-            out.append(reinterpret_cast<const char*>(values.data()), count * sizeof(T));
-    }
-    template <class T>
-    void array(const std::vector<T>& values) { array(values, values.size()); }
-    void text(const std::string& s)
-    {
-        raw(std::uint32_t(s.size()));
-        out += s;
-    }
-    void matrix(const Mat4& m)
-    {
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r)
-                raw(m[c][r]);
-    }
-};
-
-struct Reader {
-    const std::string& in;
-    std::size_t at = 0;
-    std::size_t end = 0;
-    std::string context; // "chunk 2 ('body'): "
-    std::string error;
-
-    std::size_t left() const { return end - at; }
-    bool fail(const std::string& what, std::size_t where)
-    {
-        if (error.empty())
-            error = context + what + " at byte " + std::to_string(where);
-        return false;
-    }
-    bool fail(const std::string& what) { return fail(what, at); }
-    template <class T>
-    bool raw(T& value)
-    {
-        if (left() < sizeof(T))
-            return fail("the file ends early");
-        std::memcpy(&value, in.data() + at, sizeof(T));
-        at += sizeof(T);
-        return true;
-    }
-    bool text(std::string& s)
-    {
-        std::uint32_t size = 0;
-        if (!raw(size))
-            return false;
-        if (left() < size)
-            return fail("a name of " + std::to_string(size) + " bytes runs past the end of the file");
-        s.assign(in.data() + at, size);
-        at += size;
-        return true;
-    }
-    // A count of items of at least `itemBytes` each, which must fit in what is left.
-    bool count(std::uint32_t& n, std::size_t itemBytes, const char* what)
-    {
-        const std::size_t where = at;
-        if (!raw(n))
-            return false;
-        if (std::size_t(n) > left() / itemBytes)
-            return fail(std::string("a count of ") + std::to_string(n) + " " + what + " is more than the file holds", where);
-        return true;
-    }
-    template <class T>
-    bool array(std::vector<T>& values, std::size_t n)
-    {
-        if (n > left() / sizeof(T))
-            return fail("the file ends early");
-        values.resize(n);
-        if (n > 0) // (memcpy from or to no buffer is undefined even for 0 bytes)
-            std::memcpy(values.data(), in.data() + at, n * sizeof(T));
-        at += n * sizeof(T);
-        return true;
-    }
-    bool matrix(Mat4& m)
-    {
-        const std::size_t where = at;
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r)
-                if (!raw(m[c][r]))
-                    return false;
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r)
-                if (!std::isfinite(m[c][r]))
-                    return fail("a matrix has a value that is not a finite number", where);
-        return true;
-    }
-    bool points(std::vector<glm::vec3>& values, std::size_t n, const char* what)
-    {
-        const std::size_t where = at;
-        if (!array(values, n))
-            return false;
-        for (std::size_t i = 0; i < n; ++i)
-            if (!std::isfinite(values[i].x) || !std::isfinite(values[i].y) || !std::isfinite(values[i].z))
-                return fail(std::string(what) + " of vertex " + std::to_string(i) + " is not finite", where + i * 12);
-        return true;
-    }
-    // offsets[n + 1] from 0, never decreasing, ending at `total`.
-    bool offsets(std::vector<std::uint32_t>& values, std::size_t n, std::uint32_t total, const char* what)
-    {
-        const std::size_t where = at;
-        if (!array(values, n + 1))
-            return false;
-        if (values.front() != 0)
-            return fail(std::string("the ") + what + " offsets do not start at 0", where);
-        for (std::size_t i = 0; i < n; ++i)
-            if (values[i] > values[i + 1])
-                return fail(std::string("vertex ") + std::to_string(i) + "'s " + what + " run backwards", where + 4 * (i + 1));
-        if (values.back() != total)
-            return fail(std::string("the ") + what + " offsets end at " + std::to_string(values.back()) + ", not at their count " +
-                            std::to_string(total),
-                        where + 4 * n);
-        return true;
-    }
-};
+using binary::fnv1a;
+using binary::Reader;
+using binary::Writer;
 
 void writeChunk(Writer& w, const skin::SkinChunk& c)
 {
@@ -266,19 +132,8 @@ bool readVertices(Reader& r, skin::SkinChunk& c)
         return false;
     if (!r.offsets(c.weights.offsets, n, weights, "weight"))
         return false;
-    const std::size_t weightsAt = r.at;
-    if (std::size_t(weights) > r.left() / 8)
-        return r.fail("the weights run past the end of the file");
-    c.weights.influences.resize(weights);
-    for (std::size_t k = 0; k < weights; ++k) {
-        model::Influence& influence = c.weights.influences[k];
-        r.raw(influence.joint);
-        r.raw(influence.weight);
-        if (influence.joint >= c.joints.size())
-            return r.fail("a weight names influence " + std::to_string(influence.joint) + ", which the chunk does not list", weightsAt + 8 * k);
-        if (!std::isfinite(influence.weight) || influence.weight < 0.0f || influence.weight > 1.0001f)
-            return r.fail("a weight is outside [0, 1]", weightsAt + 8 * k + 4);
-    }
+    if (!r.influences(c.weights.influences, weights, c.joints.size()))
+        return false;
     return true;
 }
 
@@ -346,23 +201,15 @@ std::string writeSkinChunks(const std::vector<skin::SkinChunk>& chunks)
     w.raw(std::uint32_t(chunks.size()));
     for (const skin::SkinChunk& chunk : chunks)
         writeChunk(w, chunk);
-    w.raw(fnv1a(w.out.data(), w.out.size()));
-    return w.out;
+    return w.finish();
 }
 
 Result<std::vector<skin::SkinChunk>> readSkinChunks(const std::string& bytes, const std::string& path)
 {
     using Out = Result<std::vector<skin::SkinChunk>>;
     auto failure = [&](const std::string& message) { return Out::failure(makeError({path, 0, 0}, message)); };
-    if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
-        return failure("not a Rigsmith skin chunk file (it does not start with RSCHUNKS)");
-    if (bytes.size() < sizeof(kMagic) + 16)
-        return failure("the skin chunk file ends early at byte " + std::to_string(bytes.size()) + " (it is too short for its header)");
-    std::uint64_t stored = 0;
-    std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
-    if (stored != fnv1a(bytes.data(), bytes.size() - 8))
-        return failure("the skin chunk file is damaged or truncated: its checksum (the last 8 bytes, at byte " +
-                       std::to_string(bytes.size() - 8) + ") does not match its " + std::to_string(bytes.size() - 8) + " bytes");
+    if (const std::string envelope = binary::checkEnvelope(bytes, kMagic, "skin chunk"); !envelope.empty())
+        return failure(envelope);
     Reader r{bytes, sizeof(kMagic), bytes.size() - 8, {}, {}};
     std::uint32_t version = 0, count = 0;
     r.raw(version);
@@ -394,21 +241,10 @@ Status saveSkinChunkFile(const std::string& path, const std::vector<skin::SkinCh
 
 Result<std::vector<skin::SkinChunk>> loadSkinChunkFile(const std::string& path)
 {
-    using Out = Result<std::vector<skin::SkinChunk>>;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        return Out::failure(makeError({path, 0, 0}, "no such skin chunk file (or not a regular file)"));
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (ec || size > kMaxFileBytes)
-        return Out::failure(makeError({path, 0, 0}, "the skin chunk file is larger than 2 GB (or its size cannot be read)"));
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return Out::failure(makeError({path, 0, 0}, "cannot open the skin chunk file"));
-    std::string bytes(std::size_t(size), '\0');
-    in.read(bytes.data(), std::streamsize(size));
-    if (std::size_t(in.gcount()) != size)
-        return Out::failure(makeError({path, 0, 0}, "cannot read the skin chunk file whole (it changed while being read?)"));
-    return readSkinChunks(bytes, path);
+    auto bytes = binary::readWholeFile(path, "skin chunk", kMaxFileBytes);
+    if (!bytes)
+        return Result<std::vector<skin::SkinChunk>>::failure(bytes.takeDiagnostics());
+    return readSkinChunks(*bytes, path);
 }
 
 } // namespace rs::io

@@ -1,5 +1,9 @@
 #include "model/Mesh.h"
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
 namespace rs::model {
 
 std::uint64_t topologyFingerprint(const Mesh& mesh)
@@ -21,6 +25,26 @@ bool bindingFits(const MeshBinding& binding, const Mesh& mesh)
 {
     return binding.vertexCount == mesh.vertexCount() && binding.weights.vertexCount() == mesh.vertexCount() &&
            binding.fingerprint == topologyFingerprint(mesh);
+}
+
+std::vector<glm::vec3> vertexNormals(const Mesh& mesh, const std::vector<glm::vec3>& positions, glm::vec3 fallback)
+{
+    std::vector<glm::vec3> normals(positions.size(), glm::vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        if (a >= normals.size() || b >= normals.size() || c >= normals.size())
+            continue;
+        // The cross product's length is twice the area: larger faces count more.
+        const glm::vec3 n = glm::cross(positions[b] - positions[a], positions[c] - positions[a]);
+        normals[a] += n;
+        normals[b] += n;
+        normals[c] += n;
+    }
+    for (glm::vec3& n : normals) {
+        const float length = glm::length(n);
+        n = length > 0.0f && std::isfinite(length) ? n / length : fallback;
+    }
+    return normals;
 }
 
 } // namespace rs::model

@@ -28,6 +28,12 @@ struct Mesh {
 // stored for a mesh apply 1:1 only while this is unchanged.
 std::uint64_t topologyFingerprint(const Mesh& mesh);
 
+// Area-weighted unit vertex normals of `mesh`'s triangles over `positions`
+// (its own, or a posed copy of them, one per vertex); a vertex on no triangle
+// of positive area gets `fallback`. Triangles with an index out of range are skipped.
+std::vector<glm::vec3> vertexNormals(const Mesh& mesh, const std::vector<glm::vec3>& positions, glm::vec3 fallback = {0.0f, 1.0f, 0.0f});
+inline std::vector<glm::vec3> vertexNormals(const Mesh& mesh) { return vertexNormals(mesh, mesh.positions); }
+
 // One skin joint's share of a vertex.
 struct Influence {
     std::uint32_t joint = 0; // into MeshWeights::joints

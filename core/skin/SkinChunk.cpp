@@ -18,25 +18,6 @@ std::string formatExportTime(std::int64_t microseconds)
     return text;
 }
 
-std::vector<glm::vec3> vertexNormals(const model::Mesh& mesh)
-{
-    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-        if (a >= normals.size() || b >= normals.size() || c >= normals.size())
-            continue;
-        // The cross product's length is twice the area: larger faces count more.
-        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-        normals[a] += n;
-        normals[b] += n;
-        normals[c] += n;
-    }
-    for (glm::vec3& n : normals) {
-        const float length = glm::length(n);
-        n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
-    }
-    return normals;
-}
 
 namespace {
 

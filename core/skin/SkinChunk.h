@@ -90,7 +90,7 @@ Result<SkinChunk> makeSkinChunk(const ChunkSource& source, const std::vector<Ski
 // An export time as people read it: "2024-05-01 13:45:12 UTC".
 std::string formatExportTime(std::int64_t microsecondsSince1970);
 
-// Area-weighted vertex normals of a mesh's triangles (unit; +Y where a vertex has none).
-std::vector<glm::vec3> vertexNormals(const model::Mesh& mesh);
+// Area-weighted vertex normals (model/Mesh.h), as skin code calls them.
+using model::vertexNormals;
 
 } // namespace rs::skin

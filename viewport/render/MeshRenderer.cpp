@@ -1,5 +1,7 @@
 #include "MeshRenderer.h"
 
+#include "GlProgram.h"
+
 #include <QImage>
 
 #include <epoxy/gl.h>
@@ -112,41 +114,6 @@ struct MeshInfluence {
     float weights[4];
 };
 
-GLuint compileShader(GLenum type, const char* source, std::string& error)
-{
-    GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048];
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        error = std::string("mesh shader compilation failed: ") + log;
-        glDeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
-
-// Area-weighted vertex normals, for a mesh that brings none.
-std::vector<glm::vec3> computeNormals(const model::Mesh& mesh)
-{
-    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-        if (a >= normals.size() || b >= normals.size() || c >= normals.size())
-            continue;
-        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-        normals[a] += n;
-        normals[b] += n;
-        normals[c] += n;
-    }
-    for (glm::vec3& n : normals)
-        n = glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f, 1.0f, 0.0f);
-    return normals;
-}
-
 } // namespace
 
 struct MeshRenderer::Gl {
@@ -186,23 +153,9 @@ MeshRenderer::~MeshRenderer() = default;
 bool MeshRenderer::initialize(std::string& error)
 {
     auto gl = std::make_unique<Gl>();
-    const GLuint vs = compileShader(GL_VERTEX_SHADER, kMeshVertexShader, error);
-    const GLuint fs = vs ? compileShader(GL_FRAGMENT_SHADER, kMeshFragmentShader, error) : 0;
-    if (!vs || !fs)
+    gl->program = linkProgram(kMeshVertexShader, kMeshFragmentShader, "mesh", error);
+    if (!gl->program)
         return false;
-    gl->program = glCreateProgram();
-    glAttachShader(gl->program, vs);
-    glAttachShader(gl->program, fs);
-    glLinkProgram(gl->program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(gl->program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        error = "mesh shader link failed";
-        glDeleteProgram(gl->program);
-        return false;
-    }
     const GLuint p = gl->program;
     gl->viewProjection = glGetUniformLocation(p, "viewProjection");
     gl->palette = glGetUniformLocation(p, "palette");
@@ -301,7 +254,7 @@ MeshRenderer::Gl::GpuMesh& MeshRenderer::Gl::meshFor(const SceneMesh& m)
     gpu.model = m.model;
     gpu.mesh = m.mesh;
     const std::vector<glm::vec3> computed = mesh.normals.size() == mesh.positions.size() ? std::vector<glm::vec3>{}
-                                                                                           : computeNormals(mesh);
+                                                                                           : model::vertexNormals(mesh);
     const std::vector<glm::vec3>& normals = computed.empty() ? mesh.normals : computed;
     std::vector<MeshVertex> vertices(mesh.positions.size());
     for (std::size_t v = 0; v < vertices.size(); ++v) {

@@ -1,5 +1,7 @@
 #include "Renderer.h"
 
+#include "GlProgram.h"
+
 #include "MeshRenderer.h"
 
 #include <epoxy/gl.h>
@@ -44,23 +46,6 @@ std::vector<Vertex> gridVertices();
 void push(std::vector<Vertex>& out, const glm::dvec3& p, const glm::dvec3& c)
 {
     out.push_back({float(p.x), float(p.y), float(p.z), float(c.x), float(c.y), float(c.z)});
-}
-
-GLuint compile(GLenum type, const char* source, std::string& error)
-{
-    GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024];
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        error = std::string("shader compilation failed: ") + log;
-        glDeleteShader(shader);
-        return 0;
-    }
-    return shader;
 }
 
 const glm::dvec3 kGuideColor(0.95, 0.55, 0.2);
@@ -112,23 +97,9 @@ bool Renderer::initialize(std::string& error)
         return false;
     }
     auto gl = std::make_unique<GlState>();
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader, error);
-    const GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, kFragmentShader, error) : 0;
-    if (!vs || !fs)
+    gl->program = linkProgram(kVertexShader, kFragmentShader, "scene", error);
+    if (!gl->program)
         return false;
-    gl->program = glCreateProgram();
-    glAttachShader(gl->program, vs);
-    glAttachShader(gl->program, fs);
-    glLinkProgram(gl->program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(gl->program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        error = "shader link failed";
-        glDeleteProgram(gl->program);
-        return false;
-    }
     gl->viewProjection = glGetUniformLocation(gl->program, "viewProjection");
     gl->pointSize = glGetUniformLocation(gl->program, "pointSize");
     gl->roundPoints = glGetUniformLocation(gl->program, "roundPoints");
