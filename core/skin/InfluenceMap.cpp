@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 namespace rs::skin {
 
@@ -76,12 +77,14 @@ ChunkJoint jointOf(const SkinChunk& c, std::size_t j)
     return joint;
 }
 
-void record(std::vector<InfluenceMatch>& matches, How how, const std::string& name, const std::string& target, const std::string& mesh)
+// One entry per influence name and how; the meshes whose chunks weight it.
+void record(std::vector<InfluenceMatch>& matches, How how, const std::string& name, const std::string& target, const std::string& mesh,
+            bool weighted = true)
 {
     auto it = std::find_if(matches.begin(), matches.end(), [&](const InfluenceMatch& m) { return m.name == name && m.how == how; });
     if (it == matches.end())
         it = matches.insert(matches.end(), InfluenceMatch{how, name, target, {}});
-    if (how != How::Unused && std::find(it->meshes.begin(), it->meshes.end(), mesh) == it->meshes.end())
+    if (weighted && how != How::Unused && std::find(it->meshes.begin(), it->meshes.end(), mesh) == it->meshes.end())
         it->meshes.push_back(mesh);
 }
 
@@ -145,7 +148,7 @@ Result<InfluenceResolution> resolveInfluences(const std::vector<SkinChunk>& chun
             const ChunkJoint joint = jointOf(c, j);
             if (auto found = lookup.direct(joint, joint.key)) {
                 target[j] = found->first;
-                record(out.matches, weighted[j] ? found->second : How::Unused, joint.name, boneNames[std::size_t(found->first)], c.mesh);
+                record(out.matches, found->second, joint.name, boneNames[std::size_t(found->first)], c.mesh, weighted[j]);
             } else if (!weighted[j]) {
                 record(out.matches, How::Unused, joint.name, "", c.mesh);
             } else if (options.missing == MissingInfluences::Create) {
@@ -159,6 +162,11 @@ Result<InfluenceResolution> resolveInfluences(const std::vector<SkinChunk>& chun
             }
         }
     }
+    std::set<std::string> placed; // an influence is unused only when no chunk weights it
+    for (const InfluenceMatch& m : out.matches)
+        if (m.how != How::Unused)
+            placed.insert(m.name);
+    std::erase_if(out.matches, [&](const InfluenceMatch& m) { return m.how == How::Unused && placed.count(m.name); });
     for (const auto& entry : options.names)
         if (std::find(lookup.mapUsed.begin(), lookup.mapUsed.end(), entry.first) == lookup.mapUsed.end())
             problems.push_back(makeWarning({}, "the name map's entry for '" + entry.first + "' is not needed: no chunk has a missing influence of that name"));

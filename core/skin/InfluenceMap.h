@@ -39,8 +39,9 @@ struct InfluenceMapOptions {
     std::map<std::string, std::string> names; // chunk influence name -> rig skin joint export name
 };
 
-// How one influence of the chunks was resolved (one entry per distinct
-// influence name and key, in the order first met).
+// How one influence of the chunks was resolved (one entry per influence name
+// and way, in the order first met). Unused: the rig does not have it and no
+// chunk weights it; one the rig has counts by how it matched, weighted or not.
 struct InfluenceMatch {
     enum class How { Identity, Name, Mapped, Created, Unused };
     How how = How::Identity;
