@@ -166,6 +166,19 @@ model::MeshWeights scoped(const ImportArguments& m, const Character& c, const st
     return std::move(*kept);
 }
 
+// The mesh's record in the guide gets the scoped weights.
+void bindImported(const ImportArguments& m, Character& c, const std::vector<skin::SkinChunk>& chunks, const skin::MeshImportReport& report,
+          ImportTarget& t, model::MeshWeights imported)
+{
+    model::MeshBinding binding{t.mesh.model, t.mesh.mesh->name, t.mesh.mesh->vertexCount(), model::topologyFingerprint(*t.mesh.mesh),
+                               scoped(m, c, chunks, report, t, std::move(imported))};
+    if (t.mesh.binding >= 0)
+        c.guide.bindings[std::size_t(t.mesh.binding)] = std::move(binding);
+    else
+        c.guide.bindings.push_back(std::move(binding));
+    printImportReport(report, t);
+}
+
 } // namespace
 
 int runSkinImport(const std::vector<std::string>& args)
@@ -195,16 +208,8 @@ int runSkinImport(const std::vector<std::string>& args)
     print(imported.diagnostics());
     if (!imported)
         return 1;
-    for (std::size_t i = 0; i < targets->size(); ++i) {
-        ImportTarget& t = (*targets)[i];
-        model::MeshBinding binding{t.mesh.model, t.mesh.mesh->name, t.mesh.mesh->vertexCount(), model::topologyFingerprint(*t.mesh.mesh),
-                                   scoped(m, c, *chunks, reports[i], t, std::move((*imported)[i]))};
-        if (t.mesh.binding >= 0)
-            c.guide.bindings[std::size_t(t.mesh.binding)] = std::move(binding);
-        else
-            c.guide.bindings.push_back(std::move(binding));
-        printImportReport(reports[i], t);
-    }
+    for (std::size_t i = 0; i < targets->size(); ++i)
+        bindImported(m, c, *chunks, reports[i], (*targets)[i], std::move((*imported)[i]));
     const Status saved = io::saveGuideWeights(c.guide, m.guide);
     print(saved.diagnostics());
     if (saved.failed())

@@ -122,11 +122,35 @@ Diagnostics missingErrors(const std::vector<InfluenceMatch>& missing, MissingInf
 
 } // namespace
 
-Result<InfluenceResolution> resolveInfluences(const std::vector<SkinChunk>& chunks, const std::vector<SkinBone>& bones,
-                                              const std::vector<std::string>& boneNames, const InfluenceMapOptions& options)
+namespace {
+
+// One chunk's influences: targets, matches, the missing ones and notes.
+void resolveChunk(const SkinChunk& c, Lookup& lookup, const std::vector<std::string>& boneNames, InfluenceResolution& out,
+                  std::vector<InfluenceMatch>& missing, Diagnostics& problems)
 {
-    if (bones.empty() || boneNames.size() != bones.size())
-        return Result<InfluenceResolution>::refused("the rig has no skin joint to import weights onto");
+    const std::vector<bool> weighted = weightedJoints(c);
+    std::vector<std::int32_t>& target = out.target.emplace_back(c.weights.joints.size(), -1);
+    for (std::size_t j = 0; j < c.weights.joints.size(); ++j) {
+        const ChunkJoint joint = jointOf(c, j);
+        if (auto found = lookup.direct(joint, joint.key)) {
+            target[j] = found->first;
+            record(out.matches, found->second, joint.name, boneNames[std::size_t(found->first)], c.mesh, weighted[j]);
+        } else if (!weighted[j]) {
+            record(out.matches, How::Unused, joint.name, "", c.mesh);
+        } else if (lookup.options->missing == MissingInfluences::Create) {
+            const auto [bone, ancestor] = rehome(c, j, lookup);
+            target[j] = bone;
+            record(out.matches, How::Created, joint.name, boneNames[std::size_t(bone)], c.mesh);
+            problems.push_back(makeWarning({}, "mesh '" + c.mesh + "': influence '" + joint.name + "' is not a skin joint of the rig; its weights go to " +
+                                                   (ancestor ? "its ancestor '" : "the skeleton's root '") + boneNames[std::size_t(bone)] + "'"));
+        } else {
+            record(missing, How::Created, joint.name, "", c.mesh);
+        }
+    }
+}
+
+Lookup lookupOf(const std::vector<SkinBone>& bones, const std::vector<std::string>& boneNames, const InfluenceMapOptions& options)
+{
     Lookup lookup;
     lookup.options = &options;
     for (std::int32_t b = std::int32_t(bones.size()) - 1; b >= 0; --b) {
@@ -135,33 +159,25 @@ Result<InfluenceResolution> resolveInfluences(const std::vector<SkinChunk>& chun
         if (bones[std::size_t(b)].parent < 0)
             lookup.root = b;
     }
+    return lookup;
+}
+
+} // namespace
+
+Result<InfluenceResolution> resolveInfluences(const std::vector<SkinChunk>& chunks, const std::vector<SkinBone>& bones,
+                                              const std::vector<std::string>& boneNames, const InfluenceMapOptions& options)
+{
+    if (bones.empty() || boneNames.size() != bones.size())
+        return Result<InfluenceResolution>::refused("the rig has no skin joint to import weights onto");
+    Lookup lookup = lookupOf(bones, boneNames, options);
     Diagnostics problems;
     for (const auto& [from, to] : options.names)
         if (!lookup.byName.count(to))
             problems.push_back(makeError({}, "the name map sends '" + from + "' to '" + to + "', which is not a skin joint of the rig"));
     InfluenceResolution out;
     std::vector<InfluenceMatch> missing;
-    for (const SkinChunk& c : chunks) {
-        const std::vector<bool> weighted = weightedJoints(c);
-        std::vector<std::int32_t>& target = out.target.emplace_back(c.weights.joints.size(), -1);
-        for (std::size_t j = 0; j < c.weights.joints.size(); ++j) {
-            const ChunkJoint joint = jointOf(c, j);
-            if (auto found = lookup.direct(joint, joint.key)) {
-                target[j] = found->first;
-                record(out.matches, found->second, joint.name, boneNames[std::size_t(found->first)], c.mesh, weighted[j]);
-            } else if (!weighted[j]) {
-                record(out.matches, How::Unused, joint.name, "", c.mesh);
-            } else if (options.missing == MissingInfluences::Create) {
-                const auto [bone, ancestor] = rehome(c, j, lookup);
-                target[j] = bone;
-                record(out.matches, How::Created, joint.name, boneNames[std::size_t(bone)], c.mesh);
-                problems.push_back(makeWarning({}, "mesh '" + c.mesh + "': influence '" + joint.name + "' is not a skin joint of the rig; its weights go to " +
-                                                       (ancestor ? "its ancestor '" : "the skeleton's root '") + boneNames[std::size_t(bone)] + "'"));
-            } else {
-                record(missing, How::Created, joint.name, "", c.mesh);
-            }
-        }
-    }
+    for (const SkinChunk& c : chunks)
+        resolveChunk(c, lookup, boneNames, out, missing, problems);
     std::set<std::string> placed; // an influence is unused only when no chunk weights it
     for (const InfluenceMatch& m : out.matches)
         if (m.how != How::Unused)
