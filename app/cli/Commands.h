@@ -15,10 +15,11 @@ int runNew(const std::vector<std::string>& args);
 int runAdd(const std::vector<std::string>& args);
 int runShapeIcons(const std::vector<std::string>& args);
 int runSkin(const std::vector<std::string>& args);
-// skin export / import / info (args[0] is the sub-command).
+// skin export / import / transfer / info (args[0] is the sub-command).
 int runSkinExport(const std::vector<std::string>& args);
 int runSkinImport(const std::vector<std::string>& args);
 int runSkinInfo(const std::vector<std::string>& args);
+int runSkinTransfer(const std::vector<std::string>& args);
 int runModel(const std::vector<std::string>& args);
 std::string usage();
 // Diagnostics on stderr, one "file:line: severity: message" line each.

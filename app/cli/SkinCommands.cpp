@@ -80,8 +80,10 @@ int runSkin(const std::vector<std::string>& args)
         return runSkinImport(args);
     if (!args.empty() && args[0] == "info")
         return runSkinInfo(args);
+    if (!args.empty() && args[0] == "transfer")
+        return runSkinTransfer(args);
     if (args.empty() || args[0] != "bind") {
-        std::cerr << "rigsmith-cli skin: expected bind, export, import or info\n" << usage();
+        std::cerr << "rigsmith-cli skin: expected bind, export, import, transfer or info\n" << usage();
         return 2;
     }
     std::string guidePath, modelPath, output, jsonPath;

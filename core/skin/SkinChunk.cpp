@@ -39,6 +39,32 @@ Result<SkinChunk> refuse(const std::string& mesh, const std::string& why)
     return Result<SkinChunk>::failure(makeError({}, "mesh '" + mesh + "': " + why));
 }
 
+// Triangles among the exported vertices, and a sample of neighbours.
+void addTopology(SkinChunk& chunk, const model::Mesh& mesh, const std::vector<std::uint32_t>& exported, int neighbourSample)
+{
+    const std::vector<std::uint32_t>& ids = chunk.vertexIds;
+    std::vector<std::set<std::uint32_t>> around(neighbourSample > 0 ? mesh.vertexCount() : 0);
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t c[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
+        if (c[0] >= mesh.vertexCount() || c[1] >= mesh.vertexCount() || c[2] >= mesh.vertexCount())
+            continue;
+        if (exported[c[0]] != ~0u && exported[c[1]] != ~0u && exported[c[2]] != ~0u)
+            chunk.triangles.insert(chunk.triangles.end(), {exported[c[0]], exported[c[1]], exported[c[2]]});
+        for (int k = 0; k < 3 && !around.empty(); ++k) {
+            around[c[k]].insert(c[(k + 1) % 3]);
+            around[c[k]].insert(c[(k + 2) % 3]);
+        }
+    }
+    chunk.neighbourOffsets.push_back(0);
+    for (const std::uint32_t v : ids) {
+        int taken = 0;
+        if (!around.empty())
+            for (auto it = around[v].begin(); it != around[v].end() && taken < neighbourSample; ++it, ++taken)
+                chunk.neighbours.push_back(*it);
+        chunk.neighbourOffsets.push_back(std::uint32_t(chunk.neighbours.size()));
+    }
+}
+
 } // namespace
 
 Result<SkinChunk> makeSkinChunk(const ChunkSource& source, const std::vector<SkinBone>& bones, const ChunkExportOptions& options)
@@ -131,27 +157,33 @@ Result<SkinChunk> makeSkinChunk(const ChunkSource& source, const std::vector<Ski
         chunk.weights.offsets.push_back(std::uint32_t(chunk.weights.influences.size()));
     }
 
-    // Triangles among the exported vertices, and a sample of neighbours.
-    std::vector<std::set<std::uint32_t>> around(options.neighbourSample > 0 ? mesh.vertexCount() : 0);
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t c[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
-        if (c[0] >= mesh.vertexCount() || c[1] >= mesh.vertexCount() || c[2] >= mesh.vertexCount())
-            continue;
-        if (exported[c[0]] != ~0u && exported[c[1]] != ~0u && exported[c[2]] != ~0u)
-            chunk.triangles.insert(chunk.triangles.end(), {exported[c[0]], exported[c[1]], exported[c[2]]});
-        for (int k = 0; k < 3 && !around.empty(); ++k) {
-            around[c[k]].insert(c[(k + 1) % 3]);
-            around[c[k]].insert(c[(k + 2) % 3]);
-        }
-    }
-    chunk.neighbourOffsets.push_back(0);
-    for (const std::uint32_t v : ids) {
-        int taken = 0;
-        if (!around.empty())
-            for (auto it = around[v].begin(); it != around[v].end() && taken < options.neighbourSample; ++it, ++taken)
-                chunk.neighbours.push_back(*it);
-        chunk.neighbourOffsets.push_back(std::uint32_t(chunk.neighbours.size()));
-    }
+    addTopology(chunk, mesh, exported, options.neighbourSample);
+    return chunk;
+}
+
+Result<SkinChunk> makeBindPoseChunk(const model::Mesh& mesh, const model::MeshWeights& weights, std::vector<ChunkJoint> joints,
+                                    const std::string& model, const ChunkExportOptions& options)
+{
+    if (weights.vertexCount() != mesh.vertexCount() || joints.size() != weights.joints.size() || weights.parents.size() != joints.size())
+        return refuse(mesh.name, "its weights do not fit the mesh or their influences");
+    SkinChunk chunk;
+    chunk.mesh = mesh.name;
+    chunk.model = model;
+    chunk.tool = options.tool;
+    chunk.user = options.user;
+    chunk.exportedAtMicroseconds = options.exportedAtMicroseconds;
+    chunk.totalVertexCount = std::uint32_t(mesh.vertexCount());
+    chunk.fingerprint = model::topologyFingerprint(mesh);
+    chunk.method = options.method;
+    chunk.vertexIds.resize(mesh.vertexCount());
+    std::vector<std::uint32_t> exported(mesh.vertexCount());
+    for (std::uint32_t v = 0; v < mesh.vertexCount(); ++v)
+        chunk.vertexIds[v] = exported[v] = v;
+    chunk.positions = mesh.positions;
+    chunk.normals = normalsOf(mesh);
+    chunk.weights = weights;
+    chunk.joints = std::move(joints);
+    addTopology(chunk, mesh, exported, options.neighbourSample);
     return chunk;
 }
 

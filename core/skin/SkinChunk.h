@@ -87,6 +87,12 @@ struct ChunkExportOptions {
 // weights do not fit the mesh or the bones, or a vertex id is out of range.
 Result<SkinChunk> makeSkinChunk(const ChunkSource& source, const std::vector<SkinBone>& bones, const ChunkExportOptions& options);
 
+// The bind-pose chunk of a whole mesh whose weights are on `joints` (one per
+// weights.joints, in order), without a rig (what `skin transfer` writes);
+// options.rig and posedRig are not read. Fails when the sizes disagree.
+Result<SkinChunk> makeBindPoseChunk(const model::Mesh& mesh, const model::MeshWeights& weights, std::vector<ChunkJoint> joints,
+                                    const std::string& model, const ChunkExportOptions& options);
+
 // An export time as people read it: "2024-05-01 13:45:12 UTC".
 std::string formatExportTime(std::int64_t microsecondsSince1970);
 

@@ -1,0 +1,181 @@
+// rigsmith-cli skin transfer SOURCE TARGET -o FILE (issue 20 item 6): for
+// pipelines without a guide. SOURCE is a skin chunk file (every chunk in it,
+// as `skin import` reads them); TARGET any model file io::importModel reads.
+// Each target mesh gets weights by the decision tree and options of `skin
+// import`, on the source's influences (there is no rig to resolve them onto),
+// written as a bind-pose chunk per mesh to FILE (.rschunks, atomically).
+#include "cli/Commands.h"
+#include "cli/SkinChunkSupport.h"
+#include "cli/SkinImportOptions.h"
+
+#include "io/AtomicFile.h"
+#include "io/ModelImport.h"
+#include "io/SkinChunks.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace rs::cli {
+
+namespace {
+
+struct TransferArguments {
+    std::string source, target, output, json;
+    std::set<std::string> meshes;
+    bool progress = false;
+    skin::TransferOptions options;
+};
+
+int parseTransfer(const std::vector<std::string>& args, TransferArguments& t)
+{
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        bool known = false;
+        if (const int usage = parseTransferOption(args, i, t.options, known, "skin transfer"))
+            return usage;
+        if (known)
+            continue;
+        const bool hasValue = i + 1 < args.size() && !args[i + 1].empty();
+        if ((a == "-o" || a == "--json") && hasValue)
+            (a == "-o" ? t.output : t.json) = args[++i];
+        else if (a == "--mesh" && hasValue)
+            t.meshes.insert(args[++i]);
+        else if (a == "--progress")
+            t.progress = true;
+        else if (parseTransferFlag(a, t.options))
+            continue;
+        else if (!a.empty() && a[0] != '-' && (t.source.empty() || t.target.empty()))
+            (t.source.empty() ? t.source : t.target) = a;
+        else
+            return usageError("skin transfer", "unexpected argument '" + a + "'");
+    }
+    if (t.source.empty() || t.target.empty() || t.output.empty())
+        return usageError("skin transfer", "expected SOURCE TARGET -o FILE.rschunks");
+    const std::string ext = std::filesystem::path(t.output).extension().string();
+    if (ext == ".glb" || ext == ".gltf" || ext == ".fbx")
+        return usageError("skin transfer", "-o writes a skin chunk file (.rschunks); build a guide to export skinned glTF or FBX");
+    return 0;
+}
+
+// The source's chunks; a model file is refused with what to do instead.
+std::optional<std::vector<skin::SkinChunk>> readSource(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char magic[8] = {};
+    if (in && in.read(magic, 8) && std::string(magic, 8) != "RSCHUNKS") {
+        std::cerr << path << ": error: the source is not a skin chunk file; reading skin weights from a model file is not "
+                     "supported yet: export the source's weights as chunks ('rigsmith-cli skin export GUIDE -o FILE.rschunks')\n";
+        return std::nullopt;
+    }
+    return readChunkFiles({path});
+}
+
+// Per influence key, its name and matrices from the chunk that has it.
+std::vector<skin::ChunkJoint> jointsFor(const model::MeshWeights& weights, const std::vector<skin::SkinChunk>& chunks)
+{
+    std::map<NodeKey, skin::ChunkJoint> byKey;
+    for (const skin::SkinChunk& c : chunks)
+        for (std::size_t j = 0; j < c.joints.size() && j < c.weights.joints.size(); ++j)
+            byKey.try_emplace(c.weights.joints[j], c.joints[j]);
+    std::vector<skin::ChunkJoint> joints;
+    for (const NodeKey& key : weights.joints) {
+        auto it = byKey.find(key);
+        joints.push_back(it != byKey.end() ? it->second : skin::ChunkJoint{key, key.tag});
+        joints.back().key = key;
+    }
+    return joints;
+}
+
+std::string transferJson(const TransferArguments& t, const std::vector<skin::MeshImportReport>& reports)
+{
+    std::ostringstream out;
+    out << "{\"source\": " << jsonString(t.source) << ", \"target\": " << jsonString(t.target) << ", \"output\": " << jsonString(t.output)
+        << ",\n \"meshes\": [";
+    for (std::size_t i = 0; i < reports.size(); ++i)
+        out << (i ? ",\n  " : "\n  ") << "{\"mesh\": " << jsonString(reports[i].mesh) << ", " << reportCountsJson(reports[i], t.options.method)
+            << "}";
+    out << "]}\n";
+    return out.str();
+}
+
+// The target's meshes (those named, if any); null on an error (printed).
+std::optional<std::vector<const model::Mesh*>> targetMeshes(const TransferArguments& t, const model::Model& model)
+{
+    std::vector<const model::Mesh*> meshes;
+    std::set<std::string> names;
+    for (const model::Mesh& mesh : model.meshes)
+        if (t.meshes.empty() || t.meshes.count(mesh.name)) {
+            if (!names.insert(mesh.name).second) {
+                std::cerr << t.target << ": error: a second mesh named '" << mesh.name << "': a chunk file holds one chunk per name\n";
+                return std::nullopt;
+            }
+            meshes.push_back(&mesh);
+        }
+    for (const std::string& name : t.meshes)
+        if (!names.count(name)) {
+            std::cerr << t.target << ": error: no mesh named '" << name << "'\n";
+            return std::nullopt;
+        }
+    return meshes;
+}
+
+int writeJson(const TransferArguments& t, const std::vector<skin::MeshImportReport>& reports)
+{
+    if (t.json.empty())
+        return 0;
+    if (t.json == "-") {
+        std::cout << transferJson(t, reports);
+        return 0;
+    }
+    const Status written = io::writeFileAtomically(t.json, transferJson(t, reports));
+    print(written.diagnostics());
+    return written.failed() ? 1 : 0;
+}
+
+} // namespace
+
+int runSkinTransfer(const std::vector<std::string>& args)
+{
+    TransferArguments t;
+    if (const int usage = parseTransfer(args, t))
+        return usage;
+    if (!canWriteBeside(t.output, "skin chunks"))
+        return 1;
+    const auto chunks = readSource(t.source);
+    auto model = chunks ? io::importModel(t.target) : Result<model::Model>::failure(Diagnostics{});
+    print(model.diagnostics());
+    const auto meshes = model ? targetMeshes(t, *model) : std::nullopt;
+    if (!meshes)
+        return 1;
+    t.options.progress = progressPrinter("transferring weights", t.progress);
+    std::vector<skin::MeshImportReport> reports;
+    auto weights = skin::importChunks(*chunks, *meshes, t.options, &reports);
+    print(weights.diagnostics());
+    if (!weights)
+        return 1;
+    skin::ChunkExportOptions meta;
+    meta.tool = std::string("rigsmith ") + RIGSMITH_VERSION;
+    meta.user = userName();
+    meta.exportedAtMicroseconds = nowMicroseconds();
+    std::vector<skin::SkinChunk> out;
+    for (std::size_t i = 0; i < meshes->size(); ++i) {
+        auto chunk = skin::makeBindPoseChunk(*(*meshes)[i], (*weights)[i], jointsFor((*weights)[i], *chunks), t.target, meta);
+        print(chunk.diagnostics());
+        if (!chunk)
+            return 1;
+        out.push_back(chunk.take());
+        printImportReport(reports[i], ImportTarget{});
+    }
+    const Status saved = io::saveSkinChunkFile(t.output, out);
+    print(saved.diagnostics());
+    if (saved.failed())
+        return 1;
+    std::cout << "skin chunks: " << t.output << '\n';
+    return writeJson(t, reports);
+}
+
+} // namespace rs::cli
