@@ -13,7 +13,9 @@
 //
 // Topic files: Session.cpp (documents, builds, events), SessionGuide.cpp
 // (guide authoring), SessionPose.cpp (rig mode), SessionShapes.cpp (shape and
-// CV editing).
+// CV editing), SessionSkin.cpp / SessionPaint.cpp (the character and its
+// weights), SessionChunks.cpp (skin chunk export and import),
+// SessionRefit.cpp (changed meshes re-fitted from their previous chunk).
 #include "base/Status.h"
 #include "edit/GuideMove.h"
 #include "edit/History.h"
@@ -23,6 +25,7 @@
 #include "eval/PoseTools.h"
 #include "model/Rig.h"
 #include "session/MirroredGuides.h"
+#include "session/SkinChunkJob.h"
 #include "skin/SkinBones.h"
 #include "skin/WeightTools.h"
 #include "templates/TemplateRegistry.h"
@@ -189,6 +192,28 @@ public:
     void beginWeightStroke(const std::string& what);
     void endWeightStroke();
 
+    // --- skin chunks (SessionChunks.cpp; session/SkinChunkJob.h)
+    // The chunks of the bound, unchanged meshes in `scope` in the current pose
+    // (the evaluated rig; bind pose when nothing is posed), with their bind
+    // positions (skin::makeSkinChunk). `stamp` gives tool, user, time, method
+    // and neighbour sample; its rigs are set here. Fails without a built rig,
+    // for an unbound mesh named by the scope, for two meshes of one name (a
+    // chunk file holds one chunk per name) or when nothing is left to export.
+    Result<std::vector<skin::SkinChunk>> exportSkinChunks(const SkinScope& scope, skin::ChunkExportOptions stamp = {}) const;
+    // An import of `chunks` (many files' chunks: merged here, the newest of a
+    // name wins) onto the meshes in `onto`. Refused for bad options, no target,
+    // or a selected-vertices import onto a mesh without applied weights.
+    Result<SkinImportJob> prepareSkinImport(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options, const SkinScope& onto) const;
+    // A run job's weights as one undo step named `what` (ChangeKind::Weights):
+    // a whole mesh's record is replaced (or added); with selected vertices only
+    // those change. The stored influences are the chunks' skin joint keys,
+    // carried onto the rig by identity like any binding. Refused, changing
+    // nothing, when the job has not run or the models changed since prepare.
+    Result<std::vector<skin::MeshImportReport>> applySkinImport(SkinImportJob job, const std::string& what);
+    // prepare + run + apply on this thread.
+    Result<std::vector<skin::MeshImportReport>> importSkinChunks(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options,
+                                                                 const SkinScope& onto, const std::string& what = "Import skin weights");
+
     // --- weight painting (SessionPaint.cpp). Tools act on the bound,
     // unchanged character meshes; every one keeps weights normalised and
     // leaves locked joints alone, and is one undo step (a brush stroke too).
@@ -285,6 +310,10 @@ private:
     std::uint32_t jointIndex(edit::WeightEdit& edit, const NodeKey& key) const;
     skin::WeightContext weightContext(std::size_t mesh, const model::MeshWeights& weights);
     void updatePalette();
+    // The character meshes a scope covers, each with its vertices (empty: all).
+    Result<std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>>> scopeMeshes(const SkinScope& scope) const;
+    // The rig in the evaluated pose; none when it is the bind pose.
+    std::optional<model::Rig> posedRigNow() const;
 
     model::GuideDocument m_document;
     edit::History m_history{m_document};

@@ -370,3 +370,90 @@ TEST(SessionSkin, MirroringCopiesTheLeftArmsWeightsOntoTheRightWithTwinJoints)
         }
     }
 }
+
+TEST(SessionSkin, ExportedChunksImportBackOneToOneExactlyAsOneUndoStep)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::MeshBinding bound = f.s.document().bindings[0];
+    EXPECT_FALSE(f.s.exportSkinChunks(session::SkinScope::selectedVertices())) << "no vertex selected";
+    auto chunks = f.s.exportSkinChunks(session::SkinScope::all());
+    ASSERT_TRUE(chunks.ok());
+    ASSERT_EQ(chunks->size(), 1u);
+    EXPECT_EQ((*chunks)[0].vertexCount(), bound.vertexCount);
+    EXPECT_TRUE((*chunks)[0].inBindPose) << "nothing is posed";
+
+    // Spoil the weights, then import: 1:1, exactly the bound weights again.
+    f.s.selectVertices(0, {0, 1, 2, 3}, false);
+    ASSERT_TRUE(test::succeeded(f.s.applyWeightOperation(session::Session::WeightOperation::Limit, 1)));
+    f.s.clearVertexSelection();
+    const model::MeshWeights spoiled = f.s.document().bindings[0].weights;
+    ASSERT_FALSE(spoiled == bound.weights);
+    const std::size_t steps = f.s.history().size();
+    auto reports = f.s.importSkinChunks(*chunks, {}, session::SkinScope::all());
+    ASSERT_TRUE(reports.ok()) << formatAll(reports.diagnostics());
+    ASSERT_EQ(reports->size(), 1u);
+    EXPECT_EQ((*reports)[0].route, skin::ImportRoute::OneToOne);
+    EXPECT_EQ((*reports)[0].oneToOne, bound.vertexCount);
+    EXPECT_TRUE(f.s.document().bindings[0].weights == bound.weights) << "a 1:1 round trip is exact";
+    EXPECT_EQ(f.s.history().size(), steps + 1);
+    EXPECT_EQ(f.s.history().undoText(), "Import skin weights");
+    f.s.history().undo();
+    EXPECT_TRUE(f.s.document().bindings[0].weights == spoiled) << "one undo takes the import back";
+}
+
+TEST(SessionSkin, ImportOntoSelectedVerticesChangesOnlyThoseAndAPoseIsExported)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::MeshWeights bound = f.s.document().bindings[0].weights;
+    auto chunks = f.s.exportSkinChunks(session::SkinScope::ofMeshes({0}));
+    ASSERT_TRUE(chunks.ok());
+    f.s.selectVertices(0, {0, 1, 2, 3, 4, 5}, false);
+    ASSERT_TRUE(test::succeeded(f.s.applyWeightOperation(session::Session::WeightOperation::Limit, 1)));
+    const model::MeshWeights spoiled = f.s.document().bindings[0].weights;
+    f.s.selectVertices(0, {0, 1}, false);
+    auto job = f.s.prepareSkinImport(*chunks, {}, session::SkinScope::selectedVertices());
+    ASSERT_TRUE(job.ok());
+    ASSERT_TRUE(test::succeeded(job->run()));
+    const auto routes = job->routes(0);
+    EXPECT_EQ(std::count(routes.begin(), routes.end(), session::VertexRoute::OneToOne), std::ptrdiff_t(bound.vertexCount()));
+    ASSERT_TRUE(f.s.applySkinImport(job.take(), "Import skin weights").ok());
+    const model::MeshWeights& w = f.s.document().bindings[0].weights;
+    for (std::uint32_t v : {0u, 1u})
+        EXPECT_EQ(std::vector<model::Influence>(w.begin(v), w.end(v)), std::vector<model::Influence>(bound.begin(v), bound.end(v)));
+    for (std::uint32_t v : {2u, 5u})
+        EXPECT_EQ(std::vector<model::Influence>(w.begin(v), w.end(v)), std::vector<model::Influence>(spoiled.begin(v), spoiled.end(v)));
+
+    // Posed: positions follow the pose, bind positions are kept.
+    const auto blend = f.s.program()->channels().find(*f.s.rig()->findPath("arm.L::ctrls.switch"), "ik_blend");
+    ASSERT_TRUE(test::succeeded(f.s.setChannel(*blend, 0.0, false)));
+    const auto rz = f.s.program()->channels().find(*f.s.rig()->findPath("arm.L::ctrls.fk.1"), "rz");
+    ASSERT_TRUE(test::succeeded(f.s.setChannel(*rz, -60.0, false)));
+    auto posed = f.s.exportSkinChunks(session::SkinScope::all());
+    ASSERT_TRUE(posed.ok());
+    EXPECT_FALSE((*posed)[0].inBindPose);
+    EXPECT_GT(glm::length((*posed)[0].positions.back() - (*posed)[0].bindPositions.back()), 0.1f);
+}
+
+TEST(SessionSkin, ACancelledImportChangesNothing)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    auto chunks = f.s.exportSkinChunks(session::SkinScope::all());
+    ASSERT_TRUE(chunks.ok());
+    // A remeshed sleeve under the same name: a fallback, cancelled half way.
+    (*chunks)[0].fingerprint ^= 1;
+    const model::GuideDocument before = f.s.document();
+    const std::size_t steps = f.s.history().size();
+    skin::TransferOptions options;
+    options.progress = [](double fraction) { return fraction < 0.5; };
+    auto reports = f.s.importSkinChunks(*chunks, options, session::SkinScope::all());
+    EXPECT_FALSE(reports.ok());
+    EXPECT_NE(formatAll(reports.diagnostics()), "") << "says why";
+    EXPECT_TRUE(f.s.document() == before);
+    EXPECT_EQ(f.s.history().size(), steps);
+}
