@@ -164,6 +164,7 @@ Result<SkinImportJob> Session::prepareSkinImport(std::vector<skin::SkinChunk> ch
         return Out::refused("no skin chunk to import");
     job.options = std::move(options);
     for (auto& [index, vertices] : *meshes) {
+        std::sort(vertices.begin(), vertices.end());
         const CharacterMesh& m = m_characterMeshes[index];
         if (!vertices.empty() && !m.weights)
             return Out::failure(meshError(m_models[m.model].path, m.data(m_models).name,
