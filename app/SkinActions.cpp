@@ -117,6 +117,7 @@ void MainWindow::createSkinActions()
     });
     skinMenu->addAction(reload);
     createPaintActions(skinMenu);
+    createSkinChunkActions(skinMenu);
 
     m_modelWatcher = new QFileSystemWatcher(this);
     connect(m_modelWatcher, &QFileSystemWatcher::fileChanged, this, [this](const QString& path) {
