@@ -240,7 +240,10 @@ void MainWindow::finishChunkImport()
                 m_session.selectVertices(job->job.targets[t].characterMesh, std::move(vertices), true);
         }
         m_chunkPanel->showReports(job->job.reports, true);
-        report(tr("Import preview: %1 vertices %2 selected; nothing changed").arg(selected).arg(oneToOne ? tr("loaded 1:1") : tr("not loaded 1:1 (transferred or single influence)")),
+        report(tr("Import preview: %1 vertices %2 selected; nothing changed%3")
+                   .arg(selected)
+                   .arg(oneToOne ? tr("loaded 1:1") : tr("not loaded 1:1 (transferred or single influence)"))
+                   .arg(isPainting() ? QString() : tr(" (Skin > Paint Weights shows the selected vertices)")),
                job->job.notes);
         return;
     }
