@@ -128,6 +128,7 @@ bool EditorSession::recover(const QString& path, Diagnostics& diagnostics)
     diagnostics = loaded.takeDiagnostics();
     if (!loaded)
         return false;
+    loadSavedChunks(path, diagnostics);
     replaceWith(loaded.take(), path); // the file is only read: saving is the rigger's choice
     const Diagnostics unknown = templates::checkGuideTemplates(document(), templates(), autosavePathFor(path).toStdString());
     diagnostics.insert(diagnostics.end(), unknown.begin(), unknown.end());

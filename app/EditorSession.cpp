@@ -49,6 +49,7 @@ bool EditorSession::open(const QString& path, Diagnostics& diagnostics)
     // A damaged weights file is reported and left alone (a save writes weights only once some are bound).
     const Status weights = io::loadGuideWeights(path.toStdString(), guide);
     diagnostics.insert(diagnostics.end(), weights.diagnostics().begin(), weights.diagnostics().end());
+    loadSavedChunks(path, diagnostics);
     replaceWith(std::move(guide), path);
     const Diagnostics unknown = templates::checkGuideTemplates(document(), templates(), path.toStdString());
     diagnostics.insert(diagnostics.end(), unknown.begin(), unknown.end());
@@ -62,8 +63,23 @@ void EditorSession::replaceWith(model::GuideDocument document, const QString& pa
     m_ownsAutosave = false; // the previous guide's unsaved autosave stays to be offered when it is opened again
     m_filePath = path;
     m_baseHash = contentHash(path);
-    replaceDocument(std::move(document));
+    replaceDocument(std::move(document)); // re-fits changed meshes as an undo step
+    const bool refitted = history().size() > 0;
     history().setClean();
+    if (refitted)
+        history().setModified(); // re-fitted weights are not on disk yet
+}
+
+void EditorSession::loadSavedChunks(const QString& guidePath, Diagnostics& diagnostics)
+{
+    if (guidePath.isEmpty()) {
+        setSavedChunks({});
+        return;
+    }
+    // A damaged chunk file is reported; a changed mesh is then kept, not re-fitted.
+    auto chunks = io::loadGuideChunks(guidePath.toStdString());
+    diagnostics.insert(diagnostics.end(), chunks.diagnostics().begin(), chunks.diagnostics().end());
+    setSavedChunks(chunks ? chunks.take() : std::vector<skin::SkinChunk>{});
 }
 
 bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagnostics)
@@ -77,6 +93,7 @@ bool EditorSession::newDocument(const QString& templatePath, Diagnostics& diagno
             return false;
         document = loaded.take();
     }
+    setSavedChunks({});
     replaceWith(std::move(document), QString());
     const Diagnostics unknown = templates::checkGuideTemplates(this->document(), templates(), templatePath.toStdString());
     diagnostics.insert(diagnostics.end(), unknown.begin(), unknown.end());
@@ -93,6 +110,11 @@ bool EditorSession::save(const QString& path, Diagnostics& diagnostics)
     diagnostics.insert(diagnostics.end(), weights.diagnostics().begin(), weights.diagnostics().end());
     if (weights.failed())
         return false; // the guide is saved, its weights are not: the document stays unsaved
+    // The bound meshes as they are, to re-fit from when a model changes later.
+    const Status chunks = io::saveGuideChunks(bindingChunks(), path.toStdString());
+    diagnostics.insert(diagnostics.end(), chunks.diagnostics().begin(), chunks.diagnostics().end());
+    if (chunks.failed())
+        return false;
     discardAutosave(); // the previous path's (or the untitled one's)
     m_filePath = path;
     m_baseHash = contentHash(path);

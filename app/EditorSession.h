@@ -78,6 +78,8 @@ signals:
 
 private:
     void replaceWith(model::GuideDocument document, const QString& path);
+    // The chunks saved beside the guide's weights, for re-fitting changed meshes.
+    void loadSavedChunks(const QString& guidePath, Diagnostics& diagnostics);
 
     Diagnostics m_templateDiagnostics;
     QString m_filePath;

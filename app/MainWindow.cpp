@@ -129,6 +129,7 @@ void MainWindow::createDocks()
     tabifyDockWidget(channelDock, addDock(m_transformPanel, tr("Transform"), "transformDock", Qt::RightDockWidgetArea));
     m_options = new widgets::OptionsEditor(this);
     createPaintDock();
+    createSkinChunkDock();
     resizeDocks({addDock(m_options, tr("Options"), "optionsDock", Qt::RightDockWidgetArea), outlinerDock}, {340, 250},
                 Qt::Horizontal);
 

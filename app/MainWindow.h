@@ -20,7 +20,7 @@ class QMenu;
 class QProgressBar;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; class WeightPaintPanel; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; class WeightPaintPanel; class SkinChunkPanel; }
 
 namespace rs::app {
 
@@ -89,6 +89,18 @@ public:
     int paintBone() const;
     void choosePaintJoint(int bone);
 
+    // Skin > Skin Chunks (SkinChunkWiring.cpp): the Skin Chunks dock. Export
+    // writes the dock's scope to `path`; false with the reasons in the log.
+    bool exportSkinChunks(const QString& path);
+    // Imports (or previews: runs without applying, selects the vertices of
+    // the route the dock names) the files with the dock's options onto its
+    // target, on a worker thread with a progress dialog whose Cancel changes nothing.
+    void importSkinChunks(const QStringList& files, bool preview);
+    bool isImportingChunks() const { return m_chunkImport != nullptr; }
+    void cancelChunkImport();
+    void inspectSkinChunks(const QString& file);
+    widgets::SkinChunkPanel* chunkPanel() const { return m_chunkPanel; }
+
 protected:
     void closeEvent(QCloseEvent* event) override;
 
@@ -112,6 +124,9 @@ private:
     void refreshPaintPanel();
     void showPaintedWeights();
     QString skinBoneName(int bone) const;
+    void createSkinChunkActions(QMenu* skinMenu); // SkinChunkWiring.cpp
+    void createSkinChunkDock();
+    void finishChunkImport();
     void connectTransformPanel(); // TransformWiring.cpp
     void refreshTransformPanel();
     void showHelpText(const QString& title, const QString& markdown);
@@ -164,6 +179,9 @@ private:
     struct BindJob;
     std::shared_ptr<BindJob> m_bind; // the bind running on its worker thread (shared_ptr: BindJob is SkinActions.cpp's)
     ReloadPrompt m_reloadPrompt;
+    widgets::SkinChunkPanel* m_chunkPanel = nullptr;
+    struct ChunkImportJob;
+    std::shared_ptr<ChunkImportJob> m_chunkImport; // the import running on its worker thread
     QFileSystemWatcher* m_modelWatcher = nullptr;
     QStringList m_modelsAsked; // changed model files already offered (asked once per change)
 };

@@ -117,6 +117,7 @@ void MainWindow::createSkinActions()
     });
     skinMenu->addAction(reload);
     createPaintActions(skinMenu);
+    createSkinChunkActions(skinMenu);
 
     m_modelWatcher = new QFileSystemWatcher(this);
     connect(m_modelWatcher, &QFileSystemWatcher::fileChanged, this, [this](const QString& path) {
@@ -301,8 +302,8 @@ void MainWindow::modelFileChanged(const QString& path)
         reload = m_reloadPrompt(path);
     else if (isVisible())
         reload = QMessageBox::question(this, tr("Model changed"),
-                                       tr("%1 changed on disk. Read it again?\n\nWeights bound to a mesh whose vertices changed are kept, "
-                                          "not applied, until you bind again.")
+                                       tr("%1 changed on disk. Read it again?\n\nWeights bound to a mesh whose vertices changed are re-fitted "
+                                          "from the mesh as it was bound (one undo step).")
                                            .arg(QFileInfo(path).fileName())) == QMessageBox::Yes;
     m_modelsAsked.removeAll(path);
     if (!reload) {

@@ -16,11 +16,13 @@
 //   --frame X0,Y0,Z0,X1,Y1,Z1             frame this box (metres) instead of everything
 //   --action NAME                         trigger an action by object name, e.g.
 //                                         weights:selected, skinning:dualQuaternion (repeatable)
+//   --chunks FILE                         the Skin Chunks dock previewing an import of FILE
 //   --stroke X0,Y0,Z0,X1,Y1,Z1            with --action paintWeights: drag a paint stroke with the
 //                                         mouse from one world point's pixel to the other's (what
 //                                         lies under them is painted), the brush left at the end
 #include "EditLatency.h"
 #include "MainWindow.h"
+#include "SkinChunkPanel.h"
 
 #include "ViewportWidget.h"
 
@@ -160,6 +162,20 @@ bool applySetup(rs::app::MainWindow& window, bool rigMode, const QStringList& se
     return true;
 }
 
+// --chunks: the Skin Chunks dock previewing an import of the files (its
+// report, the vertices it would transfer selected) and inspecting the first.
+bool previewChunks(QApplication& app, rs::app::MainWindow& window, const QStringList& files)
+{
+    if (QAction* dock = window.findChild<QAction*>("skinChunks"); dock && !dock->isChecked())
+        dock->trigger();
+    window.chunkPanel()->setImportFiles(files);
+    window.importSkinChunks(files, true);
+    while (window.isImportingChunks())
+        app.processEvents(QEventLoop::AllEvents, 50);
+    window.inspectSkinChunks(files.front());
+    return true;
+}
+
 // --stroke: the left button dragged across the viewport as a rigger would.
 void dragStroke(rs::viewport::ViewportWidget* view, const QStringList& numbers)
 {
@@ -198,6 +214,7 @@ const char* kUsage =
     "  --pose CONTROLLER=RX,RY,RZ     set a controller's rotation in degrees, repeatable\n"
     "  --frame X0,Y0,Z0,X1,Y1,Z1      frame this box (metres) instead of everything\n"
     "  --action NAME                  trigger an action by object name (weights:selected...), repeatable\n"
+    "  --chunks FILE                  the Skin Chunks dock previewing an import of FILE (repeatable)\n"
     "The headless command line (build, bind, export) is rigsmith-cli.\n";
 
 int main(int argc, char** argv)
@@ -232,6 +249,7 @@ int main(int argc, char** argv)
     const QStringList drags = takeAll(args, "--drag");
     const QStringList frame = takeAll(args, "--frame");
     const QStringList strokes = takeAll(args, "--stroke");
+    const QStringList chunkFiles = takeAll(args, "--chunks");
     const bool startupTime = args.removeAll("--startup-time") > 0;
     const bool editLatency = args.removeAll("--edit-latency") > 0;
     if (editLatency && args.isEmpty()) {
@@ -268,6 +286,8 @@ int main(int argc, char** argv)
 
     window.buildRig();
     if (!applySetup(window, rigMode, sets, poses, actions))
+        return 1;
+    if (!chunkFiles.isEmpty() && !previewChunks(app, window, chunkFiles))
         return 1;
     window.viewportWidget()->frameAll();
     if (const QStringList box = frame.value(0).split(','); box.size() == 6) {

@@ -1,5 +1,7 @@
 #include "io/WeightsFile.h"
 
+#include "io/SkinChunks.h"
+
 #include "io/AtomicFile.h"
 #include "io/BinaryCodec.h"
 
@@ -169,6 +171,27 @@ Status saveGuideWeights(const model::GuideDocument& document, const std::string&
     for (const model::MeshBinding& b : document.bindings)
         meshes.push_back({std::filesystem::path(b.model).lexically_relative(folder).string(), b.mesh, b.vertexCount, b.fingerprint, b.weights});
     return saveWeightsFile(path, meshes);
+}
+
+std::string chunksPathFor(const std::string& guidePath)
+{
+    return std::filesystem::path(guidePath).replace_extension(".weights.rschunks").string();
+}
+
+Result<std::vector<skin::SkinChunk>> loadGuideChunks(const std::string& guidePath)
+{
+    const std::string path = chunksPathFor(guidePath);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        return std::vector<skin::SkinChunk>{};
+    return loadSkinChunkFile(path);
+}
+
+Status saveGuideChunks(const std::vector<skin::SkinChunk>& chunks, const std::string& guidePath)
+{
+    if (chunks.empty())
+        return {};
+    return saveSkinChunkFile(chunksPathFor(guidePath), chunks);
 }
 
 } // namespace rs::io

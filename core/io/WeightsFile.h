@@ -16,10 +16,21 @@
 //
 // Reading checks every count against the bytes left, every offset, joint index
 // and weight; a damaged file is an error naming the byte where it breaks.
+//
+// Beside the weights, the bound meshes' chunks (`<guide>.weights.rschunks`,
+// io/SkinChunks.h): per record, the mesh as it was bound (all its vertices'
+// bind positions and normals, its triangles, the record's weights), so that
+// when the model file later changes topology the session re-fits the weights
+// from the previous mesh (session::Session::refitChangedMeshes). A separate
+// file, not a weights file v2: the weights file stays small and readable by
+// every earlier version, and the sidecar is a normal chunk file that `skin
+// info` and `skin import` read. No sidecar (older guides) means a changed mesh
+// is reported and kept, not re-fitted.
 #include "base/Result.h"
 #include "base/Status.h"
 #include "model/GuideDocument.h"
 #include "model/Mesh.h"
+#include "skin/SkinChunk.h"
 
 #include <string>
 #include <vector>
@@ -52,5 +63,12 @@ Status loadGuideWeights(const std::string& guidePath, model::GuideDocument& docu
 // Writes document.bindings beside the guide, atomically. A document without
 // bindings writes nothing (an existing file is never replaced by an empty one).
 Status saveGuideWeights(const model::GuideDocument& document, const std::string& guidePath);
+
+// hero.yml -> hero.weights.rschunks
+std::string chunksPathFor(const std::string& guidePath);
+// The previous meshes' chunks beside the guide; no file is none and no message.
+Result<std::vector<skin::SkinChunk>> loadGuideChunks(const std::string& guidePath);
+// Writes them atomically; none writes nothing (an existing file stays).
+Status saveGuideChunks(const std::vector<skin::SkinChunk>& chunks, const std::string& guidePath);
 
 } // namespace rs::io

@@ -102,7 +102,9 @@ void Session::replaceDocument(model::GuideDocument document)
     m_rigStale = false;
     compileRig();
     m_mode = Mode::Guide;
+    m_models.clear();                     // an opened guide reads its model files afresh (they may have changed)
     m_history.reset(std::move(document)); // emits Document: every view starts over
+    refitChangedMeshes();                 // an undo step on the new document's history
 }
 
 void Session::setTemplates(std::shared_ptr<const templates::TemplateRegistry> templates)
@@ -129,6 +131,7 @@ double Session::build()
     rebuild(true, true);
     Change change = Change::of(ChangeKind::Rig | ChangeKind::Evaluation | ChangeKind::Selection);
     emitChange(change);
+    refitChangedMeshes();
     return m_lastBuildMs;
 }
 

@@ -13,7 +13,9 @@
 //
 // Topic files: Session.cpp (documents, builds, events), SessionGuide.cpp
 // (guide authoring), SessionPose.cpp (rig mode), SessionShapes.cpp (shape and
-// CV editing).
+// CV editing), SessionSkin.cpp / SessionPaint.cpp (the character and its
+// weights), SessionChunks.cpp (skin chunk export and import),
+// SessionRefit.cpp (changed meshes re-fitted from their previous chunk).
 #include "base/Status.h"
 #include "edit/GuideMove.h"
 #include "edit/History.h"
@@ -23,6 +25,7 @@
 #include "eval/PoseTools.h"
 #include "model/Rig.h"
 #include "session/MirroredGuides.h"
+#include "session/SkinChunkJob.h"
 #include "skin/SkinBones.h"
 #include "skin/WeightTools.h"
 #include "templates/TemplateRegistry.h"
@@ -189,6 +192,52 @@ public:
     void beginWeightStroke(const std::string& what);
     void endWeightStroke();
 
+    // --- skin chunks (SessionChunks.cpp; session/SkinChunkJob.h)
+    // The chunks of the bound, unchanged meshes in `scope` in the current pose
+    // (the evaluated rig; bind pose when nothing is posed), with their bind
+    // positions (skin::makeSkinChunk). `stamp` gives tool, user, time, method
+    // and neighbour sample; its rigs are set here. Fails without a built rig,
+    // for an unbound mesh named by the scope, for two meshes of one name (a
+    // chunk file holds one chunk per name) or when nothing is left to export.
+    Result<std::vector<skin::SkinChunk>> exportSkinChunks(const SkinScope& scope, skin::ChunkExportOptions stamp = {}) const;
+    // An import of `chunks` (many files' chunks: merged here, the newest of a
+    // name wins) onto the meshes in `onto`. Refused for bad options, no target,
+    // or a selected-vertices import onto a mesh without applied weights.
+    Result<SkinImportJob> prepareSkinImport(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options, const SkinScope& onto) const;
+    // A run job's weights as one undo step named `what` (ChangeKind::Weights):
+    // a whole mesh's record is replaced (or added); with selected vertices only
+    // those change. The stored influences are the chunks' skin joint keys,
+    // carried onto the rig by identity like any binding. Refused, changing
+    // nothing, when the job has not run or the models changed since prepare.
+    Result<std::vector<skin::MeshImportReport>> applySkinImport(SkinImportJob job, const std::string& what);
+    // prepare + run + apply on this thread.
+    Result<std::vector<skin::MeshImportReport>> importSkinChunks(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options,
+                                                                 const SkinScope& onto, const std::string& what = "Import skin weights");
+
+    // --- re-fitting (SessionRefit.cpp). A binding whose mesh changed topology
+    // is re-fitted from the previous mesh's chunk (its bind positions and
+    // triangles; the binding's own weights) through skin::importChunks with
+    // refitOptions(): 1:1 only when count and order still match, else the
+    // fallback, by default weight inpainting (closest point kept where it is
+    // near and its normal agrees, the rest solved), so a remesh whose shape
+    // moved does not stretch. Previous chunks come from the host (the chunk
+    // file saved beside the weights, setSavedChunks) or from the mesh in
+    // memory when a model is reloaded. A re-fit is one undo step ("Re-fit
+    // weights"), so the old record comes back with undo; the build log says
+    // per mesh how many vertices were matched 1:1, transferred or inpainted.
+    // Run after replaceDocument, reloadModel and build; never by undo/redo.
+    void setSavedChunks(std::vector<skin::SkinChunk> chunks) { m_savedChunks = std::move(chunks); }
+    const std::vector<skin::SkinChunk>& savedChunks() const { return m_savedChunks; }
+    const skin::TransferOptions& refitOptions() const { return m_refitOptions; }
+    void setRefitOptions(skin::TransferOptions options) { m_refitOptions = std::move(options); }
+    // What a save writes beside the weights: per binding, the chunk of its
+    // mesh when it fits (bind positions, triangles, the record's weights), or
+    // the previous chunk kept for a changed or missing mesh (nothing lost).
+    std::vector<skin::SkinChunk> bindingChunks() const;
+    // Re-fits every changed mesh with a previous chunk; the reports of those
+    // re-fitted (empty: nothing to do, or it failed, said in the log).
+    std::vector<skin::MeshImportReport> refitChangedMeshes();
+
     // --- weight painting (SessionPaint.cpp). Tools act on the bound,
     // unchanged character meshes; every one keeps weights normalised and
     // leaves locked joints alone, and is one undo step (a brush stroke too).
@@ -285,6 +334,14 @@ private:
     std::uint32_t jointIndex(edit::WeightEdit& edit, const NodeKey& key) const;
     skin::WeightContext weightContext(std::size_t mesh, const model::MeshWeights& weights);
     void updatePalette();
+    // The character meshes a scope covers, each with its vertices (empty: all).
+    Result<std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>>> scopeMeshes(const SkinScope& scope) const;
+    // The rig in the evaluated pose; none when it is the bind pose.
+    std::optional<model::Rig> posedRigNow() const;
+    // The chunk holding binding `b`'s previous mesh, or null.
+    const skin::SkinChunk* previousChunk(const model::MeshBinding& binding) const;
+    // Keeps the chunks of the bindings that fit `model`'s meshes (before a reload replaces it).
+    void rememberChunks(const LoadedModel& model);
 
     model::GuideDocument m_document;
     edit::History m_history{m_document};
@@ -339,6 +396,9 @@ private:
     std::set<NodeKey> m_lockedJoints;
     std::map<std::size_t, std::vector<std::uint32_t>> m_selectedVertices;
     std::vector<std::pair<NodeKey, float>> m_copiedWeights;
+    std::vector<skin::SkinChunk> m_savedChunks; // previous meshes, for re-fitting
+    skin::TransferOptions m_refitOptions = defaultRefitOptions();
+    static skin::TransferOptions defaultRefitOptions();
 };
 
 } // namespace rs::session

@@ -103,8 +103,11 @@ void Session::matchMeshes(const std::vector<std::size_t>* only)
                 whole = true;
                 break;
             }
-            if (mesh->changed)
-                continue;
+            if (mesh->changed || !model::bindingFits(m_document.bindings[b], mesh->data(m_models))) {
+                // A re-fit, an import or its undo changes whether it fits: pair it anew.
+                whole = true;
+                break;
+            }
             auto retargeted = skin::retargetWeights(m_document.bindings[b].weights, m_skinBones, m_document.bindings[b].mesh);
             if (!retargeted || !retargeted.diagnostics().empty()) {
                 whole = true;
@@ -144,7 +147,8 @@ void Session::matchMeshes(const std::vector<std::size_t>* only)
                                                "mesh '" + mesh.name + "' changed since it was bound (" + std::to_string(binding.vertexCount) +
                                                    " vertices then, " + std::to_string(mesh.vertexCount()) +
                                                    (binding.vertexCount == mesh.vertexCount() ? " now, other triangles" : " now") +
-                                                   "): its weights are kept but not applied; bind it again");
+                                                   "): its weights are kept but not applied; " +
+                                                   (previousChunk(binding) ? "the next open, reload or build re-fits them" : "bind it again"));
                     d.subject = Subject::ofMesh(mesh.name);
                     notes.push_back(std::move(d));
                 } else if (!m_skinBones.empty()) {
@@ -220,11 +224,13 @@ Status Session::reloadModel(const std::string& path)
     auto read = m_modelLoader(path);
     if (!read)
         return Status::failure(read.takeDiagnostics()); // the model as it was stays
+    rememberChunks(*known); // the meshes as bound, to re-fit the changed ones from
     known->problems = read.takeDiagnostics();
     known->model = std::make_shared<const model::Model>(read.take());
     const Diagnostics warnings = known->problems;
     m_reportedCharacter.clear(); // say again what does not fit the reloaded meshes
     emitChange(Change::of(ChangeKind::Models));
+    refitChangedMeshes();
     return Status::success(warnings);
 }
 

@@ -2,13 +2,18 @@
 // Shared by the GUI tests: the editor window opened on the biped sample, and
 // where tests write their outputs (screenshots, saved guides).
 #include "MainWindow.h"
+#include "LogPanel.h"
 #include "ViewportWidget.h"
+
+#include <QListWidgetItem>
 
 #include <QTest>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace rs::test {
@@ -53,5 +58,43 @@ inline bool dragGizmoHandle(viewport::ViewportWidget* view, int axis, double fro
     QTest::mouseRelease(view, Qt::LeftButton, {}, further);
     return true;
 }
+
+// An OBJ tube of `rings` rings around the left arm, shoulder to wrist (builds the rig first).
+inline QString writeSleeve(app::MainWindow& w, const std::string& name, int rings)
+{
+    if (!w.session().rig())
+        w.buildRig();
+    const model::Rig& rig = *w.session().rig();
+    const Vec3 a = translationOf(rig.nodes[*rig.findPath("arm.L::skin.limb.0")].worldMatrix);
+    const Vec3 b = translationOf(rig.nodes[*rig.findPath("arm.L::skin.limb.2")].worldMatrix);
+    const Vec3 axis = glm::normalize(b - a);
+    const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0, 1, 0)));
+    const Vec3 up = glm::cross(axis, side);
+    const std::string path = outputPath(name);
+    std::ofstream out(path);
+    constexpr int kSides = 10;
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < kSides; ++s) {
+            const double t = 6.283185307179586 * s / kSides;
+            const Vec3 p = a + (b - a) * (double(r) / (rings - 1)) + 0.05 * (std::cos(t) * side + std::sin(t) * up);
+            out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+        }
+    out << "o sleeve\n";
+    for (int r = 0; r + 1 < rings; ++r)
+        for (int s = 0; s < kSides; ++s) {
+            const int i = r * kSides + s + 1, j = r * kSides + (s + 1) % kSides + 1;
+            out << "f " << i << ' ' << j << ' ' << j + kSides << ' ' << i + kSides << '\n';
+        }
+    return QString::fromStdString(path);
+}
+
+inline bool logSays(app::MainWindow& w, const QString& text)
+{
+    for (int i = 0; i < w.log()->count(); ++i)
+        if (w.log()->item(i)->text().contains(text))
+            return true;
+    return false;
+}
+
 
 } // namespace rs::test

@@ -16,46 +16,6 @@
 using namespace rs;
 using namespace rs::test;
 
-namespace {
-
-// An OBJ tube of `rings` rings around the left arm, shoulder to wrist.
-QString writeSleeve(app::MainWindow& w, const std::string& name, int rings)
-{
-    if (!w.session().rig())
-        w.buildRig();
-    const model::Rig& rig = *w.session().rig();
-    const Vec3 a = translationOf(rig.nodes[*rig.findPath("arm.L::skin.limb.0")].worldMatrix);
-    const Vec3 b = translationOf(rig.nodes[*rig.findPath("arm.L::skin.limb.2")].worldMatrix);
-    const Vec3 axis = glm::normalize(b - a);
-    const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0, 1, 0)));
-    const Vec3 up = glm::cross(axis, side);
-    const std::string path = outputPath(name);
-    std::ofstream out(path);
-    constexpr int kSides = 10;
-    for (int r = 0; r < rings; ++r)
-        for (int s = 0; s < kSides; ++s) {
-            const double t = 6.283185307179586 * s / kSides;
-            const Vec3 p = a + (b - a) * (double(r) / (rings - 1)) + 0.05 * (std::cos(t) * side + std::sin(t) * up);
-            out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-        }
-    out << "o sleeve\n";
-    for (int r = 0; r + 1 < rings; ++r)
-        for (int s = 0; s < kSides; ++s) {
-            const int i = r * kSides + s + 1, j = r * kSides + (s + 1) % kSides + 1;
-            out << "f " << i << ' ' << j << ' ' << j + kSides << ' ' << i + kSides << '\n';
-        }
-    return QString::fromStdString(path);
-}
-
-bool logSays(app::MainWindow& w, const QString& text)
-{
-    for (int i = 0; i < w.log()->count(); ++i)
-        if (w.log()->item(i)->text().contains(text))
-            return true;
-    return false;
-}
-
-} // namespace
 
 TEST(SkinActions, AddModelThenBindOnAWorkerThreadIsOneUndoStep)
 {
@@ -129,13 +89,14 @@ TEST(SkinActions, WeightsAreSavedBesideTheGuideAndComeBackOnOpen)
     EXPECT_TRUE(e.window.session().characterMeshes()[0].weights) << "loaded weights skin the mesh on the new rig";
 }
 
-TEST(SkinActions, AModelChangedOnDiskIsOfferedAndItsOldWeightsKept)
+TEST(SkinActions, AModelChangedOnDiskIsOfferedAndItsWeightsRefitted)
 {
     Editor e;
     const QString sleeve = writeSleeve(e.window, "sleeve-change.obj", 12);
     ASSERT_TRUE(e.window.addModel(sleeve));
     e.window.bindSkin();
     ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isBinding(); }, 20000));
+    const model::MeshBinding bound = e.window.session().document().bindings.at(0);
     QStringList asked;
     e.window.setReloadPrompt([&](const QString& file) {
         asked.push_back(file);
@@ -144,8 +105,13 @@ TEST(SkinActions, AModelChangedOnDiskIsOfferedAndItsOldWeightsKept)
     writeSleeve(e.window, "sleeve-change.obj", 14); // another program saves a longer sleeve
     ASSERT_TRUE(QTest::qWaitFor([&] { return !asked.isEmpty(); }, 10000)) << "a changed file is offered for reloading";
     EXPECT_EQ(asked.front(), sleeve);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return e.window.session().characterMeshes().at(0).changed; }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return e.window.session().document().bindings.at(0).vertexCount == 520u; }, 5000));
+    EXPECT_FALSE(e.window.session().characterMeshes()[0].changed);
+    EXPECT_TRUE(e.window.session().characterMeshes()[0].weights) << "re-fitted from the mesh as it was bound";
+    EXPECT_TRUE(logSays(e.window, "changed since it was bound (440 vertices then, 520 now): its weights were re-fitted"));
+    EXPECT_EQ(e.window.session().history().undoText(), "Re-fit weights of mesh 'sleeve'");
+    e.window.action("undo")->trigger();
+    EXPECT_TRUE(e.window.session().characterMeshes()[0].changed);
     EXPECT_FALSE(e.window.session().characterMeshes()[0].weights);
-    EXPECT_EQ(e.window.session().document().bindings.size(), 1u) << "the old weights are kept";
-    EXPECT_TRUE(logSays(e.window, "changed since it was bound (440 vertices then, 520 now)"));
+    EXPECT_TRUE(e.window.session().document().bindings.at(0) == bound) << "undo brings the old weights back, kept, not applied";
 }

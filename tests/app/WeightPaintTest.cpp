@@ -88,14 +88,6 @@ double largestSumError(const model::MeshWeights& weights)
     return worst;
 }
 
-bool logSays(app::MainWindow& w, const QString& text)
-{
-    for (int i = 0; i < w.log()->count(); ++i)
-        if (w.log()->item(i)->text().contains(text))
-            return true;
-    return false;
-}
-
 // The editor in Rig mode with both sleeves bound, in paint mode, the camera
 // looking at the left sleeve from the front.
 struct PaintEditor : Editor {

@@ -225,7 +225,7 @@ TEST(SessionSkin, AGoneSkinJointsShareGoesToItsAncestorAndTheLogSaysSo)
     EXPECT_EQ(f.s.document().bindings[0].weights.joints.size(), edit.joints.size()) << "the record keeps the gone joint";
 }
 
-TEST(SessionSkin, AChangedMeshIsReportedAndItsWeightsKeptNotApplied)
+TEST(SessionSkin, AReloadedChangedMeshIsRefittedAndUndoKeepsTheOldRecordNotApplied)
 {
     Fixture f;
     ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
@@ -238,10 +238,24 @@ TEST(SessionSkin, AChangedMeshIsReportedAndItsWeightsKeptNotApplied)
     f.files.files[kArm] = longer;
     f.reported.clear();
     ASSERT_TRUE(test::succeeded(f.s.reloadModel(kArm)));
-    EXPECT_TRUE(f.saidSomething("mesh 'sleeve' changed since it was bound (192 vertices then, 216 now)"));
+    EXPECT_TRUE(f.saidSomething("mesh 'sleeve' changed since it was bound (192 vertices then, 216 now): its weights were re-fitted"));
+    EXPECT_EQ(f.s.history().undoText(), "Re-fit weights of mesh 'sleeve'");
+    EXPECT_FALSE(f.s.characterMeshes()[0].changed);
+    EXPECT_TRUE(f.s.characterMeshes()[0].weights);
+    EXPECT_EQ(f.s.document().bindings[0].vertexCount, 216u);
+
+    f.s.history().undo();
     EXPECT_TRUE(f.s.characterMeshes()[0].changed);
     EXPECT_FALSE(f.s.characterMeshes()[0].weights) << "never applied to the wrong vertices";
+    EXPECT_TRUE(f.s.document().bindings[0] == bound) << "the old record comes back";
+
+    // Without the previous mesh (an older guide, no chunk file) it is kept and reported.
+    f.s.setSavedChunks({});
+    f.reported.clear();
+    f.s.replaceDocument(f.s.document());
+    EXPECT_TRUE(f.saidSomething("mesh 'sleeve' changed since it was bound (192 vertices then, 216 now): its weights are kept but not applied; bind it again"));
     EXPECT_TRUE(f.s.document().bindings[0] == bound) << "kept";
+    EXPECT_FALSE(f.s.history().canUndo());
 
     // A record whose model is gone from the guide is kept and reported too.
     f.reported.clear();
@@ -250,6 +264,68 @@ TEST(SessionSkin, AChangedMeshIsReportedAndItsWeightsKeptNotApplied)
     f.s.replaceDocument(guide);
     EXPECT_TRUE(f.saidSomething("match no mesh"));
     EXPECT_EQ(f.s.document().bindings.size(), 1u);
+}
+
+namespace {
+
+std::uint32_t dominantJoint(const model::MeshWeights& w, std::size_t v)
+{
+    const model::Influence* best = std::max_element(w.begin(v), w.end(v), [](auto& a, auto& b) { return a.weight < b.weight; });
+    return best->joint;
+}
+
+} // namespace
+
+TEST(SessionSkin, AGuideWhoseModelWasReorderedOrRemeshedIsRefittedOnOpenWithAReport)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::GuideDocument saved = f.s.document();
+    const std::string folder = test::temporaryPath("session-refit");
+    std::filesystem::create_directories(folder);
+    const std::string guide = folder + "/hero.yml";
+    ASSERT_TRUE(test::succeeded(io::saveGuideChunks(f.s.bindingChunks(), guide)));
+    EXPECT_EQ(io::chunksPathFor(guide), folder + "/hero.weights.rschunks");
+    auto chunks = io::loadGuideChunks(guide);
+    ASSERT_TRUE(chunks.ok());
+    ASSERT_EQ(chunks->size(), 1u);
+
+    // Re-ordered: the same vertices backwards (same count, other order).
+    const model::Mesh before = f.files.files[kArm].meshes[0];
+    const std::uint32_t n = std::uint32_t(before.vertexCount());
+    model::Mesh reversed = before;
+    std::reverse(reversed.positions.begin(), reversed.positions.end());
+    for (std::uint32_t& i : reversed.indices)
+        i = n - 1 - i;
+    Fixture g;
+    g.files.files[kArm].meshes[0] = reversed;
+    g.s.setSavedChunks(*chunks);
+    g.s.replaceDocument(saved); // as File > Open does
+    EXPECT_TRUE(g.saidSomething("its weights were re-fitted from the previous mesh"));
+    EXPECT_TRUE(g.saidSomething("0 vertices matched 1:1")) << "the order check fails: not loaded 1:1";
+    EXPECT_EQ(g.s.history().undoText(), "Re-fit weights of mesh 'sleeve'");
+    EXPECT_FALSE(g.s.characterMeshes()[0].changed) << "the re-fitted record fits the mesh (applied once the rig is built)";
+    g.s.build();
+    ASSERT_TRUE(g.s.characterMeshes()[0].weights);
+    const model::MeshWeights& was = saved.bindings[0].weights;
+    const model::MeshWeights& now = g.s.document().bindings[0].weights;
+    std::size_t same = 0;
+    for (std::uint32_t v = 0; v < n; ++v)
+        same += now.joints[dominantJoint(now, v)] == was.joints[dominantJoint(was, n - 1 - v)];
+    EXPECT_GE(same, n * 98 / 100) << "each vertex keeps its weights wherever it moved in the order";
+
+    // Remeshed: two more rings.
+    Fixture h;
+    h.files.files[kArm].meshes[0] = tube("sleeve", before.positions.front(), before.positions.back(), 18);
+    h.s.setSavedChunks(*chunks);
+    h.s.replaceDocument(saved);
+    EXPECT_TRUE(h.saidSomething("(192 vertices then, 216 now): its weights were re-fitted"));
+    EXPECT_EQ(h.s.document().bindings[0].vertexCount, 216u);
+    EXPECT_FALSE(h.s.characterMeshes()[0].changed);
+    h.s.history().undo();
+    EXPECT_TRUE(h.s.document().bindings[0] == saved.bindings[0]) << "undo brings the previous record back";
+    std::filesystem::remove_all(folder);
 }
 
 TEST(SessionSkin, WeightsAreSavedBesideTheGuideAndLoadedBack)
@@ -369,4 +445,91 @@ TEST(SessionSkin, MirroringCopiesTheLeftArmsWeightsOntoTheRightWithTwinJoints)
             EXPECT_NEAR(l[k].second, r[k].second, 1e-6);
         }
     }
+}
+
+TEST(SessionSkin, ExportedChunksImportBackOneToOneExactlyAsOneUndoStep)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::MeshBinding bound = f.s.document().bindings[0];
+    EXPECT_FALSE(f.s.exportSkinChunks(session::SkinScope::selectedVertices())) << "no vertex selected";
+    auto chunks = f.s.exportSkinChunks(session::SkinScope::all());
+    ASSERT_TRUE(chunks.ok());
+    ASSERT_EQ(chunks->size(), 1u);
+    EXPECT_EQ((*chunks)[0].vertexCount(), bound.vertexCount);
+    EXPECT_TRUE((*chunks)[0].inBindPose) << "nothing is posed";
+
+    // Spoil the weights, then import: 1:1, exactly the bound weights again.
+    f.s.selectVertices(0, {0, 1, 2, 3}, false);
+    ASSERT_TRUE(test::succeeded(f.s.applyWeightOperation(session::Session::WeightOperation::Limit, 1)));
+    f.s.clearVertexSelection();
+    const model::MeshWeights spoiled = f.s.document().bindings[0].weights;
+    ASSERT_FALSE(spoiled == bound.weights);
+    const std::size_t steps = f.s.history().size();
+    auto reports = f.s.importSkinChunks(*chunks, {}, session::SkinScope::all());
+    ASSERT_TRUE(reports.ok()) << formatAll(reports.diagnostics());
+    ASSERT_EQ(reports->size(), 1u);
+    EXPECT_EQ((*reports)[0].route, skin::ImportRoute::OneToOne);
+    EXPECT_EQ((*reports)[0].oneToOne, bound.vertexCount);
+    EXPECT_TRUE(f.s.document().bindings[0].weights == bound.weights) << "a 1:1 round trip is exact";
+    EXPECT_EQ(f.s.history().size(), steps + 1);
+    EXPECT_EQ(f.s.history().undoText(), "Import skin weights");
+    f.s.history().undo();
+    EXPECT_TRUE(f.s.document().bindings[0].weights == spoiled) << "one undo takes the import back";
+}
+
+TEST(SessionSkin, ImportOntoSelectedVerticesChangesOnlyThoseAndAPoseIsExported)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    const model::MeshWeights bound = f.s.document().bindings[0].weights;
+    auto chunks = f.s.exportSkinChunks(session::SkinScope::ofMeshes({0}));
+    ASSERT_TRUE(chunks.ok());
+    f.s.selectVertices(0, {0, 1, 2, 3, 4, 5}, false);
+    ASSERT_TRUE(test::succeeded(f.s.applyWeightOperation(session::Session::WeightOperation::Limit, 1)));
+    const model::MeshWeights spoiled = f.s.document().bindings[0].weights;
+    f.s.selectVertices(0, {0, 1}, false);
+    auto job = f.s.prepareSkinImport(*chunks, {}, session::SkinScope::selectedVertices());
+    ASSERT_TRUE(job.ok());
+    ASSERT_TRUE(test::succeeded(job->run()));
+    const auto routes = job->routes(0);
+    EXPECT_EQ(std::count(routes.begin(), routes.end(), session::VertexRoute::OneToOne), std::ptrdiff_t(bound.vertexCount()));
+    ASSERT_TRUE(f.s.applySkinImport(job.take(), "Import skin weights").ok());
+    const model::MeshWeights& w = f.s.document().bindings[0].weights;
+    for (std::uint32_t v : {0u, 1u})
+        EXPECT_EQ(std::vector<model::Influence>(w.begin(v), w.end(v)), std::vector<model::Influence>(bound.begin(v), bound.end(v)));
+    for (std::uint32_t v : {2u, 5u})
+        EXPECT_EQ(std::vector<model::Influence>(w.begin(v), w.end(v)), std::vector<model::Influence>(spoiled.begin(v), spoiled.end(v)));
+
+    // Posed: positions follow the pose, bind positions are kept.
+    const auto blend = f.s.program()->channels().find(*f.s.rig()->findPath("arm.L::ctrls.switch"), "ik_blend");
+    ASSERT_TRUE(test::succeeded(f.s.setChannel(*blend, 0.0, false)));
+    const auto rz = f.s.program()->channels().find(*f.s.rig()->findPath("arm.L::ctrls.fk.1"), "rz");
+    ASSERT_TRUE(test::succeeded(f.s.setChannel(*rz, -60.0, false)));
+    auto posed = f.s.exportSkinChunks(session::SkinScope::all());
+    ASSERT_TRUE(posed.ok());
+    EXPECT_FALSE((*posed)[0].inBindPose);
+    EXPECT_GT(glm::length((*posed)[0].positions.back() - (*posed)[0].bindPositions.back()), 0.1f);
+}
+
+TEST(SessionSkin, ACancelledImportChangesNothing)
+{
+    Fixture f;
+    ASSERT_TRUE(test::succeeded(f.s.addModel(kArm)));
+    f.bind();
+    auto chunks = f.s.exportSkinChunks(session::SkinScope::all());
+    ASSERT_TRUE(chunks.ok());
+    // A remeshed sleeve under the same name: a fallback, cancelled half way.
+    (*chunks)[0].fingerprint ^= 1;
+    const model::GuideDocument before = f.s.document();
+    const std::size_t steps = f.s.history().size();
+    skin::TransferOptions options;
+    options.progress = [](double fraction) { return fraction < 0.5; };
+    auto reports = f.s.importSkinChunks(*chunks, options, session::SkinScope::all());
+    EXPECT_FALSE(reports.ok());
+    EXPECT_NE(formatAll(reports.diagnostics()), "") << "says why";
+    EXPECT_TRUE(f.s.document() == before);
+    EXPECT_EQ(f.s.history().size(), steps);
 }

@@ -1,0 +1,258 @@
+// Skin chunk export and import on the session's character (issue 20): the
+// export reads the applied weights (on the skin bones), an import is
+// prepared here, run anywhere and applied as one undo step.
+#include "session/Session.h"
+
+#include <algorithm>
+#include <set>
+
+namespace rs::session {
+
+namespace {
+
+Diagnostic meshError(const std::string& model, const std::string& mesh, const std::string& why)
+{
+    Diagnostic d = makeError({model, 0, 0}, "mesh '" + mesh + "': " + why);
+    d.subject = Subject::ofMesh(mesh);
+    return d;
+}
+
+// `imported` (on its own influences) on the selected `vertices` of `existing`;
+// the other vertices keep theirs. Influences are joined by skin joint key.
+model::MeshWeights mergeVertices(const model::MeshWeights& existing, const model::MeshWeights& imported,
+                                 const std::vector<std::uint32_t>& vertices)
+{
+    model::MeshWeights out;
+    out.joints = existing.joints;
+    out.parents = existing.parents;
+    std::vector<std::uint32_t> toOut(imported.joints.size());
+    for (std::size_t j = 0; j < imported.joints.size(); ++j) {
+        auto at = std::find(out.joints.begin(), out.joints.end(), imported.joints[j]);
+        toOut[j] = std::uint32_t(at - out.joints.begin());
+        if (at == out.joints.end()) {
+            out.joints.push_back(imported.joints[j]);
+            out.parents.push_back(-2); // set below, once every joint has its index
+        }
+    }
+    for (std::size_t j = 0; j < imported.joints.size(); ++j)
+        if (out.parents[toOut[j]] == -2)
+            out.parents[toOut[j]] = imported.parents[j] < 0 ? -1 : std::int32_t(toOut[std::size_t(imported.parents[j])]);
+    const std::set<std::uint32_t> selected(vertices.begin(), vertices.end());
+    out.offsets.push_back(0);
+    for (std::size_t v = 0; v < existing.vertexCount(); ++v) {
+        if (selected.count(std::uint32_t(v)))
+            for (const model::Influence* i = imported.begin(v); i != imported.end(v); ++i)
+                out.influences.push_back({toOut[i->joint], i->weight});
+        else
+            out.influences.insert(out.influences.end(), existing.begin(v), existing.end(v));
+        out.offsets.push_back(std::uint32_t(out.influences.size()));
+    }
+    return out;
+}
+
+// True when `weights` are on `bones` as they are (their keys and parents, in
+// order): an export then writes the record bit for bit, not a retargeted copy
+// (retargeting normalises again), so a 1:1 round trip is exact.
+bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBone>& bones)
+{
+    if (weights.joints.size() != bones.size())
+        return false;
+    for (std::size_t b = 0; b < bones.size(); ++b)
+        if (weights.joints[b] != bones[b].key || weights.parents[b] != bones[b].parent)
+            return false;
+    return true;
+}
+
+} // namespace
+
+Result<std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>>> Session::scopeMeshes(const SkinScope& scope) const
+{
+    std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>> out;
+    switch (scope.kind) {
+    case SkinScope::Kind::All:
+        for (std::size_t m = 0; m < m_characterMeshes.size(); ++m)
+            out.emplace_back(m, std::vector<std::uint32_t>{});
+        break;
+    case SkinScope::Kind::Meshes:
+        for (std::size_t m : scope.meshes) {
+            if (m >= m_characterMeshes.size())
+                return Result<decltype(out)>::refused("no character mesh " + std::to_string(m));
+            out.emplace_back(m, std::vector<std::uint32_t>{});
+        }
+        break;
+    case SkinScope::Kind::SelectedVertices:
+        for (const auto& [m, vertices] : m_selectedVertices)
+            if (!vertices.empty() && m < m_characterMeshes.size())
+                out.emplace_back(m, vertices);
+        if (out.empty())
+            return Result<decltype(out)>::refused("no vertex is selected");
+        break;
+    }
+    return out;
+}
+
+std::optional<model::Rig> Session::posedRigNow() const
+{
+    const bool rest = std::all_of(m_skinPalette.begin(), m_skinPalette.end(),
+                                  [](const Mat4& m) { return maxAbsDifference(m, Mat4(1.0)) < 1e-9; });
+    if (!m_rig || !m_program || rest)
+        return std::nullopt;
+    model::Rig posed = *m_rig;
+    for (std::size_t n = 0; n < posed.nodes.size(); ++n)
+        posed.nodes[n].worldMatrix = m_evaluation.worldMatrix(model::RigNodeIndex(n));
+    return posed;
+}
+
+Result<std::vector<skin::SkinChunk>> Session::exportSkinChunks(const SkinScope& scope, skin::ChunkExportOptions stamp) const
+{
+    using Out = Result<std::vector<skin::SkinChunk>>;
+    if (!m_rig || m_skinBones.empty())
+        return Out::refused("build the rig before exporting skin weights: there are no skin joints to name them by");
+    auto meshes = scopeMeshes(scope);
+    if (!meshes)
+        return Out::failure(meshes.takeDiagnostics());
+    const std::optional<model::Rig> posed = posedRigNow();
+    stamp.rig = &*m_rig;
+    stamp.posedRig = posed ? &*posed : nullptr;
+    Diagnostics problems;
+    std::vector<skin::SkinChunk> chunks;
+    for (const auto& [index, vertices] : *meshes) {
+        const CharacterMesh& m = m_characterMeshes[index];
+        const model::Mesh& mesh = m.data(m_models);
+        const std::string& path = m_models[m.model].path;
+        if (!m.weights) {
+            if (scope.kind != SkinScope::Kind::All) // the whole character: its bound meshes
+                problems.push_back(meshError(path, mesh.name, m.changed ? "it changed since it was bound: its weights no longer fit it"
+                                                                        : "it has no weights to export (Skin > Bind first)"));
+            continue;
+        }
+        if (std::any_of(chunks.begin(), chunks.end(), [&](const skin::SkinChunk& c) { return c.mesh == mesh.name; })) {
+            problems.push_back(meshError(path, mesh.name, "a second mesh of this name: a chunk file holds one chunk per name"));
+            continue;
+        }
+        const model::MeshWeights& record = m_document.bindings[std::size_t(m.binding)].weights;
+        const model::MeshWeights* weights = isOnBones(record, m_skinBones) ? &record : m.weights.get();
+        auto chunk = skin::makeSkinChunk({&mesh, weights, path, vertices}, m_skinBones, stamp);
+        if (!chunk)
+            return Out::failure(chunk.takeDiagnostics());
+        chunks.push_back(chunk.take());
+    }
+    if (hasErrors(problems))
+        return Out::failure(std::move(problems));
+    if (chunks.empty())
+        return Out::refused("no bound mesh to export: Skin > Bind first");
+    return chunks;
+}
+
+Result<SkinImportJob> Session::prepareSkinImport(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options,
+                                                 const SkinScope& onto) const
+{
+    using Out = Result<SkinImportJob>;
+    const Status valid = skin::validateTransferOptions(options);
+    if (valid.failed())
+        return Out::failure(valid.diagnostics());
+    auto merged = skin::mergeChunks(std::move(chunks));
+    if (!merged)
+        return Out::failure(merged.takeDiagnostics());
+    auto meshes = scopeMeshes(onto);
+    if (!meshes)
+        return Out::failure(meshes.takeDiagnostics());
+    SkinImportJob job;
+    job.notes = merged.takeDiagnostics();
+    job.chunks = merged.take();
+    if (job.chunks.empty())
+        return Out::refused("no skin chunk to import");
+    job.options = std::move(options);
+    for (auto& [index, vertices] : *meshes) {
+        std::sort(vertices.begin(), vertices.end());
+        const CharacterMesh& m = m_characterMeshes[index];
+        if (!vertices.empty() && !m.weights)
+            return Out::failure(meshError(m_models[m.model].path, m.data(m_models).name,
+                                          "only some of its vertices are selected but it has no applied weights for the others: "
+                                          "import onto the whole mesh"));
+        job.targets.push_back({index, m_models[m.model].model, &m.data(m_models), std::move(vertices)});
+    }
+    if (job.targets.empty())
+        return Out::refused("the guide has no mesh to import weights onto: Guide > Add Model first");
+    return job;
+}
+
+Status SkinImportJob::run()
+{
+    std::vector<const model::Mesh*> meshes;
+    for (const Target& t : targets)
+        meshes.push_back(t.mesh);
+    reports.clear();
+    weights.clear();
+    auto imported = skin::importChunks(chunks, meshes, options, &reports);
+    if (!imported) {
+        Diagnostics why = imported.takeDiagnostics();
+        if (why.empty())
+            why.push_back(makeError({}, "the import was cancelled; nothing changed"));
+        return Status::failure(std::move(why));
+    }
+    Diagnostics notes = imported.takeDiagnostics();
+    weights = imported.take();
+    return Status::success(std::move(notes));
+}
+
+std::vector<VertexRoute> SkinImportJob::routes(std::size_t t) const
+{
+    if (t >= reports.size() || t >= targets.size())
+        return {};
+    const skin::MeshImportReport& r = reports[t];
+    const std::size_t count = targets[t].mesh->vertexCount();
+    if (r.route == skin::ImportRoute::SingleInfluence)
+        return std::vector<VertexRoute>(count, VertexRoute::SingleInfluence);
+    std::vector<VertexRoute> out(count, VertexRoute::Transferred);
+    if (r.route == skin::ImportRoute::OneToOne)
+        for (const skin::SkinChunk& c : chunks)
+            if (c.mesh == r.source)
+                for (std::uint32_t id : c.vertexIds)
+                    if (id < count)
+                        out[id] = VertexRoute::OneToOne;
+    return out;
+}
+
+Result<std::vector<skin::MeshImportReport>> Session::applySkinImport(SkinImportJob job, const std::string& what)
+{
+    using Out = Result<std::vector<skin::MeshImportReport>>;
+    if (job.weights.size() != job.targets.size())
+        return Out::refused("the import has not run");
+    std::vector<model::MeshBinding> records;
+    for (std::size_t t = 0; t < job.targets.size(); ++t) {
+        const SkinImportJob::Target& target = job.targets[t];
+        const CharacterMesh* m = target.characterMesh < m_characterMeshes.size() ? &m_characterMeshes[target.characterMesh] : nullptr;
+        if (!m || m_models[m->model].model != target.model || &m->data(m_models) != target.mesh)
+            return Out::refused("the guide's models changed while the weights were imported; nothing changed: import again");
+        model::MeshWeights weights = std::move(job.weights[t]);
+        if (!target.vertices.empty()) {
+            if (m->binding < 0 || !m->weights)
+                return Out::refused("mesh '" + target.mesh->name + "' lost its weights while importing; nothing changed");
+            weights = mergeVertices(m_document.bindings[std::size_t(m->binding)].weights, weights, target.vertices);
+        }
+        records.push_back({m_models[m->model].path, target.mesh->name, target.mesh->vertexCount(), model::topologyFingerprint(*target.mesh),
+                           std::move(weights)});
+    }
+    const Status set = setBindings(std::move(records), what);
+    if (set.failed())
+        return Out::failure(set.diagnostics());
+    Diagnostics notes = std::move(job.notes);
+    notes.insert(notes.end(), set.diagnostics().begin(), set.diagnostics().end());
+    return Out(std::move(job.reports), std::move(notes));
+}
+
+Result<std::vector<skin::MeshImportReport>> Session::importSkinChunks(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options,
+                                                                     const SkinScope& onto, const std::string& what)
+{
+    using Out = Result<std::vector<skin::MeshImportReport>>;
+    auto job = prepareSkinImport(std::move(chunks), std::move(options), onto);
+    if (!job)
+        return Out::failure(job.takeDiagnostics());
+    const Status ran = job->run();
+    if (ran.failed())
+        return Out::failure(ran.diagnostics());
+    return applySkinImport(job.take(), what);
+}
+
+} // namespace rs::session

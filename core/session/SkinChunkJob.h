@@ -1,0 +1,71 @@
+#pragma once
+// Skin chunk export and import in the session (issue 20): what they cover
+// (a SkinScope) and an import in three steps, so the editor can run the long
+// middle one on a worker thread:
+//
+//   Session::prepareSkinImport  (session thread) merges the chunks and takes
+//                               the target meshes (shared, immutable models);
+//   SkinImportJob::run          (any thread) runs the decision tree
+//                               (skin::importChunks); reads only the job;
+//   Session::applySkinImport    (session thread) puts the weights in place as
+//                               ONE undo step, refused when the models changed
+//                               since prepare.
+//
+// A preview is prepare + run without apply. Cancelling (options.progress
+// returning false) makes run fail; nothing in the session changes.
+#include "base/Result.h"
+#include "base/Status.h"
+#include "skin/SkinChunk.h"
+#include "skin/Transfer.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace rs::session {
+
+// What an export reads or an import writes.
+struct SkinScope {
+    enum class Kind {
+        All,              // every mesh of the guide's models (export: every bound one)
+        Meshes,           // the character meshes in `meshes`
+        SelectedVertices, // Session::selectedVertices() (export: only those vertices; import: only
+                          // those vertices of bound meshes, the others keep their weights)
+    };
+    Kind kind = Kind::All;
+    std::vector<std::size_t> meshes; // Session::characterMeshes() indices, with Meshes
+    static SkinScope all() { return {}; }
+    static SkinScope ofMeshes(std::vector<std::size_t> meshes) { return {Kind::Meshes, std::move(meshes)}; }
+    static SkinScope selectedVertices() { return {Kind::SelectedVertices, {}}; }
+};
+
+// Per target vertex, how a run placed its weights, as far as the decision
+// tree's routes say it: Transferred covers every fallback method (closest
+// point, neighbours, inpainting; the report counts each).
+enum class VertexRoute : std::uint8_t { OneToOne, SingleInfluence, Transferred };
+
+// One import in flight. Owns copies of everything run() reads.
+struct SkinImportJob {
+    std::vector<skin::SkinChunk> chunks; // merged: one per mesh name, the newest kept
+    skin::TransferOptions options;
+    struct Target {
+        std::size_t characterMesh = 0;               // into Session::characterMeshes() at prepare
+        std::shared_ptr<const model::Model> model;   // keeps the mesh alive on the worker
+        const model::Mesh* mesh = nullptr;
+        std::vector<std::uint32_t> vertices;         // ascending; empty: all of the mesh
+    };
+    std::vector<Target> targets;
+    Diagnostics notes; // what the merge replaced
+
+    // After run(): per target, its weights (on the chunks' influences) and report.
+    std::vector<model::MeshWeights> weights;
+    std::vector<skin::MeshImportReport> reports;
+
+    // Runs the decision tree on every target; fails on cancel or bad options.
+    Status run();
+    // Per vertex of target `t`, its route (after run()).
+    std::vector<VertexRoute> routes(std::size_t t) const;
+};
+
+} // namespace rs::session

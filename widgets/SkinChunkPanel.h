@@ -1,0 +1,99 @@
+#pragma once
+// The Skin Chunks dock (issue 20 item 6): export the character's weights as a
+// skin chunk file (the whole character, the meshes with selected vertices, or
+// only the selected vertices); import one or many chunk files with every
+// option of skin::TransferOptions onto everything or the selected vertices,
+// or preview the import (the decision tree run without applying: per mesh its
+// route and counts, and the vertices of one route selected); and inspect a
+// chunk file (its meshes, counts, influences, dates, user and vertex rows
+// from an index, at most a limit). It only holds options and shows results;
+// the app runs each request as session work (an import is one undo step).
+#include "skin/Transfer.h"
+
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include <vector>
+
+class QAbstractButton;
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QListWidget;
+class QPlainTextEdit;
+class QSpinBox;
+class QTreeWidget;
+
+namespace rs::widgets {
+
+class SkinChunkPanel : public QWidget {
+    Q_OBJECT
+public:
+    // What an export covers, in session::SkinScope terms.
+    enum class ExportScope { Character, SelectedMeshes, SelectedVertices };
+    // Which vertices a preview selects.
+    enum class PreviewSelects { Transferred, OneToOne };
+
+    explicit SkinChunkPanel(QWidget* parent = nullptr);
+
+    ExportScope exportScope() const;
+    void setExportScope(ExportScope scope);
+    QStringList importFiles() const;
+    void setImportFiles(const QStringList& files);
+    skin::TransferOptions options() const; // without progress
+    void setOptions(const skin::TransferOptions& options);
+    bool importOntoSelection() const;
+    void setImportOntoSelection(bool on);
+    PreviewSelects previewSelects() const;
+    void setPreviewSelects(PreviewSelects what);
+
+    // One row per mesh: route, source, counts per method; `preview`: nothing was applied.
+    void showReports(const std::vector<skin::MeshImportReport>& reports, bool preview);
+    void showInspection(const QString& text);
+    int inspectFrom() const;
+    int inspectLimit() const;
+
+    QTreeWidget* reportList() const { return m_reports; }
+    QPlainTextEdit* inspector() const { return m_inspector; }
+    // Buttons by name (tests): "export", "addFiles", "removeFiles", "preview", "import", "inspect".
+    QAbstractButton* button(const QString& name) const;
+
+signals:
+    void exportRequested();
+    void importRequested(bool preview);
+    void inspectRequested(const QString& file); // the current import file, or one chosen
+    void filesChanged();
+
+private:
+    QWidget* makeExportBox();
+    QWidget* makeImportBox();
+    QWidget* makeOptionsBox();
+    QWidget* makeInspectorBox();
+    QAbstractButton* addButton(QWidget* parent, const QString& name, const QString& text, const QString& tip);
+    void updateEnabled();
+
+    QComboBox* m_exportScope = nullptr;
+    QListWidget* m_files = nullptr;
+    QComboBox* m_method = nullptr;
+    QCheckBox* m_search = nullptr;
+    QCheckBox* m_uber = nullptr;
+    QComboBox* m_sourcePose = nullptr;
+    QSpinBox* m_neighbours = nullptr;
+    QDoubleSpinBox* m_multiplier = nullptr;
+    QCheckBox* m_normalFilter = nullptr;
+    QDoubleSpinBox* m_tolerance = nullptr;
+    QSpinBox* m_smoothSteps = nullptr;
+    QDoubleSpinBox* m_smoothThreshold = nullptr;
+    QSpinBox* m_maxInfluences = nullptr;
+    QDoubleSpinBox* m_inpaintDistance = nullptr;
+    QDoubleSpinBox* m_inpaintAngle = nullptr;
+    QComboBox* m_onto = nullptr;
+    QComboBox* m_previewSelects = nullptr;
+    QTreeWidget* m_reports = nullptr;
+    QSpinBox* m_from = nullptr;
+    QSpinBox* m_limit = nullptr;
+    QPlainTextEdit* m_inspector = nullptr;
+};
+
+} // namespace rs::widgets
