@@ -285,6 +285,38 @@ Solved solveRegion(const Problem& p, const std::vector<std::uint32_t>& members, 
     return Solved::Done;
 }
 
+// Every region, the large first; `progress` as inpaintWeights' (from 5%:
+// the assembly's share), by unknowns solved, a region's cost growing with its size.
+Solved solveRegions(const Problem& p, const std::vector<std::vector<std::uint32_t>>& parts, const std::function<bool(double)>& progress)
+{
+    std::size_t done = 0;
+    auto report = [&](std::size_t extra) { return !progress || progress(0.05 + 0.95 * double(done + extra) / double(p.split.unknowns)); };
+    std::size_t next = 0;
+    for (; next < parts.size() && parts[next].size() >= kSmallRegion; ++next) {
+        const auto size = parts[next].size();
+        if (const Solved solved = solveRegion(p, parts[next], [&](double f) { return report(std::size_t(f * double(size))); });
+            solved != Solved::Done)
+            return solved;
+        done += size;
+    }
+    // The small regions in batches, in parallel; each solve is single-threaded.
+    for (; next < parts.size(); next = std::min(parts.size(), next + kSmallBatch)) {
+        const std::size_t last = std::min(parts.size(), next + kSmallBatch);
+        std::atomic<bool> failed{false};
+        tbb::parallel_for(next, last, [&](std::size_t r) {
+            if (solveRegion(p, parts[r], {}) != Solved::Done)
+                failed = true;
+        });
+        if (failed)
+            return Solved::Failed;
+        for (std::size_t r = next; r < last; ++r)
+            done += parts[r].size();
+        if (!report(0))
+            return Solved::Cancelled;
+    }
+    return Solved::Done;
+}
+
 } // namespace
 
 Result<std::size_t> inpaintWeights(const model::Mesh& target, const std::vector<std::uint8_t>& matched, int capacity,
@@ -301,35 +333,11 @@ Result<std::size_t> inpaintWeights(const model::Mesh& target, const std::vector<
     std::vector<model::Influence> result(unknowns.unknowns * std::size_t(capacity));
     std::vector<std::uint8_t> resultCounts(unknowns.unknowns, 0);
     const Problem problem{q, unknowns, local, capacity, slots, counts, result, resultCounts};
-    auto failed = [&](const std::string& what) { return Result<std::size_t>::failure(makeError({}, "mesh '" + target.name + "': " + what)); };
-    if (progress && !progress(0.05)) // the system is assembled: about 5% of the work
-        return failed("the inpainting was cancelled");
-    // Progress by unknowns solved: a region's cost grows with its size.
-    std::size_t done = 0;
-    auto report = [&](std::size_t extra) { return !progress || progress(0.05 + 0.95 * double(done + extra) / double(unknowns.unknowns)); };
-    std::size_t next = 0;
-    for (; next < parts.size() && parts[next].size() >= kSmallRegion; ++next) {
-        const auto size = parts[next].size();
-        const Solved solved = solveRegion(problem, parts[next], [&](double f) { return report(std::size_t(f * double(size))); });
-        if (solved != Solved::Done)
-            return failed(solved == Solved::Cancelled ? "the inpainting was cancelled" : "the inpainting system could not be solved");
-        done += size;
-    }
-    // The small regions in batches, in parallel; each solve is single-threaded.
-    for (; next < parts.size(); next = std::min(parts.size(), next + kSmallBatch)) {
-        const std::size_t last = std::min(parts.size(), next + kSmallBatch);
-        std::atomic<bool> bad{false};
-        tbb::parallel_for(next, last, [&](std::size_t r) {
-            if (solveRegion(problem, parts[r], {}) != Solved::Done)
-                bad = true;
-        });
-        if (bad)
-            return failed("the inpainting system could not be solved");
-        for (std::size_t r = next; r < last; ++r)
-            done += parts[r].size();
-        if (!report(0))
-            return failed("the inpainting was cancelled");
-    }
+    const bool cancelled = progress && !progress(0.05); // the system is assembled: about 5% of the work
+    if (const Solved solved = cancelled ? Solved::Cancelled : solveRegions(problem, parts, progress); solved != Solved::Done)
+        return Result<std::size_t>::failure(makeError({}, "mesh '" + target.name + "': " +
+                                                              (solved == Solved::Cancelled ? "the inpainting was cancelled"
+                                                                                           : "the inpainting system could not be solved")));
     std::size_t inpainted = 0;
     for (std::size_t v = 0; v < target.vertexCount(); ++v) {
         const std::int64_t u = unknowns.unknown[s.welded[v]];
