@@ -6,7 +6,7 @@
 // LDL' spent ~60% of the time factorising one 95k-unknown system and ~25% in
 // the 80 joint solves, streaming the factor once per joint group. CHOLMOD's
 // supernodal factorisation and multi-column solve run as dense BLAS blocks
-// (OpenBLAS, both cores): about 8x faster on the same matrix, to the same
+// (OpenBLAS, both cores): 5 to 8 times faster on the same matrix, to the same
 // residual. Regions are independent (no entry of Q joins two of them), so a
 // joint no known vertex next to a region carries is exactly zero there and is
 // never solved for; a region next to one joint only is exactly that joint.
