@@ -6,8 +6,8 @@
 // LDL' spent ~60% of the time factorising one 95k-unknown system and ~25% in
 // the 80 joint solves, streaming the factor once per joint group. CHOLMOD's
 // supernodal factorisation and multi-column solve run as dense BLAS blocks
-// (OpenBLAS, both cores): 5 to 8 times faster on the same matrix, to the same
-// residual. Regions are independent (no entry of Q joins two of them), so a
+// (OpenBLAS, one thread: oneTBB owns the cores): 4 to 8 times faster on the
+// same matrix, to the same residual. Regions are independent (no entry of Q joins two of them), so a
 // joint no known vertex next to a region carries is exactly zero there and is
 // never solved for; a region next to one joint only is exactly that joint.
 #include "skin/TransferInpaint.h"
@@ -30,7 +30,7 @@ namespace {
 using Sparse = Eigen::SparseMatrix<double>;
 
 constexpr Eigen::Index kSolveColumns = 16;     // joints per solve: a cancel point, and wide enough for BLAS 3
-constexpr std::size_t kSmallRegion = 4096;     // regions below this solve in parallel, each on one core
+constexpr std::size_t kSmallRegion = 4096;     // regions below this solve side by side; larger ones one by one, with progress inside
 constexpr std::size_t kSmallBatch = 256;       // small regions between two progress reports
 
 // L + L M^-1 L over the welded surface (L positive semi-definite).
@@ -257,8 +257,6 @@ Solved solveRegion(const Problem& p, const std::vector<std::uint32_t>& members, 
     if (joints.size() > 1) {
         Eigen::CholmodDecomposition<Sparse, Eigen::Lower> solver;
         solver.cholmod().print = 0; // failures come back as a Result, not on stderr
-        // A small region runs beside others on one core: no BLAS threads (supernodal) there.
-        solver.setMode(large ? Eigen::CholmodAuto : Eigen::CholmodSimplicialLLt);
         solver.compute(regionMatrix(p, members));
         if (solver.info() != Eigen::Success)
             return Solved::Failed;
@@ -323,10 +321,14 @@ Result<std::size_t> inpaintWeights(const model::Mesh& target, const std::vector<
                                    std::vector<model::Influence>& slots, std::vector<std::uint8_t>& counts,
                                    const std::function<bool(double)>& progress)
 {
+    auto stopped = [&](Solved why) {
+        return Result<std::size_t>::failure(makeError(
+            {}, "mesh '" + target.name + "': " + (why == Solved::Cancelled ? "the inpainting was cancelled" : "the inpainting system could not be solved")));
+    };
     const Surface s = makeSurface(target);
     const Split unknowns = split(s, target, matched);
     if (unknowns.unknowns == 0)
-        return std::size_t(0);
+        return progress && !progress(1.0) ? stopped(Solved::Cancelled) : Result<std::size_t>(std::size_t(0));
     const Blocks q = blocks(energy(s), unknowns);
     std::vector<std::uint32_t> local;
     const std::vector<std::vector<std::uint32_t>> parts = regions(q.quu, local);
@@ -335,9 +337,7 @@ Result<std::size_t> inpaintWeights(const model::Mesh& target, const std::vector<
     const Problem problem{q, unknowns, local, capacity, slots, counts, result, resultCounts};
     const bool cancelled = progress && !progress(0.05); // the system is assembled: about 5% of the work
     if (const Solved solved = cancelled ? Solved::Cancelled : solveRegions(problem, parts, progress); solved != Solved::Done)
-        return Result<std::size_t>::failure(makeError({}, "mesh '" + target.name + "': " +
-                                                              (solved == Solved::Cancelled ? "the inpainting was cancelled"
-                                                                                           : "the inpainting system could not be solved")));
+        return stopped(solved);
     std::size_t inpainted = 0;
     for (std::size_t v = 0; v < target.vertexCount(); ++v) {
         const std::int64_t u = unknowns.unknown[s.welded[v]];

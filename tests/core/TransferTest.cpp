@@ -381,6 +381,17 @@ TEST(Transfer, CancellingDuringInpaintingGivesAnErrorAndNoResult)
         ASSERT_FALSE(cancelled.ok()) << "cancelled at inpainting report " << cancelAt;
         EXPECT_NE(formatAll(cancelled.diagnostics()).find("cancelled"), std::string::npos) << formatAll(cancelled.diagnostics());
     }
+    // Nothing to inpaint (every closest point near and facing the same way): the progress still ends at 1.
+    heard.clear();
+    options.progress = [&](double f) {
+        heard.push_back(f);
+        return true;
+    };
+    report = {};
+    ASSERT_TRUE(skin::transferWeights(*source, grid("below", 20, 20, -0.002f), options, &report).ok());
+    EXPECT_EQ(report.inpainted, 0u);
+    ASSERT_FALSE(heard.empty());
+    EXPECT_DOUBLE_EQ(heard.back(), 1.0);
 }
 
 TEST(Transfer, TheDecisionTreeFindsTheChunkOfTheSameCountAndOrderUnlessToldNot)
