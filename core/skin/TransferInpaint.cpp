@@ -252,8 +252,8 @@ Solved solveRegion(const Problem& p, const std::vector<std::uint32_t>& members, 
     std::vector<std::uint32_t> joints;
     const Eigen::MatrixXd rhs = rightHandSides(p, members, joints);
     Eigen::MatrixXd x = Eigen::MatrixXd::Ones(rhs.rows(), rhs.cols());
-    // One joint around: Q's rows sum to zero, so all-ones is the solution.
     const bool large = members.size() >= kSmallRegion;
+    // One joint around: Q's rows sum to zero, so all-ones is the solution.
     if (joints.size() > 1) {
         Eigen::CholmodDecomposition<Sparse, Eigen::Lower> solver;
         solver.cholmod().print = 0; // failures come back as a Result, not on stderr
