@@ -7,12 +7,16 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
+# libopenblas0-serial becomes the system's BLAS (Debian's alternatives): CHOLMOD's
+# supernodal Cholesky (weight inpainting) is 4-8x slower on the reference BLAS. Serial,
+# not -pthread: on two cores shared with other work, BLAS threads spin in sched_yield
+# and took 2.5x the wall time (core/skin/README.md).
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libqt6svg6 qt6-qpa-plugins
   libgl-dev libepoxy-dev libglfw3-dev libgl1-mesa-dri
   libyaml-cpp-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libassimp-dev
-  libeigen3-dev libembree-dev libtbb-dev libnanoflann-dev
+  libeigen3-dev libembree-dev libtbb-dev libnanoflann-dev libsuitesparse-dev libopenblas0-serial
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )

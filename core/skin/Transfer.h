@@ -70,6 +70,8 @@ struct TransferOptions {
     double inpaintDistance = 0.0;        // Inpainting: metres a copied closest point may be away; 0: 5% of the target's bounding box diagonal
     double inpaintAngleDegrees = 30.0;   // Inpainting: the most its normal may turn from the target vertex's (0 to 180)
     // Hears the fraction of all target vertices done; false cancels (no result).
+    // Inpainting: the closest points are the first fifth, the solve the rest
+    // (reported between its phases, regions and groups of joints).
     std::function<bool(double)> progress;
 };
 // Refuses options out of range, naming the option.

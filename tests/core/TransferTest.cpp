@@ -2,6 +2,7 @@
 // 1:1 only when the mesh's count and order match, the fallbacks carry weights
 // onto a changed mesh, the normal filter keeps an overlapping surface's
 // weights off, and a merge keeps the newest chunk of a name.
+#include "JeansFixture.h"
 #include "TestSupport.h"
 
 #include "io/ModelImport.h"
@@ -286,6 +287,111 @@ TEST(Transfer, InpaintingFillsWhatTheClosestPointWouldTakeFromTheWrongSurface)
     auto b = skin::importChunks({chunkOf(coarse, ramp)}, {&fine}, options, nullptr);
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_EQ(a->front(), b->front());
+}
+
+namespace {
+
+// How far the posed pants land from where their own legs would take them.
+struct Displacement {
+    float worst = 0.0f, mean = 0.0f;
+    std::size_t wrongLeg = 0; // vertices whose heaviest joint is not the ideal's
+};
+
+Displacement displacement(const test::JeansFixture& f, const model::MeshWeights& weights)
+{
+    const auto posed = test::skinWithLeftLegForward(f, f.pants, weights, 45.0f);
+    const auto ideal = test::skinWithLeftLegForward(f, f.pants, f.idealPants, 45.0f);
+    Displacement d;
+    for (std::size_t v = 0; v < posed.size(); ++v) {
+        const float error = glm::length(posed[v] - ideal[v]);
+        d.worst = std::max(d.worst, error);
+        d.mean += error / float(posed.size());
+        d.wrongLeg += dominant(weights, v) != dominant(f.idealPants, v);
+    }
+    return d;
+}
+
+} // namespace
+
+TEST(Transfer, ParachutePantsOverSkinnyJeansStretchLessWithTheNormalFilterAndLeastWithInpainting)
+{
+    // The metric: the left leg swings 45 degrees forward and each pants vertex
+    // is compared with where the jeans' weights at its own leg's height take
+    // it (JeansFixture::idealPants). A vertex weighted to the other leg stays
+    // behind (or follows the wrong leg) by up to the leg's whole swing; the
+    // worst such vertex is what a rigger sees as the garment tearing at the
+    // crotch. Unlike the longest stretched edge it is zero for a right
+    // transfer and does not depend on the tessellation.
+    const test::JeansFixture f = test::makeJeansFixture();
+    auto source = skin::TransferSource::fromChunk(f.jeansChunk, true);
+    ASSERT_TRUE(source.ok()) << formatAll(source.diagnostics());
+    skin::TransferOptions closest, filtered, inpainting;
+    filtered.normalFilter = true;
+    inpainting.method = skin::TransferMethod::Inpainting;
+    std::vector<Displacement> results;
+    for (const auto* options : {&closest, &filtered, &inpainting}) {
+        skin::MeshImportReport report;
+        auto weights = skin::transferWeights(*source, f.pants, *options, &report);
+        ASSERT_TRUE(weights.ok()) << formatAll(weights.diagnostics());
+        results.push_back(displacement(f, *weights));
+        std::cout << "[ jeans ] " << (options == &closest ? "closest point" : options == &filtered ? "normal filter" : "inpainting")
+                  << ": worst displacement " << results.back().worst * 100.0f << " cm, mean " << results.back().mean * 1000.0f << " mm, "
+                  << results.back().wrongLeg << " of " << f.pants.vertexCount() << " vertices on the wrong leg"
+                  << (options == &inpainting ? ", " + std::to_string(report.inpainted) + " inpainted" : std::string()) << "\n";
+    }
+    EXPECT_GT(results[0].wrongLeg, 0u) << "the fixture must fool closest point";
+    EXPECT_LT(results[1].worst, results[0].worst) << "the normal filter";
+    EXPECT_LT(results[2].worst, results[1].worst) << "inpainting";
+    EXPECT_EQ(results[2].wrongLeg, 0u);
+}
+
+TEST(Transfer, CancellingDuringInpaintingGivesAnErrorAndNoResult)
+{
+    // The lower sheet (a ramp over three joints) faces up under the whole
+    // target; the upper one faces down over its left three quarters: those
+    // target vertices are inpainted, one region above kSmallRegion (4096).
+    const model::Mesh lower = grid("lower", 70, 70, 0.0f, true), upper = grid("upper", 52, 70, 0.01f, false);
+    const model::Mesh target = grid("pants", 80, 80, 0.006f, true, 0.0087f);
+    const skin::SkinChunk chunk = chunkOf(lower, rampWeights(lower, 0.69f));
+    const skin::SkinChunk top = chunkOf(upper, allOn(upper, 2));
+    auto source = skin::TransferSource::uber({chunk, top}, true);
+    ASSERT_TRUE(source.ok());
+    skin::TransferOptions options;
+    options.method = skin::TransferMethod::Inpainting;
+    std::vector<double> heard;
+    options.progress = [&](double f) {
+        heard.push_back(f);
+        return true;
+    };
+    skin::MeshImportReport report;
+    auto whole = skin::transferWeights(*source, target, options, &report);
+    ASSERT_TRUE(whole.ok()) << formatAll(whole.diagnostics());
+    EXPECT_GT(report.inpainted, 4096u);
+    ASSERT_FALSE(heard.empty());
+    EXPECT_DOUBLE_EQ(heard.back(), 1.0);
+    EXPECT_TRUE(std::is_sorted(heard.begin(), heard.end()));
+    // The reports after the closest points (the first 20%) come from the solve:
+    // cancel at each of them in turn.
+    const auto inpaintingReports = std::count_if(heard.begin(), heard.end(), [](double f) { return f > 0.2; });
+    EXPECT_GE(inpaintingReports, 3) << "assembly, factorisation and the joint solves";
+    for (std::ptrdiff_t cancelAt = 0; cancelAt < inpaintingReports; ++cancelAt) {
+        std::ptrdiff_t seen = 0;
+        options.progress = [&](double f) { return f <= 0.2 || seen++ < cancelAt; };
+        auto cancelled = skin::transferWeights(*source, target, options, nullptr);
+        ASSERT_FALSE(cancelled.ok()) << "cancelled at inpainting report " << cancelAt;
+        EXPECT_NE(formatAll(cancelled.diagnostics()).find("cancelled"), std::string::npos) << formatAll(cancelled.diagnostics());
+    }
+    // Nothing to inpaint (every closest point near and facing the same way): the progress still ends at 1.
+    heard.clear();
+    options.progress = [&](double f) {
+        heard.push_back(f);
+        return true;
+    };
+    report = {};
+    ASSERT_TRUE(skin::transferWeights(*source, grid("below", 20, 20, -0.002f), options, &report).ok());
+    EXPECT_EQ(report.inpainted, 0u);
+    ASSERT_FALSE(heard.empty());
+    EXPECT_DOUBLE_EQ(heard.back(), 1.0);
 }
 
 TEST(Transfer, TheDecisionTreeFindsTheChunkOfTheSameCountAndOrderUnlessToldNot)
