@@ -7,6 +7,7 @@
 #include "io/RigExport.h"
 #include "model/Skeleton.h"
 #include "rigging/RigBuilder.h"
+#include "skin/ModelChunks.h"
 
 #include <gtest/gtest.h>
 
@@ -87,8 +88,10 @@ void expectRoundTrip(const std::string& path, io::ExportPreset preset)
     for (const model::FileWeights::Bone& bone : mesh.fileWeights->bones) {
         const auto& joint = read->joints[bone.joint];
         for (const io::ExportJoint& s : scene.joints) {
-            if (s.name == joint.name && ++compared)
+            if (s.name == joint.name) {
+                ++compared;
                 EXPECT_LT(glm::distance(Vec3(bone.bindWorld[3]), Vec3(s.bindWorld[3])), 1e-4) << path << " " << s.name;
+            }
         }
     }
     EXPECT_GE(compared, 10u) << path;
@@ -132,4 +135,34 @@ TEST(ModelImport, OurSkinnedExportsReadBackWithTheWeightsWritten)
     expectRoundTrip(glb, io::ExportPreset::Gltf);
     const std::string fbx = test::temporaryPath("weights-roundtrip.fbx");
     expectRoundTrip(fbx, io::ExportPreset::Unreal); // centimetres, Z-up: back in metres, Y-up
+}
+
+TEST(ModelChunks, EachSkinnedMeshBecomesAChunkOnTheFilesSkeletonByName)
+{
+    auto man = io::importModel(kModels + "/X/BCN_Epileptic.X");
+    ASSERT_TRUE(man.ok()) << formatAll(man.diagnostics());
+    auto chunks = skin::chunksFromModel(*man, {});
+    ASSERT_TRUE(chunks.ok()) << formatAll(chunks.diagnostics());
+    ASSERT_EQ(chunks->size(), 3u);
+    for (std::size_t m = 0; m < chunks->size(); ++m) {
+        const skin::SkinChunk& c = (*chunks)[m];
+        const model::Mesh& mesh = man->meshes[m];
+        EXPECT_EQ(c.mesh, mesh.name);
+        ASSERT_EQ(c.weights.joints.size(), man->joints.size()) << "every joint of the file, for the hierarchy";
+        for (std::size_t j = 0; j < man->joints.size(); ++j) {
+            EXPECT_EQ(c.weights.joints[j], skin::fileJointKey(man->joints[j].name));
+            EXPECT_EQ(c.joints[j].name, man->joints[j].name);
+            EXPECT_EQ(c.weights.parents[j], man->joints[j].parent);
+        }
+        EXPECT_EQ(c.weights.offsets, mesh.fileWeights->offsets);
+        EXPECT_EQ(c.weights.influences, mesh.fileWeights->influences);
+        for (const model::FileWeights::Bone& bone : mesh.fileWeights->bones)
+            EXPECT_EQ(c.joints[bone.joint].bind, bone.bindWorld) << "the mesh's own bind matrix";
+    }
+    auto box = io::importModel(kModels + "/OBJ/box.obj");
+    ASSERT_TRUE(box.ok());
+    auto none = skin::chunksFromModel(*box, {});
+    ASSERT_FALSE(none.ok());
+    EXPECT_NE(formatAll(none.diagnostics()).find("box.obj: error: no mesh in the file is skinned"), std::string::npos)
+        << formatAll(none.diagnostics());
 }
