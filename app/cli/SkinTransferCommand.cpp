@@ -1,16 +1,21 @@
 // rigsmith-cli skin transfer SOURCE TARGET -o FILE (issue 20 item 6): for
 // pipelines without a guide. SOURCE is a skin chunk file (every chunk in it,
-// as `skin import` reads them); TARGET any model file io::importModel reads.
+// as `skin import` reads them) or a skinned model file (each skinned mesh a
+// chunk, skin/ModelChunks.h); TARGET any model file io::importModel reads.
 // Each target mesh gets weights by the decision tree and options of `skin
 // import`, on the source's influences (there is no rig to resolve them onto),
-// written as a bind-pose chunk per mesh to FILE (.rschunks, atomically).
+// written as a bind-pose chunk per mesh to FILE (.rschunks), or as the
+// target's meshes skinned on the source's skeleton (.glb/.gltf,
+// SkinTransferExport.h); atomically either way.
 #include "cli/Commands.h"
 #include "cli/SkinChunkSupport.h"
 #include "cli/SkinImportOptions.h"
+#include "cli/SkinTransferExport.h"
 
 #include "io/AtomicFile.h"
 #include "io/ModelImport.h"
 #include "io/SkinChunks.h"
+#include "skin/ModelChunks.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -56,22 +61,44 @@ int parseTransfer(const std::vector<std::string>& args, TransferArguments& t)
     if (t.source.empty() || t.target.empty() || t.output.empty())
         return usageError("skin transfer", "expected SOURCE TARGET -o FILE.rschunks");
     const std::string ext = std::filesystem::path(t.output).extension().string();
-    if (ext == ".glb" || ext == ".gltf" || ext == ".fbx")
-        return usageError("skin transfer", "-o writes a skin chunk file (.rschunks); build a guide to export skinned glTF or FBX");
+    if (ext == ".fbx" || ext == ".FBX")
+        return usageError("skin transfer", "-o writes a skin chunk file (.rschunks) or skinned glTF (.glb, .gltf); build a guide to export FBX");
     return 0;
 }
 
-// The source's chunks; a model file is refused with what to do instead.
+bool writesGltf(const std::string& path)
+{
+    const std::string ext = std::filesystem::path(path).extension().string();
+    return ext == ".glb" || ext == ".gltf" || ext == ".GLB" || ext == ".GLTF";
+}
+
+skin::ChunkExportOptions chunkMeta()
+{
+    skin::ChunkExportOptions meta;
+    meta.tool = std::string("rigsmith ") + RIGSMITH_VERSION;
+    meta.user = userName();
+    meta.exportedAtMicroseconds = nowMicroseconds();
+    return meta;
+}
+
+// The source's chunks: a skin chunk file's, or one per skinned mesh of a model
+// file (skin/ModelChunks.h); problems printed.
 std::optional<std::vector<skin::SkinChunk>> readSource(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     char magic[8] = {};
-    if (in && in.read(magic, 8) && std::string(magic, 8) != "RSCHUNKS") {
-        std::cerr << path << ": error: the source is not a skin chunk file; reading skin weights from a model file is not "
-                     "supported yet: export the source's weights as chunks ('rigsmith-cli skin export GUIDE -o FILE.rschunks')\n";
+    if (!in || !in.read(magic, 8) || std::string(magic, 8) == "RSCHUNKS")
+        return readChunkFiles({path});
+    auto model = io::importModel(path);
+    print(model.diagnostics());
+    if (!model)
         return std::nullopt;
-    }
-    return readChunkFiles({path});
+    auto chunks = skin::chunksFromModel(*model, chunkMeta());
+    print(chunks.diagnostics());
+    if (!chunks)
+        return std::nullopt;
+    std::cout << "source: " << chunks->size() << " skinned meshes, " << model->joints.size() << " joints\n";
+    return chunks.take();
 }
 
 // Per influence key, its name and matrices from the chunk that has it.
@@ -136,6 +163,20 @@ int writeJson(const TransferArguments& t, const std::vector<skin::MeshImportRepo
     return written.failed() ? 1 : 0;
 }
 
+// -o OUT.glb / .gltf: the target's meshes skinned on the source's skeleton.
+int writeGltfOutput(const TransferArguments& t, const std::vector<const model::Mesh*>& meshes, const std::vector<model::MeshWeights>& weights,
+                    const std::vector<skin::SkinChunk>& chunks, const std::vector<skin::MeshImportReport>& reports)
+{
+    for (const skin::MeshImportReport& report : reports)
+        printImportReport(report, ImportTarget{});
+    const Diagnostics written = writeTransferredGltf(t.output, meshes, weights, chunks, std::string("rigsmith ") + RIGSMITH_VERSION);
+    print(written);
+    if (hasErrors(written))
+        return 1;
+    std::cout << "skinned meshes: " << t.output << '\n';
+    return writeJson(t, reports);
+}
+
 } // namespace
 
 int runSkinTransfer(const std::vector<std::string>& args)
@@ -143,7 +184,7 @@ int runSkinTransfer(const std::vector<std::string>& args)
     TransferArguments t;
     if (const int usage = parseTransfer(args, t))
         return usage;
-    if (!canWriteBeside(t.output, "skin chunks"))
+    if (!canWriteBeside(t.output, writesGltf(t.output) ? "skinned glTF" : "skin chunks"))
         return 1;
     const auto chunks = readSource(t.source);
     auto model = chunks ? io::importModel(t.target) : Result<model::Model>::failure(Diagnostics{});
@@ -157,10 +198,9 @@ int runSkinTransfer(const std::vector<std::string>& args)
     print(weights.diagnostics());
     if (!weights)
         return 1;
-    skin::ChunkExportOptions meta;
-    meta.tool = std::string("rigsmith ") + RIGSMITH_VERSION;
-    meta.user = userName();
-    meta.exportedAtMicroseconds = nowMicroseconds();
+    if (writesGltf(t.output))
+        return writeGltfOutput(t, *meshes, *weights, *chunks, reports);
+    const skin::ChunkExportOptions meta = chunkMeta();
     std::vector<skin::SkinChunk> out;
     for (std::size_t i = 0; i < meshes->size(); ++i) {
         auto chunk = skin::makeBindPoseChunk(*(*meshes)[i], (*weights)[i], jointsFor((*weights)[i], *chunks), t.target, meta);

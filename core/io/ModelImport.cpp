@@ -4,6 +4,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -85,17 +86,66 @@ struct Walker {
                 for (unsigned k = 0; k < 3; ++k)
                     mesh.indices.push_back(source.mFaces[f].mIndices[k]);
         mesh.material = int(source.mMaterialIndex) < int(out.materials.size()) ? int(source.mMaterialIndex) : -1;
-        // The file's skeleton: a bone's bind world is the mesh's world times its inverse offset.
+        if (source.mNumBones > 0)
+            mesh.fileWeights = readWeights(source, world);
+        if (!mesh.indices.empty())
+            out.meshes.push_back(std::move(mesh));
+    }
+
+    // The file's skeleton and the mesh's weights, per Assimp vertex: the mesh
+    // keeps Assimp's vertices one for one (no JoinIdenticalVertices; the
+    // readers that split vertices per face corner copy the weights to each
+    // copy), so a bone's vertex id is the mesh's vertex index. A bone's bind
+    // world is the mesh's world times its inverse offset. Joint indices are
+    // the order met here; linkJoints renumbers them.
+    model::FileWeights readWeights(const aiMesh& source, const Mat4& world)
+    {
+        model::FileWeights weights;
+        std::vector<std::vector<model::Influence>> perVertex(source.mNumVertices);
         for (unsigned b = 0; b < source.mNumBones; ++b) {
             const aiBone& bone = *source.mBones[b];
             const std::string name = bone.mName.C_Str();
-            if (jointIndex.count(name))
-                continue;
-            jointIndex[name] = int(out.joints.size());
-            out.joints.push_back({name, -1, convention * world * glm::inverse(toMat4(bone.mOffsetMatrix)) * glm::inverse(convention)});
+            const Mat4 bindWorld = convention * world * glm::inverse(toMat4(bone.mOffsetMatrix)) * glm::inverse(convention);
+            auto [it, added] = jointIndex.try_emplace(name, int(out.joints.size()));
+            if (added)
+                out.joints.push_back({name, -1, bindWorld});
+            const auto joint = std::uint32_t(it->second);
+            weights.bones.push_back({joint, bindWorld});
+            for (unsigned w = 0; w < bone.mNumWeights; ++w) {
+                const aiVertexWeight& share = bone.mWeights[w];
+                if (share.mVertexId < source.mNumVertices && std::isfinite(share.mWeight) && share.mWeight > 0.0f)
+                    addShare(perVertex[share.mVertexId], joint, share.mWeight);
+            }
         }
-        if (!mesh.indices.empty())
-            out.meshes.push_back(std::move(mesh));
+        weights.offsets.reserve(perVertex.size() + 1);
+        weights.offsets.push_back(0);
+        for (auto& shares : perVertex) {
+            normalise(shares);
+            weights.influences.insert(weights.influences.end(), shares.begin(), shares.end());
+            weights.offsets.push_back(std::uint32_t(weights.influences.size()));
+        }
+        return weights;
+    }
+
+    // Two bones of one name in a mesh (some FBX files) add their shares.
+    static void addShare(std::vector<model::Influence>& shares, std::uint32_t joint, float weight)
+    {
+        for (model::Influence& i : shares)
+            if (i.joint == joint) {
+                i.weight += weight;
+                return;
+            }
+        shares.push_back({joint, weight});
+    }
+
+    static void normalise(std::vector<model::Influence>& shares)
+    {
+        double sum = 0.0;
+        for (const model::Influence& i : shares)
+            sum += i.weight;
+        for (model::Influence& i : shares)
+            i.weight = float(i.weight / sum);
+        std::stable_sort(shares.begin(), shares.end(), [](const model::Influence& a, const model::Influence& b) { return a.weight > b.weight; });
     }
 
     // Parents of the file's joints from the node tree, and parents-first order.
@@ -128,6 +178,13 @@ struct Walker {
             joint.parent = joint.parent >= 0 ? placed[std::size_t(joint.parent)] : -1;
             out.joints.push_back(joint);
         }
+        for (model::Mesh& mesh : out.meshes)
+            if (mesh.fileWeights) {
+                for (auto& bone : mesh.fileWeights->bones)
+                    bone.joint = std::uint32_t(placed[bone.joint]);
+                for (auto& influence : mesh.fileWeights->influences)
+                    influence.joint = std::uint32_t(placed[influence.joint]);
+            }
     }
 };
 

@@ -3,7 +3,8 @@
 // ...): every mesh with its name, triangles in the file's vertex order, node
 // transforms applied, normals, UVs and materials; FBX units and up axis turned
 // into the guide's convention (an FBX in centimetres arrives in metres, Z-up
-// stands up). Assimp stays in this file.
+// stands up), and a skinned mesh's per-vertex weights on the file's
+// skeleton (model::FileWeights, Model::joints). Assimp stays in this file.
 #include "base/Result.h"
 #include "model/Mesh.h"
 

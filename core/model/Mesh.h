@@ -7,10 +7,40 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace rs::model {
+
+// One skin joint's share of a vertex.
+struct Influence {
+    std::uint32_t joint = 0; // into MeshWeights::joints (FileWeights: into Model::joints)
+    float weight = 0.0f;
+    bool operator==(const Influence&) const = default;
+};
+
+// The skin weights a model file brings with a mesh (a skinned glTF, FBX,
+// Collada, X...), as io::importModel reads them. Per vertex of the mesh (its
+// vertex order), shares of the file's joints, Influence::joint an index into
+// Model::joints, largest first, normalised to sum to 1 (files often store sums
+// a little off 1); a vertex the file weights on no joint has none. `bones`
+// are the joints the file binds this mesh to (including bones that weight no
+// vertex), each with its world matrix at this mesh's bind, from the bone's
+// offset (inverse bind) matrix, in the guide's space as FileJoint::world.
+struct FileWeights {
+    struct Bone {
+        std::uint32_t joint = 0; // into Model::joints
+        Mat4 bindWorld{1.0};
+    };
+    std::vector<Bone> bones;
+    std::vector<std::uint32_t> offsets; // vertex v's influences: [offsets[v], offsets[v + 1]); vertex count + 1 entries
+    std::vector<Influence> influences;
+
+    std::size_t vertexCount() const { return offsets.empty() ? 0 : offsets.size() - 1; }
+    const Influence* begin(std::size_t vertex) const { return influences.data() + offsets[vertex]; }
+    const Influence* end(std::size_t vertex) const { return influences.data() + offsets[vertex + 1]; }
+};
 
 struct Mesh {
     std::string name;
@@ -19,6 +49,7 @@ struct Mesh {
     std::vector<glm::vec2> uvs;        // one per position, or none
     std::vector<std::uint32_t> indices; // three per triangle, into positions
     int material = -1;                  // into the model's materials; -1: none
+    std::optional<FileWeights> fileWeights; // the file's skin weights (io::importModel); none for a mesh without bones
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }
@@ -33,13 +64,6 @@ std::uint64_t topologyFingerprint(const Mesh& mesh);
 // of positive area gets `fallback`. Triangles with an index out of range are skipped.
 std::vector<glm::vec3> vertexNormals(const Mesh& mesh, const std::vector<glm::vec3>& positions, glm::vec3 fallback = {0.0f, 1.0f, 0.0f});
 inline std::vector<glm::vec3> vertexNormals(const Mesh& mesh) { return vertexNormals(mesh, mesh.positions); }
-
-// One skin joint's share of a vertex.
-struct Influence {
-    std::uint32_t joint = 0; // into MeshWeights::joints
-    float weight = 0.0f;
-    bool operator==(const Influence&) const = default;
-};
 
 // Skin weights of one mesh: per vertex, its influences (at most the bind's
 // limit, summing to 1), keyed by skin joint identity so a rebuild keeps them.
