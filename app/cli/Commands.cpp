@@ -9,6 +9,7 @@
 #include "io/GuideFile.h"
 #include "io/ModelImport.h"
 #include "io/WeightsFile.h"
+#include "skin/Refit.h"
 #include "io/RigDump.h"
 #include "io/ShapeFile.h"
 #include "io/TemplateFolders.h"
@@ -157,7 +158,45 @@ struct LoadedCharacter {
     io::ExportCharacter character;
 };
 
-LoadedCharacter loadCharacter(const std::string& guidePath, model::GuideDocument guide)
+// Records whose mesh changed topology since it was bound are re-fitted from
+// the meshes as bound (<guide>.weights.rschunks), as the editor does on open;
+// the guide's files are left as they are (the export carries the re-fit).
+void refitChangedMeshes(const std::string& guidePath, const model::Rig& rig, LoadedCharacter& out)
+{
+    std::vector<std::string> paths;
+    std::vector<const model::Model*> models;
+    for (const io::CharacterModel& m : out.character.models) {
+        paths.push_back(m.path);
+        models.push_back(m.model);
+    }
+    const auto pairs = model::pairBindings(paths, models, out.character.bindings);
+    std::optional<std::vector<skin::SkinChunk>> chunks;
+    for (std::size_t m = 0; m < pairs.size(); ++m)
+        for (std::size_t k = 0; k < pairs[m].size(); ++k) {
+            const int b = pairs[m][k];
+            const model::Mesh& mesh = models[m]->meshes[k];
+            if (b < 0 || model::bindingFits(out.character.bindings[std::size_t(b)], mesh))
+                continue;
+            if (!chunks) {
+                auto loaded = io::loadGuideChunks(guidePath);
+                print(loaded.diagnostics());
+                chunks = loaded ? loaded.take() : std::vector<skin::SkinChunk>{};
+            }
+            model::MeshBinding& was = out.character.bindings[std::size_t(b)];
+            const skin::SkinChunk* previous = skin::previousChunk(*chunks, was);
+            if (!previous)
+                continue; // the export says the mesh changed since it was bound
+            auto refit = skin::refitBinding(was, *previous, mesh, &rig, skin::defaultRefitOptions());
+            print(refit.diagnostics());
+            if (!refit)
+                continue;
+            refit->note.message += " (for this export; open and save the guide in the editor, or bind again, to keep it)";
+            print({refit->note});
+            was = std::move(refit->binding);
+        }
+}
+
+LoadedCharacter loadCharacter(const std::string& guidePath, model::GuideDocument guide, const model::Rig& rig)
 {
     LoadedCharacter out;
     if (guide.models.empty())
@@ -172,6 +211,7 @@ LoadedCharacter loadCharacter(const std::string& guidePath, model::GuideDocument
         out.character.models.push_back({path, out.models.back().get()});
     }
     out.character.bindings = std::move(guide.bindings);
+    refitChangedMeshes(guidePath, rig, out);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::cerr << "read " << guide.models.size() << " model(s) and " << out.character.bindings.size() << " mesh weight record(s) in "
               << ms << " ms\n";
@@ -183,7 +223,7 @@ int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, con
     const io::ExportRequest& request = b.exportRequest;
     if (request.path.empty() && request.referencePath.empty())
         return status;
-    const LoadedCharacter loaded = b.meshes ? loadCharacter(b.guide, guide) : LoadedCharacter{};
+    const LoadedCharacter loaded = b.meshes ? loadCharacter(b.guide, guide, rig) : LoadedCharacter{};
     const auto start = std::chrono::steady_clock::now();
     const Diagnostics d = io::runExport(rig, guide.pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -7,6 +7,7 @@
 #include "io/TemplateFolders.h"
 #include "io/WeightsFile.h"
 #include "rigging/RigBuilder.h"
+#include "skin/Refit.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -59,6 +60,22 @@ std::optional<Character> loadCharacter(const std::string& guidePath)
     for (CharacterMesh& m : c.meshes)
         m.binding = bindingOf(c, m.model, *m.mesh);
     return c;
+}
+
+std::vector<skin::SkinChunk> boundMeshChunks(const Character& c, const std::vector<skin::SkinChunk>& previous)
+{
+    std::vector<skin::SkinChunk> out;
+    std::vector<bool> covered(c.guide.bindings.size(), false);
+    for (const CharacterMesh& m : c.meshes)
+        if (m.binding >= 0 && model::bindingFits(c.guide.bindings[std::size_t(m.binding)], *m.mesh)) {
+            covered[std::size_t(m.binding)] = true;
+            out.push_back(skin::bindingChunk(c.guide.bindings[std::size_t(m.binding)], *m.mesh, &c.rig));
+        }
+    for (std::size_t b = 0; b < covered.size(); ++b)
+        if (!covered[b])
+            if (const skin::SkinChunk* kept = skin::previousChunk(previous, c.guide.bindings[b]))
+                out.push_back(*kept);
+    return out;
 }
 
 bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBone>& bones)

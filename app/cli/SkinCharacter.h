@@ -8,6 +8,7 @@
 #include "model/Mesh.h"
 #include "model/Rig.h"
 #include "skin/SkinBones.h"
+#include "skin/SkinChunk.h"
 
 #include <optional>
 #include <string>
@@ -34,6 +35,11 @@ struct Character {
 std::optional<Character> loadCharacter(const std::string& guidePath);
 // The record of `mesh` in `character` after bindings were added: see the pairing above.
 int bindingOf(const Character& character, const std::string& model, const model::Mesh& mesh);
+
+// The meshes whose record fits them, as bound (skin::bindingChunk): what the
+// guide keeps beside its weights (io::saveGuideChunks) to re-fit from. A
+// record that does not fit its mesh keeps its chunk from `previous`.
+std::vector<skin::SkinChunk> boundMeshChunks(const Character& character, const std::vector<skin::SkinChunk>& previous);
 
 // Whether `weights` are on `bones` already (their keys and parents, in order):
 // then they need no retargeting, which would renormalise them (bits change).

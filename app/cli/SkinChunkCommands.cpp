@@ -42,7 +42,7 @@ void printChunk(const skin::SkinChunk& c, std::size_t index, std::size_t from, s
               << (c.inBindPose ? "exported in bind pose" : "exported posed (bind positions and normals kept too)") << '\n';
     const std::size_t joints = c.joints.size(), vertices = c.vertexCount();
     std::cout << "  influences: " << joints;
-    if (from < joints)
+    if (from < joints && limit > 0)
         std::cout << " (" << from << " to " << std::min(joints, from + limit) - 1 << ")";
     std::cout << '\n';
     for (std::size_t j = from; j < joints && j < from + limit; ++j) {
@@ -52,7 +52,7 @@ void printChunk(const skin::SkinChunk& c, std::size_t index, std::size_t from, s
                   << " now at " << translation(c.joints[j].world) << '\n';
     }
     std::cout << "  vertices: " << vertices;
-    if (from < vertices)
+    if (from < vertices && limit > 0)
         std::cout << " (" << from << " to " << std::min(vertices, from + limit) - 1 << ")";
     std::cout << '\n';
     for (std::size_t i = from; i < vertices && i < from + limit; ++i) {

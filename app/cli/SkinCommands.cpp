@@ -7,6 +7,7 @@
 #include "io/ModelImport.h"
 #include "io/TemplateFolders.h"
 #include "io/WeightsFile.h"
+#include "skin/Refit.h"
 #include "rigging/RigBuilder.h"
 #include "skin/AutoWeights.h"
 
@@ -226,6 +227,18 @@ int runSkin(const std::vector<std::string>& args)
     if (saved.failed())
         return 1;
     std::cout << "weights: " << output << '\n';
+    // The guide's own weights: the meshes as bound go beside them, to re-fit from
+    // when a model changes later (the editor's open and the CLI's build do).
+    if (std::filesystem::absolute(output) == std::filesystem::absolute(io::weightsPathFor(guidePath))) {
+        std::vector<skin::SkinChunk> chunks;
+        for (std::size_t i = 0; i < bound.size(); ++i)
+            chunks.push_back(skin::bindingChunk({bound[i].model, bound[i].name, bound[i].vertexCount, bound[i].fingerprint, bound[i].weights},
+                                                *boundMeshes[i], &rig));
+        const Status kept = io::saveGuideChunks(chunks, guidePath);
+        print(kept.diagnostics());
+        if (kept.failed())
+            return 1;
+    }
     if (!jsonPath.empty()) {
         const Status written = io::writeFileAtomically(jsonPath, weightsJson(rig, *bones, boundMeshes, bound));
         print(written.diagnostics());

@@ -215,6 +215,15 @@ int runSkinImport(const std::vector<std::string>& args)
     if (saved.failed())
         return 1;
     std::cout << "weights: " << io::weightsPathFor(m.guide) << '\n';
+    // The meshes as bound, to re-fit from later; a damaged file there is left alone.
+    auto previous = io::loadGuideChunks(m.guide);
+    print(previous.diagnostics());
+    if (previous) {
+        const Status kept = io::saveGuideChunks(boundMeshChunks(c, *previous), m.guide);
+        print(kept.diagnostics());
+        if (kept.failed())
+            return 1;
+    }
     return writeImportJson(m, *chunks, *targets, reports, *resolved);
 }
 

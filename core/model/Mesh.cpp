@@ -47,4 +47,25 @@ std::vector<glm::vec3> vertexNormals(const Mesh& mesh, const std::vector<glm::ve
     return normals;
 }
 
+std::vector<std::vector<int>> pairBindings(const std::vector<std::string>& modelPaths, const std::vector<const Model*>& models,
+                                           const std::vector<MeshBinding>& bindings)
+{
+    std::vector<std::vector<int>> out(models.size());
+    std::vector<bool> used(bindings.size(), false);
+    for (std::size_t m = 0; m < models.size() && m < modelPaths.size(); ++m) {
+        if (!models[m])
+            continue;
+        for (const Mesh& mesh : models[m]->meshes) {
+            int paired = -1;
+            for (std::size_t b = 0; b < bindings.size() && paired < 0; ++b)
+                if (!used[b] && bindings[b].model == modelPaths[m] && bindings[b].mesh == mesh.name) {
+                    used[b] = true;
+                    paired = int(b);
+                }
+            out[m].push_back(paired);
+        }
+    }
+    return out;
+}
+
 } // namespace rs::model

@@ -126,4 +126,10 @@ struct Model {
     bool zUp = false;                 // the file's up axis was +Z (turned to +Y)
 };
 
+// Pairs the meshes of a guide's models with its weight records: the n-th mesh
+// of a name in a model with the n-th record of that model (path) and name.
+// Per model (null: not read, no meshes), per mesh: a record index or -1.
+std::vector<std::vector<int>> pairBindings(const std::vector<std::string>& modelPaths, const std::vector<const Model*>& models,
+                                           const std::vector<MeshBinding>& bindings);
+
 } // namespace rs::model
