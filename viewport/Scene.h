@@ -133,6 +133,8 @@ struct Scene {
 
     // Bounds of everything drawn; false when the scene is empty.
     bool bounds(glm::dvec3& lo, glm::dvec3& hi) const;
+    // Every point drawn (joints, curve points, mesh vertices), for framing.
+    std::vector<glm::dvec3> drawnPoints() const;
 };
 
 // `rig` may be null (not built yet). With `pose` (an evaluation of the rig) the
@@ -145,5 +147,7 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
 void applyDisplay(Scene& scene, const DisplayOptions& display, bool rigMode);
 // Bounds of the selected guide joints or controllers; false when nothing is selected.
 bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
+// The selected CVs (in CV mode), else the selected guide joints' and controllers' points; empty when none.
+std::vector<glm::dvec3> selectionPoints(const Scene& scene);
 
 } // namespace rs::viewport

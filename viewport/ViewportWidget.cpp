@@ -79,9 +79,7 @@ void ViewportWidget::setScene(Scene scene)
 
 void ViewportWidget::frameAll()
 {
-    glm::dvec3 lo, hi;
-    if (m_scene.bounds(lo, hi))
-        m_camera.frame(lo, hi, double(width()) / std::max(1, height()));
+    m_camera.frame(m_scene.drawnPoints(), double(width()) / std::max(1, height()));
     update();
 }
 
@@ -95,9 +93,9 @@ QPoint ViewportWidget::toWidgetPixels(const glm::dvec3& world) const
 
 void ViewportWidget::frameSelection()
 {
-    glm::dvec3 lo, hi;
-    if (selectionBounds(m_scene, lo, hi))
-        m_camera.frame(lo, hi, double(width()) / std::max(1, height()));
+    const std::vector<glm::dvec3> selected = selectionPoints(m_scene);
+    if (!selected.empty())
+        m_camera.frame(selected, double(width()) / std::max(1, height()));
     else
         frameAll();
     update();
