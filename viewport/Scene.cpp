@@ -29,6 +29,7 @@ bool boundsOf(const std::vector<glm::dvec3>& points, glm::dvec3& lo, glm::dvec3&
 
 bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const { return boundsOf(drawnPoints(), lo, hi); }
 
+namespace {
 std::vector<glm::dvec3> selectionPoints(const Scene& scene)
 {
     std::vector<glm::dvec3> points;
@@ -42,6 +43,8 @@ std::vector<glm::dvec3> selectionPoints(const Scene& scene)
         if (c.selected) points.insert(points.end(), c.points.begin(), c.points.end());
     return points;
 }
+
+} // namespace
 
 bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi) { return boundsOf(selectionPoints(scene), lo, hi); }
 

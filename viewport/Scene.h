@@ -147,7 +147,5 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
 void applyDisplay(Scene& scene, const DisplayOptions& display, bool rigMode);
 // Bounds of the selected guide joints or controllers; false when nothing is selected.
 bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
-// The selected CVs (in CV mode), else the selected guide joints' and controllers' points; empty when none.
-std::vector<glm::dvec3> selectionPoints(const Scene& scene);
 
 } // namespace rs::viewport

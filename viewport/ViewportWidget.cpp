@@ -93,9 +93,11 @@ QPoint ViewportWidget::toWidgetPixels(const glm::dvec3& world) const
 
 void ViewportWidget::frameSelection()
 {
-    const std::vector<glm::dvec3> selected = selectionPoints(m_scene);
-    if (!selected.empty())
-        m_camera.frame(selected, double(width()) / std::max(1, height()));
+    // The selection's bounding box, not its points: a selected control's CVs
+    // lie outside its curve and stay in view for CV mode.
+    glm::dvec3 lo, hi;
+    if (selectionBounds(m_scene, lo, hi))
+        m_camera.frame(lo, hi, double(width()) / std::max(1, height()));
     else
         frameAll();
     update();
