@@ -7,10 +7,11 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QEventLoop>
-#include <QOpenGLWidget>
 #include <QTimer>
 
 #include <nlohmann/json.hpp>
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,22 +23,43 @@ namespace rs::app {
 namespace {
 
 // Runs `edit` and waits for the viewport's next swapped frame; milliseconds.
-double timeToFrame(QOpenGLWidget* view, const std::function<void()>& edit)
+// `editMs`, when given, gets the part spent in `edit` itself (the session's
+// rebuild and the views' refresh, before any painting).
+double timeToFrame(viewport::ViewportWidget* view, const std::function<void()>& edit, std::vector<double>* editMs = nullptr)
 {
     QEventLoop loop;
     QElapsedTimer timer;
     double ms = -1.0;
-    const auto connection = QObject::connect(view, &QOpenGLWidget::frameSwapped, &loop, [&] {
+    const auto connection = QObject::connect(view, &viewport::ViewportWidget::frameSwapped, &loop, [&] {
         ms = double(timer.nsecsElapsed()) / 1e6;
         loop.quit();
     });
     QTimer::singleShot(2000, &loop, &QEventLoop::quit); // a frame that never comes counts as 2 s
     timer.start();
     edit();
+    if (editMs)
+        editMs->push_back(double(timer.nsecsElapsed()) / 1e6);
     view->update();
     loop.exec();
     QObject::disconnect(connection);
     return ms < 0.0 ? 2000.0 : ms;
+}
+
+// CPU milliseconds the process has used so far, all threads (llvmpipe's
+// rasterisers included) and the calling (GUI) thread alone: unlike wall time,
+// they barely change with the machine's load.
+struct CpuTime {
+    double process = 0.0, thread = 0.0;
+};
+CpuTime cpuNow()
+{
+    auto ms = [](const rusage& u) {
+        return (double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3) + double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e3;
+    };
+    rusage self{}, thread{};
+    getrusage(RUSAGE_SELF, &self);
+    getrusage(RUSAGE_THREAD, &thread);
+    return {ms(self), ms(thread)};
 }
 
 // The guide joint with the most joints below it in its instance (an arm's
@@ -82,7 +104,8 @@ int reportEditLatency(MainWindow& window, int drags)
     std::vector<double> idle;
     for (int i = 0; i < 20; ++i)
         idle.push_back(timeToFrame(view, [] {}));
-    std::vector<double> moves, commits;
+    std::vector<double> moves, commits, edits;
+    const CpuTime cpuStart = cpuNow();
     const int steps = 4; // mouse moves per drag
     moves.reserve(std::size_t(drags * steps));
     commits.reserve(std::size_t(drags));
@@ -92,10 +115,11 @@ int reportEditLatency(MainWindow& window, int drags)
         for (int s = 1; s <= steps; ++s) {
             Mat4 world = start;
             world[3][1] += 0.002 * s * (d % 2 == 0 ? 1.0 : -1.0); // up, then back down: the guide stays put
-            moves.push_back(timeToFrame(view, [&] { emit view->gizmoDragged(joint, world); }));
+            moves.push_back(timeToFrame(view, [&] { emit view->gizmoDragged(joint, world); }, &edits));
         }
-        commits.push_back(timeToFrame(view, [&] { emit view->gizmoDragFinished(joint); }));
+        commits.push_back(timeToFrame(view, [&] { emit view->gizmoDragFinished(joint); }, &edits));
     }
+    const CpuTime cpuEnd = cpuNow();
     window.session().discardAutosave(); // a measurement leaves no recovery behind
     std::vector<double> all = moves;
     all.insert(all.end(), commits.begin(), commits.end());
@@ -113,6 +137,10 @@ int reportEditLatency(MainWindow& window, int drags)
                                 {"idle_frame_median_ms", ms(median(idle))},
                                 // What an edit adds to a repaint: the session's rebuild, the views' refresh and the uploads.
                                 {"edit_over_idle_median_ms", ms(median(all) - median(idle))},
+                                {"edit_median_ms", ms(median(edits))},
+                                {"edit_worst_ms", ms(*std::max_element(edits.begin(), edits.end()))},
+                                {"cpu_ms_per_frame", ms((cpuEnd.process - cpuStart.process) / double(all.size()))},
+                                {"gui_thread_cpu_ms_per_frame", ms((cpuEnd.thread - cpuStart.thread) / double(all.size()))},
                                 {"viewport_px", {int(view->width() * view->devicePixelRatio()), int(view->height() * view->devicePixelRatio())}},
                                 {"window_px", {window.width(), window.height()}},
                                 {"build_ms", ms(window.session().lastBuildMilliseconds())},

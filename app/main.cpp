@@ -34,7 +34,6 @@
 #include <QTimer>
 
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
 
 #include <nlohmann/json.hpp>
 
@@ -89,7 +88,7 @@ double msSinceProcessStart()
 // --startup-time: reports when the viewport has drawn its first frame.
 int reportStartup(QApplication& app, rs::app::MainWindow& window, const QElapsedTimer& sinceMain)
 {
-    QObject::connect(window.viewportWidget(), &QOpenGLWidget::frameSwapped, &window, [&] {
+    QObject::connect(window.viewportWidget(), &rs::viewport::ViewportWidget::frameSwapped, &window, [&] {
         const nlohmann::json report{{"ms_since_main", std::round(sinceMain.nsecsElapsed() / 1e5) / 10.0},
                                     {"ms_since_process_start", std::round(msSinceProcessStart())},
                                     {"templates", window.session().document().instances().size()}};

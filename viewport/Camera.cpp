@@ -69,29 +69,46 @@ void Camera::dolly(double steps)
 
 void Camera::frame(const glm::dvec3& lo, const glm::dvec3& hi, double aspect)
 {
-    constexpr double kFill = 0.9; // the box takes 90% of the view's height or width
+    std::vector<glm::dvec3> corners;
+    for (int corner = 0; corner < 8; ++corner)
+        corners.emplace_back((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+    frame(corners, aspect);
+}
+
+void Camera::frame(const std::vector<glm::dvec3>& points, double aspect)
+{
+    if (points.empty())
+        return;
+    constexpr double kFill = 0.9; // the points take 90% of the view's height or width
     aspect = std::max(aspect, 1e-3);
-    target = (lo + hi) * 0.5;
-    const glm::dmat4 view = viewMatrix(); // the direction only: the target moved, the angles did not
+    const glm::dmat4 view = viewMatrix(); // the direction only: the target moves, the angles do not
     const glm::dvec3 right(view[0][0], view[1][0], view[2][0]);
     const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);
     const glm::dvec3 back(view[0][2], view[1][2], view[2][2]); // from the target towards the camera
+    // The target goes to the middle of the points' extent along the view's axes.
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const glm::dvec3& p : points) {
+        const glm::dvec3 v(glm::dot(p, right), glm::dot(p, up), glm::dot(p, back));
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    const glm::dvec3 middle = (lo + hi) * 0.5;
+    target = right * middle.x + up * middle.y + back * middle.z;
     const double tanV = std::tan(fovYRadians / 2.0) * kFill;
     const double tanH = tanV * aspect;
-    double needed = 0.0;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 c((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
-        const glm::dvec3 d = c - target;
+    double needed = 0.0, nearest = 0.0;
+    for (const glm::dvec3& p : points) {
+        const glm::dvec3 d = p - target;
         const double x = std::abs(glm::dot(d, right)), y = std::abs(glm::dot(d, up));
-        const double towards = glm::dot(d, back); // a corner nearer the camera needs more room
+        const double towards = glm::dot(d, back); // a point nearer the camera needs more room
+        nearest = std::max(nearest, towards);
         if (orthographic)
             needed = std::max({needed, y / tanV, x / tanH});
         else
             needed = std::max({needed, y / tanV + towards, x / tanH + towards});
     }
-    const double radius = glm::length(hi - lo) * 0.5;
-    // Perspective: the camera stays outside the box (near plane), and a point or flat box still gets a view.
-    distance = std::clamp(std::max(needed, orthographic ? 0.1 : radius * 1.1 + nearPlane), 0.1, 500.0);
+    // Perspective: every point stays in front of the near plane, and a single point still gets a view.
+    distance = std::clamp(std::max(needed, orthographic ? 0.1 : nearest + 10.0 * nearPlane), 0.1, 500.0);
 }
 
 bool projectToPixels(const glm::dmat4& viewProjection, const glm::dvec3& world, double width, double height,

@@ -1,6 +1,8 @@
 #pragma once
 // An orbit camera (Maya style): it looks at `target` from `distance` away,
 // turned by yaw/pitch (radians). Y-up, metres. Pure maths, no GL.
+#include <vector>
+
 #include <glm/glm.hpp>
 
 namespace rs::viewport {
@@ -30,6 +32,11 @@ public:
     // the box's corners, seen from the current direction, fit both the
     // vertical and the horizontal field of view with a small margin.
     void frame(const glm::dvec3& lo, const glm::dvec3& hi, double aspect = 1.0);
+    // Frames points (a rig's joints and curve points) so they fill 90% of the
+    // view's height or width, whichever binds, seen from the current
+    // direction: tighter than their bounding box, whose corners stick out
+    // towards the camera in perspective. No points: the camera stays.
+    void frame(const std::vector<glm::dvec3>& points, double aspect = 1.0);
 
     glm::dvec3 target{0.0, 1.0, 0.0};
     double distance = 4.0;

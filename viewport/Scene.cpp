@@ -4,35 +4,49 @@
 
 namespace rs::viewport {
 
-bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const
+std::vector<glm::dvec3> Scene::drawnPoints() const
 {
-    lo = glm::dvec3(1e300);
-    hi = glm::dvec3(-1e300);
-    bool any = false;
-    auto add = [&](const glm::dvec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); any = true; };
-    for (const auto& j : guideJoints) add(j.position);
-    for (const auto& c : curves) for (const auto& p : c.points) add(p);
-    for (const auto& j : skinJoints) add(j.position);
-    for (const auto& m : meshes) for (const auto& p : m.data().positions) add(glm::dvec3(p));
-    return any;
+    std::vector<glm::dvec3> points;
+    for (const auto& j : guideJoints) points.push_back(j.position);
+    for (const auto& c : curves) points.insert(points.end(), c.points.begin(), c.points.end());
+    for (const auto& j : skinJoints) points.push_back(j.position);
+    for (const auto& m : meshes) for (const auto& p : m.data().positions) points.emplace_back(p);
+    return points;
 }
 
-bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi)
+namespace {
+bool boundsOf(const std::vector<glm::dvec3>& points, glm::dvec3& lo, glm::dvec3& hi)
 {
     lo = glm::dvec3(1e300);
     hi = glm::dvec3(-1e300);
-    bool any = false;
-    auto add = [&](const glm::dvec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); any = true; };
-    for (const auto& cv : scene.cvs)
-        if (cv.selected) add(cv.position);
-    if (any) // CV mode frames the selected CVs
-        return true;
-    if (scene.showGuides)
-        for (const auto& j : scene.guideJoints) if (j.selected) add(j.position);
-    for (const auto& c : scene.curves)
-        if (c.selected) for (const auto& p : c.points) add(p);
-    return any;
+    for (const glm::dvec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return !points.empty();
 }
+} // namespace
+
+bool Scene::bounds(glm::dvec3& lo, glm::dvec3& hi) const { return boundsOf(drawnPoints(), lo, hi); }
+
+namespace {
+std::vector<glm::dvec3> selectionPoints(const Scene& scene)
+{
+    std::vector<glm::dvec3> points;
+    for (const auto& cv : scene.cvs)
+        if (cv.selected) points.push_back(cv.position);
+    if (!points.empty()) // CV mode frames the selected CVs
+        return points;
+    if (scene.showGuides)
+        for (const auto& j : scene.guideJoints) if (j.selected) points.push_back(j.position);
+    for (const auto& c : scene.curves)
+        if (c.selected) points.insert(points.end(), c.points.begin(), c.points.end());
+    return points;
+}
+
+} // namespace
+
+bool selectionBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi) { return boundsOf(selectionPoints(scene), lo, hi); }
 
 void applyDisplay(Scene& scene, const DisplayOptions& display, bool rigMode)
 {

@@ -133,6 +133,8 @@ struct Scene {
 
     // Bounds of everything drawn; false when the scene is empty.
     bool bounds(glm::dvec3& lo, glm::dvec3& hi) const;
+    // Every point drawn (joints, curve points, mesh vertices), for framing.
+    std::vector<glm::dvec3> drawnPoints() const;
 };
 
 // `rig` may be null (not built yet). With `pose` (an evaluation of the rig) the

@@ -150,8 +150,7 @@ bool ViewportWidget::paintRelease(QMouseEvent* event)
         return false;
     const bool add = event->modifiers() & Qt::ShiftModifier;
     if (m_dragged) {
-        if (m_rubberBand)
-            m_rubberBand->hide();
+        m_selectBox = QRect();
         const glm::dvec2 a(m_pressPosition.x(), m_pressPosition.y()), b(event->position().x(), event->position().y());
         emit verticesSelected(boxPickVertices(posedCharacter(), m_camera, width(), height(), a, b), add);
     } else if (const auto hit = meshHitAt(event->position().toPoint())) {
@@ -186,7 +185,7 @@ void ViewportWidget::keyReleaseEvent(QKeyEvent* event)
         update();
         return;
     }
-    QOpenGLWidget::keyReleaseEvent(event);
+    QWidget::keyReleaseEvent(event);
 }
 
 void ViewportWidget::paintOverlay()

@@ -1,5 +1,6 @@
 #include "ViewportWidget.h"
 
+#include "ViewportSurface.h"
 #include "render/Renderer.h"
 
 #include "eval/Pickwalk.h"
@@ -7,9 +8,12 @@
 #include <QMouseEvent>
 #include <QNativeGestureEvent>
 #include <QPainter>
-#include <QOpenGLContext>
-#include <QRubberBand>
+#include <QBackingStore>
 #include <QFileInfo>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QOpenGLPaintDevice>
+#include <QVBoxLayout>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -29,10 +33,17 @@ void requestOpenGl33Core()
     QSurfaceFormat::setDefaultFormat(format);
 }
 
-ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent)
+ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent), m_surface(new ViewportSurface(*this))
 {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(320, 240);
+    QWidget* container = QWidget::createWindowContainer(m_surface, this);
+    container->setAttribute(Qt::WA_TransparentForMouseEvents); // clicks land on this widget
+    container->setFocusPolicy(Qt::NoFocus);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(container);
+    connect(m_surface, &QOpenGLWindow::frameSwapped, this, &ViewportWidget::frameSwapped);
 }
 
 ViewportWidget::~ViewportWidget()
@@ -42,12 +53,17 @@ ViewportWidget::~ViewportWidget()
 
 void ViewportWidget::cleanup()
 {
-    if (!m_renderer || !context())
+    if (!m_renderer || !m_surface->context())
         return;
-    makeCurrent();
+    m_surface->makeCurrent();
     m_renderer->release();
     m_renderer.reset();
-    doneCurrent();
+    m_surface->doneCurrent();
+}
+
+void ViewportWidget::update()
+{
+    m_surface->update();
 }
 
 std::uint64_t ViewportWidget::verticesUploaded() const { return m_renderer ? m_renderer->verticesUploaded() : 0; }
@@ -63,9 +79,7 @@ void ViewportWidget::setScene(Scene scene)
 
 void ViewportWidget::frameAll()
 {
-    glm::dvec3 lo, hi;
-    if (m_scene.bounds(lo, hi))
-        m_camera.frame(lo, hi, double(width()) / std::max(1, height()));
+    m_camera.frame(m_scene.drawnPoints(), double(width()) / std::max(1, height()));
     update();
 }
 
@@ -79,6 +93,8 @@ QPoint ViewportWidget::toWidgetPixels(const glm::dvec3& world) const
 
 void ViewportWidget::frameSelection()
 {
+    // The selection's bounding box, not its points: a selected control's CVs
+    // lie outside its curve and stay in view for CV mode.
     glm::dvec3 lo, hi;
     if (selectionBounds(m_scene, lo, hi))
         m_camera.frame(lo, hi, double(width()) / std::max(1, height()));
@@ -147,62 +163,65 @@ void ViewportWidget::initializeGL()
         m_renderError = QString::fromStdString(error);
         qWarning("Rigsmith viewport: %s", error.c_str());
     }
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::cleanup);
+    connect(m_surface->context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::cleanup);
 }
 
-void ViewportWidget::paintGL()
+void ViewportWidget::paintGL(int pixelWidth, int pixelHeight)
 {
     m_scene.overlay.clear();
     if (const auto g = gizmo())
         m_scene.overlay = gizmoCurves(*g, m_activeHandle);
     paintOverlay();
     if (m_renderer) {
-        m_renderer->render(m_scene, m_camera, int(width() * devicePixelRatio()), int(height() * devicePixelRatio()));
+        m_renderer->render(m_scene, m_camera, pixelWidth, pixelHeight);
         for (const std::string& warning : m_renderer->takeWarnings())
             emit renderWarning(QString::fromStdString(warning));
     }
-    paintLabels();
+    paintLabels(pixelWidth, pixelHeight);
 }
 
-// The labels are painted by a see-through child widget over the GL surface
-// (composited by Qt, so window grabs include them).
-class LabelOverlay : public QWidget {
-public:
-    explicit LabelOverlay(ViewportWidget* view) : QWidget(view), m_view(view)
-    {
-        setAttribute(Qt::WA_TransparentForMouseEvents);
-        setAttribute(Qt::WA_NoSystemBackground);
-    }
-
-protected:
-    void paintEvent(QPaintEvent*) override
-    {
-        const Scene& scene = m_view->scene();
-        if (scene.labels.empty())
-            return;
-        QPainter painter(this);
-        painter.setPen(QColor(225, 225, 215));
-        const Camera& camera = m_view->camera();
-        const glm::dmat4 vp = camera.projectionMatrix(double(width()) / std::max(1, height())) * camera.viewMatrix();
-        for (const SceneLabel& label : scene.labels) {
-            glm::dvec2 p;
-            if (projectToPixels(vp, label.position, width(), height(), p))
-                painter.drawText(QPointF(p.x + 7.0, p.y - 5.0), QString::fromStdString(label.text));
-        }
-    }
-
-private:
-    ViewportWidget* m_view;
-};
-
-void ViewportWidget::paintLabels()
+// On screen the surface shows the frame and this widget, under it, paints
+// nothing. Rendered into anything else (grab(), render(): screenshots), the
+// window container shows nothing, so the frame is drawn again off screen here.
+void ViewportWidget::paintEvent(QPaintEvent*)
 {
-    if (!m_labels) {
-        m_labels = new LabelOverlay(this);
-        m_labels->show();
+    QPainter painter(this);
+    if ((backingStore() && painter.device() == backingStore()->paintDevice()) || !m_surface->isValid())
+        return;
+    m_surface->makeCurrent();
+    const qreal ratio = devicePixelRatio();
+    const QSize pixels(int(width() * ratio), int(height() * ratio));
+    QOpenGLFramebufferObject frame(pixels, QOpenGLFramebufferObject::CombinedDepthStencil);
+    frame.bind();
+    paintGL(pixels.width(), pixels.height());
+    QImage image = frame.toImage();
+    frame.release();
+    m_surface->doneCurrent();
+    image.setDevicePixelRatio(ratio);
+    painter.drawImage(QPointF(0.0, 0.0), image);
+}
+
+// Text and the selection box go over the GL frame with QPainter (its GL
+// paint engine), in the same frame: no widget over the surface to compose.
+void ViewportWidget::paintLabels(int pixelWidth, int pixelHeight)
+{
+    if (m_scene.labels.empty() && m_selectBox.isNull())
+        return;
+    QOpenGLPaintDevice device(pixelWidth, pixelHeight);
+    device.setDevicePixelRatio(devicePixelRatio());
+    QPainter painter(&device);
+    painter.setPen(QColor(225, 225, 215));
+    const glm::dmat4 vp = m_camera.projectionMatrix(double(width()) / std::max(1, height())) * m_camera.viewMatrix();
+    for (const SceneLabel& label : m_scene.labels) {
+        glm::dvec2 p;
+        if (projectToPixels(vp, label.position, width(), height(), p))
+            painter.drawText(QPointF(p.x + 7.0, p.y - 5.0), QString::fromStdString(label.text));
     }
-    m_labels->setGeometry(rect());
-    m_labels->update();
+    if (!m_selectBox.isNull()) {
+        painter.setPen(QColor(235, 235, 235));
+        painter.setBrush(QColor(255, 255, 255, 28));
+        painter.drawRect(m_selectBox);
+    }
 }
 
 ViewportWidget::CameraDrag ViewportWidget::cameraDragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const
@@ -262,10 +281,8 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
     }
     const bool wasOrtho = m_camera.orthographic;
     if (m_dragButton == Qt::LeftButton && m_cameraDrag == CameraDrag::None) { // box select
-        if (!m_rubberBand)
-            m_rubberBand = new QRubberBand(QRubberBand::Rectangle, this);
-        m_rubberBand->setGeometry(QRect(m_pressPosition, p).normalized());
-        m_rubberBand->show();
+        m_selectBox = QRect(m_pressPosition, p).normalized();
+        update();
         return;
     }
     if (m_cameraDrag == CameraDrag::Orbit)
@@ -293,8 +310,7 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
         m_activeHandle = -1;
         emit gizmoDragFinished(m_gizmoTarget);
     } else if (event->button() == Qt::LeftButton && m_dragged && m_cameraDrag == CameraDrag::None) {
-        if (m_rubberBand)
-            m_rubberBand->hide();
+        m_selectBox = QRect();
         const glm::dvec2 a(m_pressPosition.x(), m_pressPosition.y()), b(event->position().x(), event->position().y());
         if (m_rigMode) {
             const auto nodes = boxPick(m_scene, m_camera, width(), height(), a, b);
@@ -350,7 +366,7 @@ bool ViewportWidget::event(QEvent* event)
             return true;
         }
     }
-    return QOpenGLWidget::event(event);
+    return QWidget::event(event);
 }
 
 bool ViewportWidget::handleViewKey(QKeyEvent* event)
@@ -401,7 +417,7 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
                 return;
             }
     }
-    QOpenGLWidget::keyPressEvent(event);
+    QWidget::keyPressEvent(event);
 }
 
 } // namespace rs::viewport

@@ -1,5 +1,5 @@
 #pragma once
-// The Qt host of the Renderer: a QOpenGLWidget with an orbit camera, as in
+// The Qt host of the Renderer: a widget with an orbit camera, as in
 // Maya by default (Navigation::Maya): Alt+left drag orbits, middle drag pans,
 // the wheel (or Alt+right drag) zooms. Navigation::Blender: middle drag
 // orbits, Shift+middle pans, Ctrl+middle zooms. Navigation::Touchpad: a
@@ -18,22 +18,31 @@
 // and buttons work as always. Knows nothing about the
 // widgets library or the app; it reports picks, walks and drags as signals
 // carrying core ids and world matrices.
+//
+// It draws through a QOpenGLWindow in a window container (ViewportSurface),
+// not a QOpenGLWidget: a QOpenGLWidget makes Qt compose the whole main window
+// with GL on every frame (the widgets' backing store blended over the GL
+// texture), which on a software rasteriser cost about 35 ms of CPU per frame;
+// the window swaps only its own pixels. The surface ignores input: the mouse,
+// the wheel and the keys reach this widget as before. Labels, the selection box
+// and everything else are drawn into the same GL frame; grab() (screenshots)
+// includes the frame, rendered again off screen.
 #include "Camera.h"
 #include "Manipulator.h"
 #include "Picking.h"
 #include "Scene.h"
 #include "WeightPaint.h"
 
-#include <QOpenGLWidget>
+#include <QWidget>
 
 #include <memory>
 #include <optional>
 
-class QRubberBand;
 
 namespace rs::viewport {
 
 class Renderer;
+class ViewportSurface;
 
 // How mouse buttons and the wheel move the camera (see the class comment).
 enum class Navigation { Maya, Blender, Touchpad };
@@ -43,11 +52,15 @@ enum class PaintTool { Brush, SelectVertices };
 // What a stroke's modifiers ask for: the panel's tool, Ctrl subtracts, Shift smooths.
 enum class PaintStroke { Tool, Subtract, Smooth };
 
-class ViewportWidget : public QOpenGLWidget {
+class ViewportWidget : public QWidget {
     Q_OBJECT
 public:
     explicit ViewportWidget(QWidget* parent = nullptr);
     ~ViewportWidget() override;
+
+    // Asks for a new frame (hides QWidget::update: the frame is the GL
+    // surface's). Call through a ViewportWidget pointer.
+    void update();
 
     void setScene(Scene scene);
     const Scene& scene() const { return m_scene; }
@@ -123,10 +136,11 @@ signals:
     void brushRadiusChanged(double metres);
     // A drawing problem the rigger should know of (an unreadable texture), once each.
     void renderWarning(const QString& message);
+    // A frame reached the screen (swapped): tests and latency measurements wait for it.
+    void frameSwapped();
 
 protected:
-    void initializeGL() override;
-    void paintGL() override;
+    void paintEvent(QPaintEvent* event) override; // only for grab(): the frame drawn off screen
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
@@ -136,11 +150,14 @@ protected:
     bool event(QEvent* event) override; // pinch to zoom
 
 private:
+    friend class ViewportSurface;
+    void initializeGL();
+    void paintGL(int pixelWidth, int pixelHeight);
     enum class CameraDrag { None, Orbit, Pan, Dolly };
     CameraDrag cameraDragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const;
     void cleanup();
     bool handleViewKey(QKeyEvent* event);
-    void paintLabels();
+    void paintLabels(int pixelWidth, int pixelHeight); // and the selection box, with QPainter over GL
     // Paint mode's mouse and keys (ViewportPaint.cpp); true when handled.
     bool paintPress(QMouseEvent* event);
     bool paintMove(QMouseEvent* event);
@@ -166,8 +183,8 @@ private:
     std::optional<GizmoDrag> m_gizmoDrag;
     bool m_selectTool = false;
     int m_activeHandle = -1;
-    QRubberBand* m_rubberBand = nullptr;
-    QWidget* m_labels = nullptr; // LabelOverlay, made on the first paint
+    ViewportSurface* m_surface = nullptr; // owned by its window container, a child of this widget
+    QRect m_selectBox;                    // a box select under way (widget pixels), null when none
     bool m_paintMode = false;
     PaintTool m_paintTool = PaintTool::Brush;
     double m_brushRadius = 0.05;

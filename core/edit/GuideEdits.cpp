@@ -20,7 +20,11 @@ public:
     explicit AddInstance(TemplateInstance instance) : m_instance(std::move(instance)) {}
     std::string text() const override { return "Add " + m_instance.templateId + " '" + m_instance.name + "'"; }
     void redo(GuideDocument& d) override { d.insertInstance(m_instance, d.instances().size()); }
-    void undo(GuideDocument& d) override { m_instance = d.takeInstance(m_instance.id); }
+    void undo(GuideDocument& d) override
+    {
+        if (auto taken = d.takeInstance(m_instance.id))
+            m_instance = std::move(*taken);
+    }
     Change change() const override { return Change::of(ChangeKind::Instances, {m_instance.id}); }
 
 private:
@@ -38,8 +42,9 @@ public:
             if (!d.instance(top))
                 continue; // already gone below another removed instance
             for (InstanceId id : d.subtree(top)) {
-                const std::size_t index = *d.indexOf(id);
-                m_removed.emplace_back(index, d.takeInstance(id));
+                const auto index = d.indexOf(id);
+                if (auto taken = index ? d.takeInstance(id) : std::nullopt)
+                    m_removed.emplace_back(*index, std::move(*taken));
             }
         }
     }

@@ -27,8 +27,9 @@ public:
     {
         m_removed.clear();
         for (InstanceId id : m_removedIds) {
-            const std::size_t index = *d.indexOf(id);
-            m_removed.emplace_back(index, d.takeInstance(id));
+            const auto index = d.indexOf(id);
+            if (auto taken = index ? d.takeInstance(id) : std::nullopt)
+                m_removed.emplace_back(*index, std::move(*taken));
         }
         for (const TemplateInstance& instance : m_added)
             d.insertInstance(instance, d.instances().size());

@@ -1,7 +1,6 @@
 #include "model/GuideDocument.h"
 
 #include <algorithm>
-#include <stdexcept>
 #include <unordered_map>
 #include <utility>
 
@@ -129,11 +128,11 @@ std::optional<std::size_t> GuideDocument::indexOf(InstanceId id) const
     return std::nullopt;
 }
 
-TemplateInstance GuideDocument::takeInstance(InstanceId id)
+std::optional<TemplateInstance> GuideDocument::takeInstance(InstanceId id)
 {
-    auto index = indexOf(id);
+    const auto index = indexOf(id);
     if (!index)
-        throw std::logic_error("takeInstance: unknown instance");
+        return std::nullopt;
     TemplateInstance out = std::move(m_instances[*index]);
     m_instances.erase(m_instances.begin() + static_cast<std::ptrdiff_t>(*index));
     return out;

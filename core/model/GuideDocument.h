@@ -98,7 +98,8 @@ public:
     // Low-level mutators for rs::edit and readers. Insert keeps `index` order.
     void insertInstance(TemplateInstance instance, std::size_t index);
     std::optional<std::size_t> indexOf(InstanceId id) const;
-    TemplateInstance takeInstance(InstanceId id);
+    // Removes and returns the instance; nullopt (the document untouched) when there is none with `id`.
+    std::optional<TemplateInstance> takeInstance(InstanceId id);
 
     InstanceId nextInstanceId() const;
     JointId nextJointId() const;

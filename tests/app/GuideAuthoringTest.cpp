@@ -9,7 +9,6 @@
 
 #include <QAction>
 #include <QApplication>
-#include <QOpenGLWidget>
 #include <QSignalSpy>
 
 #include <fstream>
@@ -141,7 +140,7 @@ TEST(GuideAuthoring, AModelIsShownSeeThroughUntilBoundAndABadOneIsReported)
     // Persistent GPU buffers: a repaint that only moves the camera sends no
     // scene vertices, and a guide edit sends the guide but not the model again.
     auto repaint = [&] {
-        QSignalSpy swapped(view, &QOpenGLWidget::frameSwapped);
+        QSignalSpy swapped(view, &viewport::ViewportWidget::frameSwapped);
         view->update();
         return swapped.wait(2000);
     };

@@ -149,3 +149,17 @@ TEST(GuideEdits, AGuideParameterRegeneratesTheJointsKeepingTheOnesThatStillExist
         << "names the instance that would lose its hook";
     EXPECT_EQ(document.instance(spine)->joints.size(), 5u);
 }
+
+TEST(GuideDocument, TakingAnUnknownInstanceReturnsNothingAndLeavesTheGuide)
+{
+    model::GuideDocument guide = test::loadSample("biped");
+    const std::size_t count = guide.instances().size();
+    EXPECT_FALSE(guide.takeInstance(guide.nextInstanceId()).has_value());
+    EXPECT_EQ(guide.instances().size(), count);
+    const model::InstanceId neck = guide.instanceNamed("neck")->id;
+    const auto taken = guide.takeInstance(neck);
+    ASSERT_TRUE(taken.has_value());
+    EXPECT_EQ(taken->id, neck);
+    EXPECT_EQ(guide.instances().size(), count - 1);
+    EXPECT_FALSE(guide.takeInstance(neck).has_value());
+}

@@ -126,7 +126,9 @@ TEST(IncrementalBuild, EveryKindOfGuideEditGivesTheFullBuildOnEverySample)
         guide.naming.controller = "ctl_"; // every controller renamed
         buildAndCompare(guide, cache, sample + ": naming rules");
         const model::InstanceId last = ids.back();
-        model::TemplateInstance removed = guide.takeInstance(last);
+        std::optional<model::TemplateInstance> taken = guide.takeInstance(last);
+        ASSERT_TRUE(taken.has_value());
+        model::TemplateInstance removed = std::move(*taken);
         buildAndCompare(guide, cache, sample + ": removed");
         if (removed.parent != model::kNoId) {
             const model::TemplateInstance& top = guide.instances().front();

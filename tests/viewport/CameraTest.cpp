@@ -47,3 +47,38 @@ TEST(Camera, FramesABoxInsideTheView)
             EXPECT_LT(pixel.y, 500);
         }
 }
+
+// Frame All on a standing figure (a column, outstretched arms, a ground ring
+// reaching towards the camera) fills 90% of the view, not the smaller share
+// its bounding box's corners would leave.
+TEST(Camera, FramesPointsToFillNinetyPercentOfTheView)
+{
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i <= 18; ++i)
+        points.emplace_back(0.0, 0.1 * i, 0.0);
+    for (int i = -8; i <= 8; ++i)
+        points.emplace_back(0.1 * i, 1.4, 0.0);
+    for (int i = 0; i < 32; ++i)
+        points.emplace_back(0.5 * std::cos(i * 0.19635), 0.0, 0.5 * std::sin(i * 0.19635));
+    const int width = 798, height = 694;
+    for (const bool ortho : {false, true}) {
+        Camera camera;
+        camera.orthographic = ortho;
+        camera.frame(points, double(width) / height);
+        const glm::dmat4 vp = camera.projectionMatrix(double(width) / height) * camera.viewMatrix();
+        glm::dvec2 lo(1e9), hi(-1e9);
+        for (const glm::dvec3& p : points) {
+            glm::dvec2 pixel;
+            ASSERT_TRUE(projectToPixels(vp, p, width, height, pixel));
+            lo = glm::min(lo, pixel);
+            hi = glm::max(hi, pixel);
+        }
+        EXPECT_GE(lo.x, 0.0);
+        EXPECT_GE(lo.y, 0.0);
+        EXPECT_LE(hi.x, width);
+        EXPECT_LE(hi.y, height);
+        const double fill = std::max((hi.x - lo.x) / width, (hi.y - lo.y) / height);
+        EXPECT_GT(fill, 0.85) << (ortho ? "orthographic" : "perspective");
+        EXPECT_LT(fill, 0.92) << (ortho ? "orthographic" : "perspective");
+    }
+}
