@@ -52,6 +52,20 @@ struct Best {
     }
 };
 
+// nanoflann's result-set interface over Best (seeded with what the grid found).
+struct SeededResult {
+    Best& best;
+    std::size_t size() const { return std::size_t(best.size); }
+    bool full() const { return best.size == best.k; }
+    bool addPoint(float d2, std::uint32_t i)
+    {
+        if (d2 < best.worst() && std::find(best.index, best.index + best.size, i) == best.index + best.size)
+            best.offer(i, d2); // (the grid may have found it already)
+        return true;
+    }
+    float worstDist() const { return best.worst(); }
+};
+
 } // namespace
 
 struct NearestPoints::Impl {
@@ -190,10 +204,10 @@ int NearestPoints::nearest(const glm::vec3& q, int k, std::uint32_t* index, floa
         g.tree = std::make_unique<Tree>(3, g.cloud, nanoflann::KDTreeSingleIndexAdaptorParams(12));
         g.tree->buildIndex();
     });
-    nanoflann::KNNResultSet<float, std::uint32_t> found{std::size_t(k)};
-    found.init(index, distance2);
+    // The tree starts from the grid's candidates: their distance bounds its search.
+    SeededResult found{best};
     g.tree->findNeighbors(found, &q.x, nanoflann::SearchParams());
-    return int(found.size());
+    return best.size;
 }
 
 } // namespace rs::skin
