@@ -17,6 +17,7 @@ PACKAGES=(
   libgl-dev libepoxy-dev libglfw3-dev libgl1-mesa-dri
   libyaml-cpp-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libassimp-dev
   libeigen3-dev libembree-dev libtbb-dev libnanoflann-dev libsuitesparse-dev libopenblas0-serial
+  libjemalloc-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )

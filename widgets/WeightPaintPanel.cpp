@@ -201,6 +201,11 @@ void WeightPaintPanel::setStrength(double strength) { m_strength->setValue(stren
 
 void WeightPaintPanel::showJoints(const std::vector<JointRow>& joints, int current)
 {
+    if (joints == m_shownJoints) { // a rebuild that kept the skin joints (a guide drag): the rows stand
+        setCurrentJoint(current);
+        return;
+    }
+    m_shownJoints = joints;
     m_updating = true;
     m_joints->clear();
     for (const JointRow& joint : joints) {

@@ -32,6 +32,7 @@ public:
     struct JointRow {
         QString name;
         bool locked = false;
+        bool operator==(const JointRow&) const = default;
     };
 
     explicit WeightPaintPanel(QWidget* parent = nullptr);
@@ -77,6 +78,7 @@ private:
     QComboBox* m_falloff = nullptr;
     QComboBox* m_reach = nullptr;
     QTreeWidget* m_joints = nullptr;
+    std::vector<JointRow> m_shownJoints; // what m_joints lists
     QDoubleSpinBox* m_pruneBelow = nullptr;
     QSpinBox* m_limitCount = nullptr;
     bool m_updating = false; // filling the joint list: no requests

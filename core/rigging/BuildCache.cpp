@@ -32,6 +32,7 @@ void BuildCache::Impl::begin(const templates::TemplateRegistry& library, const B
 {
     if (templates != &library || builders != &registry || !(naming == rules)) {
         fragments.clear();
+        shapeSamples.clear();
         templates = &library;
         builders = &registry;
         naming = rules;

@@ -6,6 +6,7 @@
 // fragment can be replayed where the rig's numbering has moved.
 #include "rigging/BranchStage.h"
 #include "rigging/BuildCache.h"
+#include "rigging/RigAssembly.h"
 #include "model/Rig.h"
 #include "templates/TemplateRegistry.h"
 
@@ -61,6 +62,8 @@ struct BuildCache::Impl {
     std::map<CopyKey, Fragment> fragments;
     Stats stats;
     std::optional<Result<eval::RigProgram>> program;
+    std::size_t lastNodeCount = 0; // the last build's: the next one reserves as much
+    ShapeSamples shapeSamples;     // the library's shapes, sampled once
 
     // Drops everything when the library, builders or naming rules differ from the last build's.
     void begin(const templates::TemplateRegistry& library, const BuilderRegistry& registry, const model::NamingRules& rules);

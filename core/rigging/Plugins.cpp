@@ -2,7 +2,7 @@
 #include "rigging/RigAssembly.h"
 #include "eval/RigProgram.h"
 
-#include <cctype>
+#include <algorithm>
 #include <map>
 
 namespace rs::rigging {
@@ -53,29 +53,39 @@ public:
     const char* name() const override { return "naming checks"; }
     void finalize(RigAssembly& a) const override
     {
-        std::map<std::string, std::vector<std::string>> ids;
-        for (const auto& n : a.rig.nodes) {
-            ids[n.name].push_back(n.path);
-            if (&n != &a.rig.nodes.front() && !portable(n.name))
+        // Node indices by name (then by index): a clash is a run of equal names.
+        // Sorting indices is cheaper than a map of names (this runs on every live rebuild).
+        std::vector<model::RigNodeIndex> byName(a.rig.nodes.size());
+        for (model::RigNodeIndex i = 0; i < byName.size(); ++i) {
+            byName[i] = i;
+            const auto& n = a.rig.nodes[i];
+            if (i != 0 && !portable(n.name))
                 a.report(Severity::Warning, nullptr, "node name '" + n.name + "' (" + n.path +
                                                          ") is not portable: use letters, digits and '_', not starting with a digit");
         }
-        for (const auto& [nodeName, owners] : ids)
-            if (owners.size() > 1) {
-                std::string list;
-                for (const auto& id : owners)
-                    list += (list.empty() ? "" : ", ") + id;
-                a.report(Severity::Error, nullptr, "name clash: '" + nodeName + "' is used by " + list);
-            }
+        const auto& nodes = a.rig.nodes;
+        std::stable_sort(byName.begin(), byName.end(),
+                         [&](model::RigNodeIndex x, model::RigNodeIndex y) { return nodes[x].name < nodes[y].name; });
+        for (std::size_t first = 0, last = 0; first < byName.size(); first = last) {
+            for (last = first + 1; last < byName.size() && nodes[byName[last]].name == nodes[byName[first]].name;)
+                ++last;
+            if (last - first < 2)
+                continue;
+            std::string list;
+            for (std::size_t k = first; k < last; ++k)
+                list += (list.empty() ? "" : ", ") + nodes[byName[k]].path;
+            a.report(Severity::Error, nullptr, "name clash: '" + nodes[byName[first]].name + "' is used by " + list);
+        }
     }
 
 private:
     static bool portable(const std::string& text)
     {
-        if (text.empty() || std::isdigit(static_cast<unsigned char>(text.front())))
+        auto digit = [](char c) { return c >= '0' && c <= '9'; }; // ASCII, whatever the locale
+        if (text.empty() || digit(text.front()))
             return false;
         for (char c : text)
-            if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+            if (!digit(c) && !(c >= 'a' && c <= 'z') && !(c >= 'A' && c <= 'Z') && c != '_')
                 return false;
         return true;
     }

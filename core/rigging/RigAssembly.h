@@ -92,8 +92,16 @@ struct RigAssembly {
 using NodesByInstance = std::map<CopyKey, std::vector<model::RigNodeIndex>>;
 NodesByInstance indexNodesByInstance(const model::Rig& rig);
 
+// The library's shapes sampled as polylines. A BuildCache keeps them across
+// live rebuilds (the library stays; see BuildCache::Impl::begin).
+struct SampledShape {
+    std::vector<std::vector<Vec3>> curves;
+    double extent = 0.0;
+};
+using ShapeSamples = std::map<const templates::Shape*, SampledShape>;
+
 // Stages run by buildRig after generation.
-void applyShapes(RigAssembly& assembly);
+void applyShapes(RigAssembly& assembly, ShapeSamples& samples);
 void buildVirtualHierarchy(RigAssembly& assembly);
 
 // Cross-cutting work after every instance is built (Rigify's generator plugins):

@@ -310,6 +310,10 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     const ExpandedGuide expanded = expandBranches(guide, templates, branchDiagnostics);
     RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     a.rig.diagnostics = branchDiagnostics;
+    if (cache && cache->lastNodeCount > 0) { // no rehashing while a live rebuild adds the same nodes again
+        a.rig.nodes.reserve(cache->lastNodeCount);
+        a.rig.byKey.reserve(cache->lastNodeCount);
+    }
     a.indexGuide();
     model::RigNode root;
     root.key = {model::kNoId, {}, "rig"};
@@ -414,14 +418,17 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
         if (a.rig.nodes[i].parent == kNoNode)
             a.rig.nodes[i].parent = 0;
-    applyShapes(a);
+    ShapeSamples samples; // a build without a cache samples its shapes once
+    applyShapes(a, cache ? cache->shapeSamples : samples);
     buildVirtualHierarchy(a);
     computeLocalMatrices(a.rig);
     for (const auto& plugin : builtinPlugins())
         plugin->finalize(a);
     reportOrphanRecords(guide, a.rig);
-    if (cache)
+    if (cache) {
         cache->program = std::move(a.program);
+        cache->lastNodeCount = a.rig.nodes.size();
+    }
     report(1.0, "done");
     return std::move(a.rig);
 }

@@ -66,12 +66,7 @@ Match findSpec(const templates::TemplateManifest& manifest, const std::string& t
     return wildcard;
 }
 
-// A library shape sampled once per build: polylines and their largest extent.
-struct SampledShape {
-    std::vector<std::vector<Vec3>> curves;
-    double extent = 0.0;
-};
-
+// A library shape sampled as polylines, with their largest extent.
 SampledShape sample(const templates::Shape& shape)
 {
     SampledShape out;
@@ -356,10 +351,9 @@ void applyShapeEdits(RigAssembly& a, const std::map<CopyKey, const InstanceRecor
 
 } // namespace
 
-void applyShapes(RigAssembly& a)
+void applyShapes(RigAssembly& a, ShapeSamples& sampled)
 {
     std::map<CopyKey, const InstanceRecord*> records; // by instance copy
-    std::map<const templates::Shape*, SampledShape> sampled;
     std::vector<PendingClone> clones;
     for (const auto& r : a.records)
         records[a.copyOf(r.instance->id).key()] = &r;
