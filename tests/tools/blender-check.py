@@ -66,7 +66,7 @@ def check_animation(arm):
     actions = [a.name for a in bpy.data.actions]
     action = arm.animation_data.action if arm.animation_data else None
     for clip in reference.get('clips', []):
-        if not any(name.endswith(clip['name']) for name in actions):
+        if not any(clip['name'] in name for name in actions):
             failures.append(f"no action for clip {clip['name']} (actions: {actions})")
     if action is None or not action.fcurves:
         failures.append(f'the armature has no action with curves (actions: {actions})')
