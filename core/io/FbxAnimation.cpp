@@ -114,7 +114,8 @@ void addClips(Document& doc, const ExportScene& scene, const ModelIds& ids, Node
         propertyTime(p70, "LocalStop", stop);
         propertyTime(p70, "ReferenceStart", start);
         propertyTime(p70, "ReferenceStop", stop);
-        doc.addObject("AnimationLayer", layer, "BaseLayer", "AnimLayer", "");
+        // An (empty) nested list: Assimp drops a layer without one, and with it the clip.
+        doc.addObject("AnimationLayer", layer, "BaseLayer", "AnimLayer", "").child("Properties70");
         doc.connect(layer, stack);
         for (const ExportTrack& track : clip.tracks) {
             const std::size_t node = std::size_t(track.node);

@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
@@ -305,4 +307,66 @@ TEST(FbxExport, APosedExportKeepsItsBindPoseInTheClustersAndThePose)
             }
         }
     }
+}
+
+// No sample's range of motion scales a joint, so a scale clip is made here:
+// the biped's clip with its most turning joint also scaled up to 1.5 and back. Assimp must read
+// it as scaling keys; the files also go to $RIGSMITH_SCALE_CLIP_DIR when set,
+// for the Blender check (ctest Export.ScaleClip.Blender).
+TEST(FbxExport, AScaleClipReachesAssimpOnLclScaling)
+{
+    io::ExportOptions options;
+    options.rangeOfMotion = true;
+    auto prepared = io::prepareExport(biped(), options);
+    ASSERT_TRUE(prepared.scene);
+    io::ExportScene scene = std::move(*prepared.scene);
+    // The joint that turns most during the clip.
+    io::ExportTrack* turning = &scene.clips[0].tracks[0];
+    double mostTurn = 0.0;
+    for (auto& candidate : scene.clips[0].tracks)
+        for (const Quat& r : candidate.rotations)
+            if (const double turn = 1.0 - std::abs(glm::dot(r, candidate.rotations[0])); turn > mostTurn) {
+                mostTurn = turn;
+                turning = &candidate;
+            }
+    io::ExportTrack& track = *turning;
+    ASSERT_GT(mostTurn, 0.01);
+    const std::string name = scene.joints[std::size_t(track.node)].name;
+    for (std::size_t k = 0; k < track.scales.size(); ++k)
+        track.scales[k] = Vec3(1.0 + 0.5 * std::sin(3.14159265358979 * double(k) / double(track.scales.size() - 1)));
+    const char* dir = std::getenv("RIGSMITH_SCALE_CLIP_DIR");
+    if (dir)
+        std::filesystem::create_directories(dir);
+    const std::string path = dir ? std::string(dir) + "/scale-clip.fbx" : test::temporaryPath("scale-clip.fbx");
+    ASSERT_TRUE(io::writeFbx(scene, path, {}).empty());
+    std::ofstream(path.substr(0, path.size() - 4) + ".json") << io::exportReferenceJson(scene);
+
+    const test::FbxFile file = test::readFbx(readBytes(path));
+    ASSERT_TRUE(file.error.empty()) << file.error;
+    const Objects objects(file);
+    std::set<std::string> scaledModels;
+    for (const auto& [child, link] : objects.parents)
+        if (link.second == "Lcl Scaling")
+            scaledModels.insert(test::fbxObjectName(*objects.byId.at(link.first)));
+    EXPECT_EQ(scaledModels, std::set<std::string>{name});
+
+    Assimp::Importer importer;
+    const aiScene* ai = importer.ReadFile(path, 0);
+    ASSERT_NE(ai, nullptr) << importer.GetErrorString();
+    ASSERT_GE(ai->mNumAnimations, 1u);
+    double largest = 0.0;
+    for (unsigned c = 0; c < ai->mAnimations[0]->mNumChannels; ++c) {
+        const aiNodeAnim& channel = *ai->mAnimations[0]->mChannels[c];
+        if (std::string(channel.mNodeName.C_Str()) != name)
+            continue;
+        for (unsigned k = 0; k < channel.mNumScalingKeys; ++k)
+            largest = std::max(largest, double(channel.mScalingKeys[k].mValue.x));
+        // The Euler curves give back the sampled rotations at the keys.
+        ASSERT_EQ(channel.mNumRotationKeys, track.rotations.size());
+        for (unsigned k = 0; k < channel.mNumRotationKeys; ++k) {
+            const aiQuaternion& q = channel.mRotationKeys[k].mValue;
+            EXPECT_GT(std::abs(glm::dot(Quat(q.w, q.x, q.y, q.z), track.rotations[k])), 1.0 - 1e-6) << "key " << k;
+        }
+    }
+    EXPECT_NEAR(largest, 1.5, 1e-3) << name << "'s scale keys";
 }
