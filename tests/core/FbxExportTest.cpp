@@ -224,6 +224,23 @@ TEST(FbxExport, RangeOfMotionAnimatesLclScalingOnlyWhereScaleChanges)
         }
     }
     EXPECT_GT(curves, 0u);
+    const auto nulls = objects.ofKind("Model", "Null");
+    ASSERT_EQ(nulls.size(), scene.controllers.size());
+    for (const auto* model : nulls) {
+        std::map<std::string, std::string> user;
+        for (const auto& p : model->find("Properties70")->children)
+            if (p.properties.at(3).text == "U")
+                user[p.properties[0].text] = p.properties.at(4).text;
+        EXPECT_EQ(user["rig_kind"], "controller") << test::fbxObjectName(*model);
+        EXPECT_FALSE(user["rig_id"].empty()) << test::fbxObjectName(*model);
+    }
+    std::map<std::string, double> defined, counted;
+    for (const auto* type : file.find("Definitions")->all("ObjectType"))
+        defined[type->properties[0].text] = double(type->find("Count")->properties[0].integer);
+    for (const auto& object : file.find("Objects")->children)
+        ++counted[object.name];
+    counted["GlobalSettings"] = 1;
+    EXPECT_EQ(defined, counted) << "Definitions count every object kind";
     for (const auto& [model, properties] : animated)
         for (const auto& property : properties)
             EXPECT_TRUE(property == "Lcl Translation" || property == "Lcl Rotation" || property == "Lcl Scaling")
@@ -310,10 +327,13 @@ TEST(FbxExport, APosedExportKeepsItsBindPoseInTheClustersAndThePose)
 }
 
 // No sample's range of motion scales a joint, so a scale clip is made here:
-// the biped's clip with its most turning joint also scaled up to 1.5 and back. Assimp must read
-// it as scaling keys; the files also go to $RIGSMITH_SCALE_CLIP_DIR when set,
-// for the Blender check (ctest Export.ScaleClip.Blender).
-TEST(FbxExport, AScaleClipReachesAssimpOnLclScaling)
+// the biped's clip with its most turning joint also scaled up to 1.5 and back,
+// and the nodes posed (a spine joint turned) away from the bind pose. Assimp
+// must read scaling keys and the rotations; the files also go to
+// $RIGSMITH_SCALE_CLIP_DIR when set, for the Blender check (ctest
+// Export.ScaleClip.Blender: the rest pose is the BindPose's, not the posed
+// nodes', since the file has no mesh and no clusters).
+TEST(FbxExport, APosedScaleClipReachesAssimp)
 {
     io::ExportOptions options;
     options.rangeOfMotion = true;
@@ -334,6 +354,7 @@ TEST(FbxExport, AScaleClipReachesAssimpOnLclScaling)
     const std::string name = scene.joints[std::size_t(track.node)].name;
     for (std::size_t k = 0; k < track.scales.size(); ++k)
         track.scales[k] = Vec3(1.0 + 0.5 * std::sin(3.14159265358979 * double(k) / double(track.scales.size() - 1)));
+    scene.joints[2].poseLocal = scene.joints[2].bindLocal * rotationMatrix(Vec3(0, 0, 1), 0.5);
     const char* dir = std::getenv("RIGSMITH_SCALE_CLIP_DIR");
     if (dir)
         std::filesystem::create_directories(dir);
@@ -349,6 +370,7 @@ TEST(FbxExport, AScaleClipReachesAssimpOnLclScaling)
         if (link.second == "Lcl Scaling")
             scaledModels.insert(test::fbxObjectName(*objects.byId.at(link.first)));
     EXPECT_EQ(scaledModels, std::set<std::string>{name});
+    EXPECT_EQ(objects.ofKind("Deformer", "Cluster").size(), 0u);
 
     Assimp::Importer importer;
     const aiScene* ai = importer.ReadFile(path, 0);
