@@ -392,3 +392,25 @@ TEST(FbxExport, APosedScaleClipReachesAssimp)
     }
     EXPECT_NEAR(largest, 1.5, 1e-3) << name << "'s scale keys";
 }
+
+TEST(FbxExport, Version75FilesWithWideOffsetsReadBack)
+{
+    const std::vector<io::SkinnedMesh> meshes{io::proxyMesh(*model::extractSkeleton(biped()), 2000)};
+    io::ExportOptions options;
+    options.meshes = &meshes;
+    auto prepared = io::prepareExport(biped(), options);
+    ASSERT_TRUE(prepared.scene);
+    io::FbxWriteOptions wide;
+    wide.version = 7500;
+    const auto bytes = io::fbxBytes(*prepared.scene, {}, wide);
+    ASSERT_TRUE(bytes);
+    const test::FbxFile file = test::readFbx(*bytes);
+    ASSERT_TRUE(file.error.empty()) << file.error;
+    EXPECT_EQ(file.version, 7500u);
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFileFromMemory(bytes->data(), bytes->size(), 0, "fbx");
+    ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+    EXPECT_EQ(scene->mNumMeshes, 1u);
+    wide.version = 7300;
+    EXPECT_FALSE(io::fbxBytes(*prepared.scene, {}, wide)) << "only 7400 and 7500 are written";
+}
