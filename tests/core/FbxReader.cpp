@@ -1,6 +1,8 @@
 #include "core/FbxReader.h"
 
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace rs::test {
@@ -161,6 +163,32 @@ std::string fbxObjectName(const FbxRecord& object)
 {
     const std::string& full = object.properties.at(1).text;
     return full.substr(0, full.find(std::string("\0\x01", 2)));
+}
+
+FbxObjects::FbxObjects(const FbxFile& file)
+{
+    for (const auto& o : file.find("Objects")->children)
+        byId[o.properties.at(0).integer] = &o;
+    for (const auto* c : file.find("Connections")->all("C"))
+        parents.emplace(c->properties[1].integer,
+                        std::pair{c->properties[2].integer, c->properties.size() > 3 ? c->properties[3].text : ""});
+}
+
+std::vector<const FbxRecord*> FbxObjects::ofKind(const std::string& kind, const std::string& type) const
+{
+    std::vector<const FbxRecord*> out;
+    for (const auto& [id, o] : byId)
+        if (o->name == kind && o->properties.at(2).text == type)
+            out.push_back(o);
+    return out;
+}
+
+std::string readFileBytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream out;
+    out << in.rdbuf();
+    return out.str();
 }
 
 } // namespace rs::test

@@ -4,6 +4,7 @@
 // list ends with a null record where the format wants one and that the
 // footer is laid out as readers expect. Arrays come back as doubles.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,5 +39,17 @@ FbxFile readFbx(const std::string& bytes);
 
 // "name\x00\x01Class" -> "name".
 std::string fbxObjectName(const FbxRecord& object);
+
+// A file's Objects by id, and its Connections child -> (parent, property).
+struct FbxObjects {
+    std::map<std::int64_t, const FbxRecord*> byId;
+    std::multimap<std::int64_t, std::pair<std::int64_t, std::string>> parents;
+
+    explicit FbxObjects(const FbxFile& file);
+    // Objects of a record kind ("Model") and type ("LimbNode").
+    std::vector<const FbxRecord*> ofKind(const std::string& kind, const std::string& type) const;
+};
+
+std::string readFileBytes(const std::string& path);
 
 } // namespace rs::test
