@@ -340,8 +340,21 @@ std::string exportReferenceJson(const ExportScene& scene)
         }
         meshes.push_back({{"name", mesh.name}, {"vertices", std::move(vertices)}});
     }
+    // Per clip, the joints whose scale changes during it (consumers check scale curves against it).
+    json clips = json::array();
+    for (const auto& clip : scene.clips) {
+        json scaled = json::array();
+        for (const auto& track : clip.tracks) {
+            bool changes = false;
+            for (const auto& s : track.scales)
+                changes = changes || glm::length(s - track.scales.front()) > 1e-5;
+            if (changes && !track.controller)
+                scaled.push_back(scene.joints[std::size_t(track.node)].name);
+        }
+        clips.push_back({{"name", clip.name}, {"seconds", clip.times.empty() ? 0.0 : clip.times.back()}, {"scaled", std::move(scaled)}});
+    }
     // A forced export may carry names that are not UTF-8: replaced, never thrown.
-    return json{{"joints", std::move(joints)}, {"meshes", std::move(meshes)}}.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+    return json{{"joints", std::move(joints)}, {"meshes", std::move(meshes)}, {"clips", std::move(clips)}}.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 } // namespace rs::io

@@ -57,6 +57,7 @@ struct ExportOptions {
     const std::vector<SkinnedMesh>* meshes = nullptr; // bound meshes (bind pose, world space)
     const std::vector<ExportMaterial>* materials = nullptr; // what the meshes' `material` indexes
     std::string generator = "Rigsmith";
+    bool stampTime = false;                       // FBX: the real time in the header (else fixed: byte-identical files)
     // Called with the fraction done (0..1); returning false cancels the export.
     std::function<bool(double)> progress;
 };
@@ -121,7 +122,8 @@ ExportScene converted(ExportScene scene, const Convention& convention);
 
 // What the export holds, in the rig's convention, as JSON for the consumer
 // checks (tests/tools): joints with name, parent and head, and each mesh's
-// vertices with their weights by joint name.
+// vertices with their weights by joint name, and each clip's name, length in
+// seconds and the joints whose scale changes in it.
 std::string exportReferenceJson(const ExportScene& scene);
 
 } // namespace rs::io

@@ -57,7 +57,11 @@ Diagnostics exportRigOrThrow(const model::Rig& rig, const std::string& path, con
     const bool fbx = *format == ExportFormat::Fbx;
     const Convention convention = conventionFor(options.preset, fbx);
     const ExportScene scene = converted(std::move(*prepared.scene), convention);
-    Diagnostics written = fbx ? writeFbx(scene, path, convention) : writeGltf(scene, path, options.generator);
+    FbxWriteOptions fbxOptions;
+    fbxOptions.generator = options.generator;
+    if (options.stampTime)
+        fbxOptions.creationTime = std::time(nullptr);
+    Diagnostics written = fbx ? writeFbx(scene, path, convention, fbxOptions) : writeGltf(scene, path, options.generator);
     prepared.report.insert(prepared.report.end(), written.begin(), written.end());
     progress(1.0);
     return prepared.report;

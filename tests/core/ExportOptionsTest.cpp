@@ -1,8 +1,7 @@
-// Issue 6's export options, presets, mesh validation and the FBX repair.
+// Issue 6's export options, presets and mesh validation.
 #include "rigging/RigBuilder.h"
 #include "core/TestSupport.h"
 #include "io/FbxExport.h"
-#include "io/FbxRepair.h"
 #include "io/RigExport.h"
 #include "model/Skeleton.h"
 
@@ -243,32 +242,4 @@ TEST(RigExport, UnknownExtensionsAreRefused)
     const Diagnostics d = io::exportRig(biped(), "rig.obj");
     ASSERT_EQ(d.size(), 1u);
     EXPECT_EQ(d[0].format(), "rig.obj: error: unknown export format: use .glb, .gltf or .fbx");
-}
-
-TEST(FbxRepair, AssimpsFbxIsRejectedUntilRepairedAndTheRepairIsIdempotent)
-{
-    const std::vector<io::SkinnedMesh> meshes{io::proxyMesh(*model::extractSkeleton(biped()), 2000)};
-    io::ExportOptions options;
-    options.meshes = &meshes;
-    auto prepared = io::prepareExport(biped(), options);
-    ASSERT_TRUE(prepared.scene);
-    const auto raw = io::assimpFbxBytes(*prepared.scene, {});
-    ASSERT_TRUE(raw);
-    Assimp::Importer importer;
-    EXPECT_EQ(importer.ReadFileFromMemory(raw->data(), raw->size(), 0, "fbx"), nullptr)
-        << "Assimp 5.2.5's own binary FBX misses its null records";
-    const auto repaired = io::repairFbxNullRecords(*raw);
-    ASSERT_TRUE(repaired);
-    EXPECT_GT(repaired->size(), raw->size());
-    const aiScene* scene = importer.ReadFileFromMemory(repaired->data(), repaired->size(), 0, "fbx");
-    ASSERT_NE(scene, nullptr) << importer.GetErrorString();
-    EXPECT_EQ(scene->mNumMeshes, 1u);
-    const auto again = io::repairFbxNullRecords(*repaired);
-    ASSERT_TRUE(again);
-    EXPECT_EQ(*again, *repaired);
-    EXPECT_EQ((repaired->size() - 140) % 16, 0u) << "the footer's version stays 16-byte aligned";
-
-    const auto notFbx = io::repairFbxNullRecords("glTF");
-    ASSERT_FALSE(notFbx);
-    EXPECT_EQ(notFbx.diagnostics()[0].message, "not a binary FBX file");
 }

@@ -4,7 +4,12 @@
 # exactly one armature with one root bone, the same joint names and parents,
 # bone heads within 1e-4 m, and for every bound mesh each vertex's position and
 # weights (by joint name) within 1e-4 of the reference vertex at that place.
-# usage: blender -b --factory-startup --python blender-check.py -- FILE REFERENCE.json
+# Options: --unit-scale S: the armature object's scale must be S (1 for a file in
+# metres, 0.01 for centimetres); --animated: an action for each of the
+# reference's clips, on the armature, whose bone scale curves move exactly for
+# the joints the reference lists as scaled (constant ones may exist: Blender
+# keys location, rotation and scale of every animated bone).
+# usage: blender -b --factory-startup --python blender-check.py -- FILE REFERENCE.json [--unit-scale S] [--animated]
 import json
 import sys
 
@@ -18,6 +23,8 @@ from mathutils.kdtree import KDTree
 TOLERANCE = 1e-4
 args = sys.argv[sys.argv.index('--') + 1:]
 path, reference_path = args[0], args[1]
+unit_scale = float(args[args.index('--unit-scale') + 1]) if '--unit-scale' in args else None
+animated = '--animated' in args
 reference = json.load(open(reference_path))
 failures = []
 
@@ -48,6 +55,35 @@ def check_armature(arm):
         if error > TOLERANCE:
             failures.append(f"{joint['name']}: head off by {error:.6f} m")
     print(f'CHECK {path}: {len(bones)} bones, root {roots}, worst head error {worst:.2e} m')
+    if unit_scale is not None:
+        scale = arm.matrix_world.to_scale()
+        print(f'CHECK {path}: armature scale {tuple(round(c, 6) for c in scale)}')
+        if max(abs(c - unit_scale) for c in scale) > 1e-6:
+            failures.append(f'armature scale {tuple(scale)}, expected {unit_scale}')
+
+
+def check_animation(arm):
+    actions = [a.name for a in bpy.data.actions]
+    action = arm.animation_data.action if arm.animation_data else None
+    for clip in reference.get('clips', []):
+        if not any(clip['name'] in name for name in actions):
+            failures.append(f"no action for clip {clip['name']} (actions: {actions})")
+    if action is None or not action.fcurves:
+        failures.append(f'the armature has no action with curves (actions: {actions})')
+        return
+    scaled = set(n for clip in reference.get('clips', []) for n in clip['scaled'])
+    moving = set()
+    for fc in action.fcurves:
+        if fc.data_path.endswith('.scale') and fc.data_path.startswith('pose.bones["'):
+            values = [k.co[1] for k in fc.keyframe_points]
+            if values and max(values) - min(values) > 1e-4:
+                moving.add(fc.data_path[len('pose.bones["'):-len('"].scale')])
+    first, last = action.frame_range
+    print(f'CHECK {path}: action {action.name}: {len(action.fcurves)} curves, frames {first:g}-{last:g}, '
+          f'scale moves on {len(moving)} bones (reference: {len(scaled)})')
+    if moving != scaled:
+        failures.append(f'scale moves on {sorted(moving - scaled)} but should not; '
+                        f'does not move on {sorted(scaled - moving)}')
 
 
 def check_mesh(obj, expected):
@@ -88,6 +124,8 @@ if len(armatures) != 1:
     failures.append(f'expected 1 armature, found {len(armatures)}')
 else:
     check_armature(armatures[0])
+    if animated:
+        check_animation(armatures[0])
 meshes = [o for o in bpy.data.objects if o.type == 'MESH']
 if len(meshes) != len(reference['meshes']):
     failures.append(f"expected {len(reference['meshes'])} meshes, found {len(meshes)}")
