@@ -220,11 +220,14 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
     animation.name = clip.name;
     std::vector<float> times(clip.times.begin(), clip.times.end());
     const int input = b.bounded(times, TINYGLTF_TYPE_SCALAR, 1);
-    auto channel = [&](int node, const char* path, std::vector<float> values, int type) {
+    int firstKey = -1; // the first time alone, for channels held constant (ExportTrack::held)
+    auto channel = [&](int node, const char* path, std::vector<float> values, int type, bool held) {
+        if (held && firstKey < 0)
+            firstKey = b.bounded({times.front()}, TINYGLTF_TYPE_SCALAR, 1);
         tinygltf::AnimationSampler sampler;
-        sampler.input = input;
+        sampler.input = held ? firstKey : input;
         sampler.interpolation = "LINEAR";
-        sampler.output = b.accessor(values, TINYGLTF_COMPONENT_TYPE_FLOAT, type, times.size());
+        sampler.output = b.accessor(values, TINYGLTF_COMPONENT_TYPE_FLOAT, type, held ? 1 : times.size());
         animation.samplers.push_back(sampler);
         tinygltf::AnimationChannel c;
         c.sampler = int(animation.samplers.size() - 1);
@@ -243,11 +246,36 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
             r.insert(r.end(), {float(q.x), float(q.y), float(q.z), float(q.w)});
             s.insert(s.end(), {float(sv.x), float(sv.y), float(sv.z)});
         }
-        channel(node, "translation", std::move(t), TINYGLTF_TYPE_VEC3);
-        channel(node, "rotation", std::move(r), TINYGLTF_TYPE_VEC4);
-        channel(node, "scale", std::move(s), TINYGLTF_TYPE_VEC3);
+        // Animated channels get every key, held ones their first, constant ones nothing.
+        auto write = [&](unsigned bit, const char* path, std::vector<float>& values, int type, std::size_t width) {
+            if (track.animated & bit)
+                channel(node, path, std::move(values), type, false);
+            else if (track.held & bit)
+                channel(node, path, std::vector<float>(values.begin(), values.begin() + std::ptrdiff_t(width)), type, true);
+        };
+        write(kTranslationChannel, "translation", t, TINYGLTF_TYPE_VEC3, 3);
+        write(kRotationChannel, "rotation", r, TINYGLTF_TYPE_VEC4, 4);
+        write(kScaleChannel, "scale", s, TINYGLTF_TYPE_VEC3, 3);
     }
-    m.animations.push_back(animation);
+    // The clip's frame rate and named ranges, for tools that read extras.
+    tinygltf::Value::Array markers;
+    for (const auto& marker : clip.markers) {
+        tinygltf::Value::Object o;
+        o["name"] = tinygltf::Value(marker.name);
+        o["control"] = tinygltf::Value(marker.control);
+        o["start"] = tinygltf::Value(marker.start);
+        o["end"] = tinygltf::Value(marker.end);
+        markers.push_back(tinygltf::Value(o));
+    }
+    tinygltf::Value::Object extras;
+    if (clip.framesPerSecond > 0.0)
+        extras["fps"] = tinygltf::Value(clip.framesPerSecond);
+    if (!markers.empty())
+        extras["markers"] = tinygltf::Value(markers);
+    if (!extras.empty())
+        animation.extras = tinygltf::Value(extras);
+    if (!animation.channels.empty())
+        m.animations.push_back(animation);
 }
 
 tinygltf::Model buildModel(const ExportScene& scene, const std::string& generator, Diagnostics& report)
