@@ -21,6 +21,7 @@ constexpr double kMaxStretch = 0.005;      // what a peak may add, relative
 constexpr double kMovesJoint = 1e-4;       // metres a motion must move some deform joint
 constexpr double kKeptShare = 0.1;         // a translation cut below this share of its nominal is left out
 constexpr int kBisections = 12;
+constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
 
 // An FK/IK switch: the blend constraints that share one weight channel.
 struct Switch {
@@ -361,6 +362,21 @@ struct Planner {
         return base;
     }
 
+    // The peaks, then back to `base`: through it between two peaks more than
+    // kWidestStep apart, so interpolation never takes a rotation the short way round.
+    void appendPeaks(std::vector<eval::Pose>& keys, std::vector<eval::Pose> found, const eval::Pose& base, int channel) const
+    {
+        const bool angle = program.channels()[std::size_t(channel)].transform < 0 ||
+                           program.channels()[std::size_t(channel)].transform >= 3;
+        for (std::size_t i = 0; i < found.size(); ++i) {
+            if (i > 0 && angle &&
+                std::abs(found[i][std::size_t(channel)] - keys.back()[std::size_t(channel)]) > kWidestStep)
+                keys.push_back(base);
+            keys.push_back(std::move(found[i]));
+        }
+        keys.push_back(base);
+    }
+
     // Keys for one control: its base, each channel's peaks with the base between them.
     std::vector<eval::Pose> motionOf(model::RigNodeIndex control, const eval::Pose& start)
     {
@@ -378,18 +394,12 @@ struct Planner {
                 auto freer = peaks(control, channel, loose, std::max(stretch(loose), kMaxStretch), looseJoints);
                 if (freer.size() > found.size()) {
                     keys.push_back(loose);
-                    for (auto& p : freer) {
-                        keys.push_back(std::move(p));
-                        keys.push_back(loose);
-                    }
+                    appendPeaks(keys, std::move(freer), loose, channel);
                     keys.push_back(base);
                     continue;
                 }
             }
-            for (auto& p : found) {
-                keys.push_back(std::move(p));
-                keys.push_back(base);
-            }
+            appendPeaks(keys, std::move(found), base, channel);
         }
         if (keys.empty())
             return keys;

@@ -26,9 +26,10 @@
 //    (the nodes an IK or spline constraint reads) with the chain in IK;
 //  - a motion that moves no deform joint is left out (no dead segments).
 // Keys sit `framesPerKey` frames apart on a grid of `framesPerSecond`; every
-// peak is a key, and a rotation never turns more than 90 degrees between two
-// keys (peak, start, opposite peak, start), so linear interpolation is exact
-// about the motion's axis.
+// peak is a key (peak, opposite peak, start), and a channel that would turn
+// more than 120 degrees from one key to the next goes through the start
+// between its peaks (peak, start, opposite peak, start), so interpolating
+// the joints' rotations never takes the wrong way round.
 #include "eval/RigProgram.h"
 #include "model/Rig.h"
 
