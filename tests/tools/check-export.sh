@@ -6,13 +6,15 @@
 #   validator: the Khronos glTF validator, 0 errors and 0 warnings (glTF files);
 #   blender:   headless Blender, one armature, one root, names, parents, heads and
 #              weights within 1e-4 of the export reference (every file).
-# usage: check-export.sh validator|blender CLI GUIDE OUTDIR PRESET
+# usage: check-export.sh validator|blender CLI GUIDE OUTDIR PRESET [BUILD OPTION...]
+# (BUILD OPTIONs go to every build: --force for a preset that refuses the rig)
 set -euo pipefail
 mode=$1 cli=$2 guide=$3 out=$4 preset=$5
+extra=("${@:6}")
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 name=$(basename "$guide" .yml)-$preset
-mesh=(--proxy-mesh 8000) # 6 rings a bone: weights like 0.7/0.3, not exact in binary
+mesh=(--proxy-mesh 8000 "${extra[@]}") # 6 rings a bone: weights like 0.7/0.3, not exact in binary
 "$cli" build "$guide" --preset "$preset" "${mesh[@]}" --reference "$out/$name.json" -o "$out/$name.glb"
 "$cli" build "$guide" --preset "$preset" "${mesh[@]}" -o "$out/$name.gltf"
 "$cli" build "$guide" --preset "$preset" "${mesh[@]}" --controllers --rom --current-pose -o "$out/$name-all.glb"
