@@ -61,7 +61,8 @@ Diagnostics checkUnityMap(const model::Rig& rig, const model::Skeleton& skeleton
     return {makeError({}, "preset unity: " + std::to_string(missing.size()) + " of " + std::to_string(bones) +
                               " Unity humanoid bones have no joint in this rig, so a humanoid avatar would map only part of "
                               "it and play its animation on the wrong joints: " + list +
-                              "; use --force to write it anyway, or a name map for this rig (--names MAP.yml)")};
+                              "; forcing the export writes it anyway (rigsmith-cli --force, or \"Export despite errors\" in the editor), "
+                              "or give a name map for this rig (--names MAP.yml)")};
 }
 
 Diagnostics validate(const model::Rig& rig, model::Skeleton& skeleton, std::vector<SkinnedMesh>& meshes,

@@ -1,6 +1,7 @@
 #include "io/RangeOfMotion.h"
 
 #include "eval/PoseTools.h"
+#include "io/StretchGauge.h"
 #include "model/Skeleton.h"
 
 #include <glm/geometric.hpp>
@@ -102,69 +103,6 @@ std::vector<int> drivingChannels(const model::Rig& rig, const eval::ChannelLayou
                     out.push_back(*channel);
     return out;
 }
-
-// What stretchOf measures, found once per rig.
-class StretchGauge {
-public:
-    StretchGauge(const model::Rig& rig, const eval::RigProgram& program)
-    {
-        const auto& layout = program.channels();
-        // Deform joints: the skin hierarchy's distance to the parent joint.
-        for (model::RigNodeIndex i = 0; i < rig.nodes.size(); ++i) {
-            const auto& node = rig.nodes[i];
-            if (node.kind != model::RigNodeKind::Joint || node.domain() != "skin" || node.virtualParent == model::kNoNode)
-                continue;
-            const double rest = glm::length(program.restWorld(i).translation - program.restWorld(node.virtualParent).translation);
-            if (rest >= 1e-4)
-                m_bones.push_back({i, node.virtualParent, rest});
-        }
-        // IK goals: within the chain's reach while the chain is blended in.
-        for (const auto& c : rig.constraints) {
-            if (!std::holds_alternative<model::IkConstraint>(c.settings) || c.driven.size() < 2 || c.targets.empty())
-                continue;
-            Reach r{c.targets[0], c.driven.front(), {}, 0.0, -1};
-            for (std::size_t k = 1; k < c.driven.size(); ++k)
-                r.length += glm::length(program.restWorld(c.driven[k]).translation - program.restWorld(c.driven[k - 1]).translation);
-            // The goal: where the effector asks the chain's end to be (its rest offset kept).
-            r.endInEffector = program.restWorld(c.targets[0]).inverse().apply(program.restWorld(c.driven.back()).translation);
-            for (const auto& b : rig.constraints)
-                if (const auto* blend = std::get_if<model::BlendConstraint>(&b.settings))
-                    if (b.targets.size() == 2 && std::find(c.driven.begin(), c.driven.end(), b.targets[1]) != c.driven.end())
-                        if (auto w = layout.find(blend->weight))
-                            r.weight = *w;
-            if (r.length >= 1e-6)
-                m_reaches.push_back(r);
-        }
-    }
-
-    double measure(const eval::Pose& pose, const eval::EvalState& state) const
-    {
-        double worst = -1.0;
-        for (const auto& b : m_bones)
-            worst = std::max(worst, glm::length(state.world[b.node].translation - state.world[b.parent].translation) / b.rest - 1.0);
-        for (const auto& r : m_reaches) {
-            if (r.weight >= 0 && pose[std::size_t(r.weight)] <= 1e-6)
-                continue;
-            const Vec3 goal = state.world[r.effector].apply(r.endInEffector);
-            worst = std::max(worst, glm::length(goal - state.world[r.root].translation) / r.length - 1.0);
-        }
-        return worst;
-    }
-
-private:
-    struct Bone {
-        model::RigNodeIndex node, parent;
-        double rest;
-    };
-    struct Reach {
-        model::RigNodeIndex effector, root;
-        Vec3 endInEffector;
-        double length;
-        int weight; // the blend weight that shows the chain, -1: always shown
-    };
-    std::vector<Bone> m_bones;
-    std::vector<Reach> m_reaches;
-};
 
 // What the planner evaluates with: the rig, its program, a scratch state.
 struct Planner {
@@ -387,12 +325,22 @@ struct Planner {
         std::vector<eval::Pose> keys;
         for (int channel : exercisedChannels(control)) {
             auto found = peaks(control, channel, base, limit, baseJoints);
-            if (!owned && found.size() < nominalOffsets(control, channel, base).size() && !switches.empty()) {
+            // How far the peaks go, in the channel's unit.
+            auto reach = [&](const std::vector<eval::Pose>& peaksFound, const eval::Pose& from) {
+                double sum = 0.0;
+                for (const auto& p : peaksFound)
+                    sum += std::abs(p[std::size_t(channel)] - from[std::size_t(channel)]);
+                return sum;
+            };
+            double nominal = 0.0;
+            for (double offset : nominalOffsets(control, channel, base))
+                nominal += std::abs(offset);
+            if (!owned && !switches.empty() && reach(found, base) < 0.999 * nominal) {
                 // Held back by limbs in IK: try the same move with every switched chain in FK.
                 const eval::Pose loose = allFk(base);
                 const auto looseJoints = deformPositions(loose);
                 auto freer = peaks(control, channel, loose, std::max(stretch(loose), kMaxStretch), looseJoints);
-                if (freer.size() > found.size()) {
+                if (reach(freer, loose) > reach(found, base) + 1e-6) {
                     keys.push_back(loose);
                     appendPeaks(keys, std::move(freer), loose, channel);
                     keys.push_back(base);

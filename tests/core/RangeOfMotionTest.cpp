@@ -5,6 +5,7 @@
 #include "eval/RigProgram.h"
 #include "io/RangeOfMotion.h"
 #include "io/RigExport.h"
+#include "model/Skeleton.h"
 #include "rigging/RigBuilder.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -139,7 +140,9 @@ TEST(RangeOfMotion, ExercisesFkControlsInFkAndSwitchesBackAfter)
     const eval::Pose start = program->channels().defaults();
     const io::RangeOfMotionPlan plan = io::planRangeOfMotion(rig, *program, start);
     // Every FK control of a switched chain: its keys have the chain's weight on FK, and the part ends on the start pose.
-    std::size_t checked = 0;
+    const auto skeleton = model::extractSkeleton(rig);
+    eval::EvalState before = program->makeState(), after = program->makeState();
+    std::size_t checked = 0, switched = 0;
     for (const auto& c : rig.constraints) {
         const auto* blend = std::get_if<model::BlendConstraint>(&c.settings);
         if (!blend || rig.nodes[c.targets[0]].kind != model::RigNodeKind::Controller)
@@ -151,8 +154,18 @@ TEST(RangeOfMotion, ExercisesFkControlsInFkAndSwitchesBackAfter)
             EXPECT_EQ(plan.keys[k][std::size_t(weight)], 0.0) << rig.nodes[c.targets[0]].path;
         EXPECT_EQ(plan.keys[part->lastKey], start);
         ++checked;
+        // The switch to FK moves no joint: FK was matched to where the chain was.
+        if (start[std::size_t(weight)] == 0.0)
+            continue; // already in FK: no switch
+        ++switched;
+        program->evaluate(plan.keys[part->firstKey], before);
+        program->evaluate(plan.keys[part->firstKey + 1], after);
+        for (const auto& joint : skeleton->joints)
+            EXPECT_LT(glm::length(translationOf(after.worldMatrix(joint.node)) - translationOf(before.worldMatrix(joint.node))), 1e-6)
+                << rig.nodes[c.targets[0]].path << " switching moves " << joint.name;
     }
     EXPECT_GE(checked, 10u);
+    EXPECT_GE(switched, 8u) << "the biped's arms and legs start in IK";
 }
 
 TEST(RangeOfMotion, StartsFromTheGuidesTestPoseAndSettings)
