@@ -63,7 +63,9 @@ RangeOfMotionPlan planRangeOfMotion(const model::Rig& rig, const eval::RigProgra
 
 // The largest relative stretch of the rig in `state`: max over deform joints
 // of (distance to parent / rest distance - 1) and over IK constraints of
-// (goal distance / chain reach - 1). What the plan keeps at or below 0.005.
+// (goal distance / chain reach - 1 + 0.005). What the plan keeps at or below
+// 0.005 (or the start pose's own measure when that is larger): joints 0.5%
+// longer at most, goals never past the chain's reach.
 // IK constraints count only while their chain is blended in (a blend weight
 // above 0, or no blend). `state` is the evaluation of `pose`.
 double stretchOf(const model::Rig& rig, const eval::RigProgram& program, const eval::Pose& pose, const eval::EvalState& state);

@@ -48,7 +48,7 @@ double StretchGauge::measure(const eval::Pose& pose, const eval::EvalState& stat
         if (r.weight >= 0 && pose[std::size_t(r.weight)] <= 1e-6)
             continue;
         const Vec3 goal = state.world[r.effector].apply(r.endInEffector);
-        worst = std::max(worst, glm::length(goal - state.world[r.root].translation) / r.length - 1.0);
+        worst = std::max(worst, glm::length(goal - state.world[r.root].translation) / r.length - 1.0 + kReachMargin);
     }
     return worst;
 }

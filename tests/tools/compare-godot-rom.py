@@ -85,9 +85,19 @@ def main():
             times = [x[0] for x in accessor(gltf, binary, s['input'])]
             channels[(c['target']['node'], c['target']['path'])] = (times, accessor(gltf, binary, s['output']))
         before = compared
+        # Nodes neither animated nor under an animated node: their world is computed once per clip.
+        moving = set()
+        for i in range(len(nodes)):
+            j = i
+            while j is not None:
+                if any((j, path) in channels for path in ('translation', 'rotation', 'scale')):
+                    moving.add(i)
+                    break
+                j = parent.get(j)
+        still = {}
         for k, frame in enumerate(frames):
             t = k * step
-            world = {}
+            world = dict(still)
             def world_of(i):
                 if i in world:
                     return world[i]
@@ -102,6 +112,8 @@ def main():
                         trs.append(n.get(path, default))
                 local = matrix(*trs)
                 world[i] = multiply(world_of(parent[i]), local) if i in parent else local
+                if i not in moving:
+                    still[i] = world[i]
                 return world[i]
             loose = {key(name): p for name, p in frame.items()}
             for i, n in enumerate(nodes):
