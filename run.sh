@@ -21,10 +21,11 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )
-# Used by the test suite only: real consumers of our exports, the meshes of
+# Used by the test suite only: real consumers of our exports (Blender, Godot 3's
+# headless server), the meshes of
 # assimp-testmodels (a human to bind), and clang with its runtime libraries
 # (libFuzzer, sanitizers) for the fuzz targets.
-TEST_PACKAGES=(blender python3-numpy assimp-testmodels clang libclang-rt-dev)
+TEST_PACKAGES=(blender python3-numpy assimp-testmodels clang libclang-rt-dev godot3-server)
 
 build_only=0
 editor_args=()

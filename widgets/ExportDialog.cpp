@@ -70,7 +70,8 @@ ExportDialog::ExportDialog(QWidget* parent) : QDialog(parent)
     m_controllers = checkBox(this, "exportControllers", tr("Include controllers"),
                              tr("Controllers as non-joint nodes tagged in extras ({\"rig\": {\"kind\": \"controller\"}})"));
     m_rangeOfMotion = checkBox(this, "exportRom", tr("Range-of-motion clip"),
-                               tr("An animation rotating each controller in turn, for checking deformations in the engine"));
+                               tr("An animation exercising each controller in turn from the test pose (FK in FK, IK goals "
+                                  "within reach, nothing stretched), for checking deformations in the engine"));
     m_currentPose = checkBox(this, "exportCurrentPose", tr("Include the current pose"),
                              tr("The pose on the nodes; the bind pose stays in the inverse bind matrices"));
     m_fixNames = checkBox(this, "exportFixNames", tr("Fix names"), tr("Apply the validator's safe renames"));
@@ -89,6 +90,18 @@ ExportDialog::ExportDialog(QWidget* parent) : QDialog(parent)
     m_proxyVertices->setSuffix(tr(" vertices"));
     m_proxyVertices->setToolTip(tr("Bind a generated test mesh (tubes along the bones) to check skinning in the engine"));
     form->addRow(tr("Test mesh"), m_proxyVertices);
+
+    m_framesPerSecond = new QSpinBox(this);
+    m_framesPerSecond->setObjectName("exportFps");
+    m_framesPerSecond->setRange(1, 1000);
+    m_framesPerSecond->setValue(30);
+    m_framesPerSecond->setSuffix(tr(" fps"));
+    m_framesPerSecond->setToolTip(tr("The range of motion's keys sit on whole frames at this rate"));
+    m_clipPerControl = checkBox(this, "exportClipPerControl", tr("One clip per controller"),
+                                tr("The range of motion as one clip per controller instead of one clip with a marker "
+                                   "per controller (engines that bake long clips drift, Godot 3 among them)"));
+    form->addRow(tr("Range of motion"), m_framesPerSecond);
+    form->addRow(QString(), m_clipPerControl);
 
     m_progress = new QProgressBar(this);
     m_progress->setObjectName("exportProgress");
@@ -110,7 +123,7 @@ ExportDialog::ExportDialog(QWidget* parent) : QDialog(parent)
     layout->addWidget(m_progress);
     layout->addWidget(m_report, 1);
     layout->addWidget(buttons);
-    resize(560, 560);
+    resize(560, 620);
 
     connect(browsePath, &QPushButton::clicked, this, &ExportDialog::browse);
     connect(browseNames, &QPushButton::clicked, this, &ExportDialog::browseNames);
@@ -137,6 +150,8 @@ io::ExportRequest ExportDialog::request() const
     r.fixWeights = m_fixWeights->isChecked();
     r.force = m_force->isChecked();
     r.proxyVertices = std::size_t(m_proxyVertices->value());
+    r.framesPerSecond = double(m_framesPerSecond->value());
+    r.clipPerControl = m_clipPerControl->isChecked();
     return r;
 }
 
@@ -151,6 +166,8 @@ void ExportDialog::showReport(const Diagnostics& report)
         lines << QString::fromStdString(d.format());
     if (!hasErrors(report))
         lines << tr("Exported %1").arg(m_path->text());
+    else if (!m_force->isChecked())
+        lines << tr("Not exported. \"Export despite errors\" writes it anyway, with these errors as warnings.");
     m_report->setPlainText(lines.join('\n'));
 }
 

@@ -2,8 +2,10 @@
 // The editor's Export dialog (issue 6): the same choices as
 // `rigsmith-cli build GUIDE -o OUT [--preset] [--controllers] [--rom] ...`
 // (a path whose extension picks .glb / .gltf / .fbx, the preset, a name map,
-// options, the validator's fixes and force), a progress bar and the report of
-// the last export. It does not export by itself: Export emits
+// options, the range of motion's frame rate and clips, the validator's fixes
+// and force), a progress bar and the report of the last export: a refused
+// export (a validator error, a preset that cannot map the rig) lists why and
+// says that "Export despite errors" writes it anyway. It does not export by itself: Export emits
 // exportRequested(request) and the owner runs it, calling setProgress() and
 // showReport().
 #include "base/Diagnostic.h"
@@ -49,6 +51,8 @@ private:
     QCheckBox* m_fixWeights = nullptr;
     QCheckBox* m_force = nullptr;
     QSpinBox* m_proxyVertices = nullptr;
+    QSpinBox* m_framesPerSecond = nullptr;
+    QCheckBox* m_clipPerControl = nullptr;
     QProgressBar* m_progress = nullptr;
     QPlainTextEdit* m_report = nullptr;
     QPushButton* m_export = nullptr;

@@ -38,10 +38,13 @@ std::string usage()
            "                          [-o OUT.glb|OUT.gltf|OUT.fbx] [--preset gltf|unreal|unity] [--controllers] [--rom]\n"
            "                          [--current-pose] [--names unity|MAP.yml] [--fix-names] [--fix-weights] [--force]\n"
            "                          [--proxy-mesh VERTICES] [--no-meshes] [--reference EXPORT.json]\n"
+           "                          [--fps FPS] [--rom-clips markers|per-control]\n"
            "       (--posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
            "        -o exports for engines: --preset gltf (Y-up metres), unreal (FBX Z-up centimetres, a root\n"
            "        joint at the origin), unity (humanoid names); --controllers adds the controllers as tagged\n"
-           "        nodes, --rom a range-of-motion clip, --current-pose the guide's pose on the nodes;\n"
+           "        nodes, --rom a range-of-motion clip from the guide's test pose (keys on whole frames at --fps,\n"
+           "        30 by default; a marker per controller, or one clip per controller with --rom-clips per-control),\n"
+           "        --current-pose the guide's pose on the nodes (with --posed the rig already is in it);\n"
            "        --names export names from a name map; the export validator's errors refuse -o unless\n"
            "        --force; --fix-names and --fix-weights apply its safe fixes; the guide's models' meshes are\n"
            "        exported with their weights (GUIDE.weights, from skin bind), normals, UVs and materials\n"
@@ -110,6 +113,21 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
         else if (a == "--rom") e.rangeOfMotion = true;
         else if (a == "--current-pose") e.currentPose = true;
         else if (a == "--no-meshes") b.meshes = false;
+        else if (a == "--fps" && hasValue) {
+            const auto fps = parseInteger(args[++i]);
+            if (!fps || *fps < 1 || *fps > 1000) {
+                std::cerr << "rigsmith-cli: --fps wants a whole frame rate from 1 to 1000, not '" << args[i] << "'\n";
+                return false;
+            }
+            e.framesPerSecond = double(*fps);
+        } else if (a == "--rom-clips" && hasValue) {
+            const std::string& layout = args[++i];
+            if (layout != "markers" && layout != "per-control") {
+                std::cerr << "rigsmith-cli: --rom-clips wants markers or per-control, not '" << layout << "'\n";
+                return false;
+            }
+            e.clipPerControl = layout == "per-control";
+        }
         else if (a == "--preset" && hasValue) {
             const auto preset = io::presetNamed(args[++i]);
             if (!preset) {
@@ -225,7 +243,11 @@ int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, con
         return status;
     const LoadedCharacter loaded = b.meshes ? loadCharacter(b.guide, guide, rig) : LoadedCharacter{};
     const auto start = std::chrono::steady_clock::now();
-    const Diagnostics d = io::runExport(rig, guide.pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
+    // A rig built --posed already is in the guide's pose: the pose relative to
+    // it is the rest, or --current-pose (and the range of motion) would apply it twice.
+    const model::PoseValues none;
+    const model::PoseValues& pose = b.posed ? none : guide.pose;
+    const Diagnostics d = io::runExport(rig, pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     status = report(d, status);
     if (status == 0 && !request.path.empty())

@@ -53,6 +53,9 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
     options.progress = std::move(progress);
     if (request.currentPose)
         options.pose = &pose;
+    options.testPose = &pose;
+    options.framesPerSecond = request.framesPerSecond;
+    options.clipPerControl = request.clipPerControl;
 
     Diagnostics report;
     NameMap names;

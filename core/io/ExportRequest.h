@@ -31,6 +31,8 @@ struct ExportRequest {
     bool force = false;
     std::size_t proxyVertices = 0;  // 0: no mesh; otherwise io::proxyMesh of about that many vertices (≤ kMaxProxyVertices)
     std::string referencePath;      // when set, also writes exportReferenceJson there
+    double framesPerSecond = 30.0;  // the range of motion's frame grid (ExportOptions::framesPerSecond)
+    bool clipPerControl = false;    // the range of motion as one clip per controller (ExportOptions::clipPerControl)
 };
 
 // The character an export carries: the guide's weight records and its models
@@ -40,7 +42,9 @@ struct ExportCharacter {
     std::vector<CharacterModel> models;
 };
 
-// `pose` is the guide's pose (used with currentPose). `progress` as in
+// `pose` is the guide's test pose relative to `rig`'s rest: put on the nodes
+// with currentPose, and where the range of motion starts. For a rig already
+// rebuilt in that pose (eval::posedRig) pass an empty pose, or it is applied twice. `progress` as in
 // ExportOptions. With a `character`, its meshes are exported bound to the
 // rig; its errors (a mesh without weights...) refuse the export unless forced,
 // like the validator's.

@@ -2,21 +2,19 @@
 
 #include "eval/RigProgram.h"
 #include "io/ExportCheck.h"
+#include "io/ExportMotion.h"
 #include "model/Value.h"
 #include "model/Skeleton.h"
 
-#include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace rs::io {
 
 namespace {
-
-constexpr double kRomDegrees = 30.0;
-constexpr double kRomStep = 0.25; // seconds between range-of-motion keys
 
 bool isIdentity(const Mat4& m) { return maxAbsDifference(m, Mat4(1.0)) < 1e-9; }
 
@@ -41,6 +39,32 @@ void addUnrealRoot(model::Skeleton& skeleton, std::vector<SkinnedMesh>& meshes)
             ++influence.joint;
 }
 
+// The Unity preset's humanoid map names bones by rig node id: each one this
+// rig has no deform joint for is a bone Unity's avatar leaves unmapped.
+Diagnostics checkUnityMap(const model::Rig& rig, const model::Skeleton& skeleton)
+{
+    std::vector<std::pair<std::string, std::string>> missing; // bone, the node id it wanted
+    std::size_t bones = 0;
+    for (const auto& [id, bone] : unityHumanoidMap().names) {
+        ++bones;
+        const auto node = rig.findPath(id);
+        const bool inSkeleton = node && std::any_of(skeleton.joints.begin(), skeleton.joints.end(),
+                                                    [&](const model::SkeletonJoint& j) { return j.node == *node; });
+        if (!inSkeleton)
+            missing.push_back({bone, id});
+    }
+    if (missing.empty())
+        return {};
+    std::string list;
+    for (std::size_t i = 0; i < missing.size(); ++i)
+        list += (i ? ", " : "") + missing[i].first + " (no joint '" + missing[i].second + "')";
+    return {makeError({}, "preset unity: " + std::to_string(missing.size()) + " of " + std::to_string(bones) +
+                              " Unity humanoid bones have no joint in this rig, so a humanoid avatar would map only part of "
+                              "it and play its animation on the wrong joints: " + list +
+                              "; forcing the export writes it anyway (rigsmith-cli --force, or \"Export despite errors\" in the editor), "
+                              "or give a name map for this rig (--names MAP.yml)")};
+}
+
 Diagnostics validate(const model::Rig& rig, model::Skeleton& skeleton, std::vector<SkinnedMesh>& meshes,
                      const ExportOptions& options)
 {
@@ -60,29 +84,6 @@ Diagnostics validate(const model::Rig& rig, model::Skeleton& skeleton, std::vect
     }
     return report;
 }
-
-// Local transforms of the scene's nodes for one evaluated state.
-struct Sampler {
-    const ExportScene& scene;
-    std::vector<model::RigNodeIndex> jointNodes, controllerNodes;
-
-    Mat4 world(model::RigNodeIndex node, const eval::EvalState& state) const
-    {
-        return node == model::kNoNode ? Mat4(1.0) : state.worldMatrix(node);
-    }
-    Mat4 jointLocal(std::size_t j, const eval::EvalState& state) const
-    {
-        const int parent = scene.joints[j].parent;
-        const Mat4 w = world(jointNodes[j], state);
-        return parent < 0 ? w : glm::inverse(world(jointNodes[std::size_t(parent)], state)) * w;
-    }
-    Mat4 controllerLocal(std::size_t c, const eval::EvalState& state) const
-    {
-        const int parent = scene.controllers[c].parent;
-        const Mat4 w = state.worldMatrix(controllerNodes[c]);
-        return parent < 0 ? w : glm::inverse(state.worldMatrix(controllerNodes[std::size_t(parent)])) * w;
-    }
-};
 
 void addControllers(const model::Rig& rig, ExportScene& scene, std::vector<model::RigNodeIndex>& nodes)
 {
@@ -104,80 +105,6 @@ void addControllers(const model::Rig& rig, ExportScene& scene, std::vector<model
         scene.controllers.push_back(c);
         nodes.push_back(i);
     }
-}
-
-void appendSample(ExportTrack& track, const Mat4& local)
-{
-    Vec3 t, s;
-    Quat r;
-    decompose(local, t, r, s);
-    if (!track.rotations.empty() && glm::dot(track.rotations.back(), r) < 0.0)
-        r = -r;
-    track.translations.push_back(t);
-    track.rotations.push_back(r);
-    track.scales.push_back(s);
-}
-
-// The keyed poses of the range-of-motion clip: rest, then each controller's free
-// rotate axes in turn, +30 and -30 degrees (within limits), back to rest.
-std::vector<eval::Pose> rangeOfMotionPoses(const model::Rig& rig, const eval::ChannelLayout& layout)
-{
-    const eval::Pose rest = layout.defaults();
-    std::vector<eval::Pose> poses{rest};
-    for (model::RigNodeIndex i = 0; i < rig.nodes.size(); ++i) {
-        const int tx = layout.transformOf(i);
-        if (tx < 0 || rig.nodes[i].kind != model::RigNodeKind::Controller)
-            continue;
-        bool moved = false;
-        for (int axis = 0; axis < 3; ++axis) {
-            if (rig.nodes[i].channels.isLocked(3 + axis))
-                continue;
-            const int channel = tx + 3 + axis;
-            for (double sign : {1.0, -1.0}) {
-                eval::Pose pose = rest;
-                pose[std::size_t(channel)] = layout.clamp(channel, rest[std::size_t(channel)] + sign * kRomDegrees);
-                poses.push_back(std::move(pose));
-                moved = true;
-            }
-        }
-        if (moved)
-            poses.push_back(rest);
-    }
-    return poses;
-}
-
-// Evaluates the pose and the range-of-motion clip; false when cancelled.
-bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::RigProgram& program, Sampler& sampler,
-               ExportScene& scene)
-{
-    eval::EvalState state = program.makeState();
-    if (options.pose) {
-        program.evaluate(eval::poseFromValues(rig, program.channels(), *options.pose), state);
-        for (std::size_t j = 0; j < scene.joints.size(); ++j)
-            scene.joints[j].poseLocal = sampler.jointLocal(j, state);
-        for (std::size_t c = 0; c < scene.controllers.size(); ++c)
-            scene.controllers[c].poseLocal = sampler.controllerLocal(c, state);
-    }
-    if (!options.rangeOfMotion)
-        return true;
-    ExportClip clip;
-    clip.name = "range_of_motion";
-    for (std::size_t j = 0; j < scene.joints.size(); ++j)
-        clip.tracks.push_back({int(j), false, {}, {}, {}});
-    for (std::size_t c = 0; c < scene.controllers.size(); ++c)
-        clip.tracks.push_back({int(c), true, {}, {}, {}});
-    const auto poses = rangeOfMotionPoses(rig, program.channels());
-    for (std::size_t k = 0; k < poses.size(); ++k) {
-        if (options.progress && k % 32 == 0 && !options.progress(0.1 + 0.5 * double(k) / double(poses.size())))
-            return false;
-        program.evaluate(poses[k], state);
-        clip.times.push_back(double(k) * kRomStep);
-        for (auto& track : clip.tracks)
-            appendSample(track, track.controller ? sampler.controllerLocal(std::size_t(track.node), state)
-                                                 : sampler.jointLocal(std::size_t(track.node), state));
-    }
-    scene.clips.push_back(std::move(clip));
-    return true;
 }
 
 ExportScene sceneFrom(const model::Rig& rig, const model::Skeleton& skeleton, std::vector<SkinnedMesh> meshes)
@@ -241,6 +168,10 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
         addUnrealRoot(skeleton, meshes);
 
     out.report = validate(rig, skeleton, meshes, options);
+    if (options.preset == ExportPreset::Unity && !options.names) {
+        Diagnostics unmapped = checkUnityMap(rig, skeleton);
+        out.report.insert(out.report.end(), unmapped.begin(), unmapped.end());
+    }
     if (hasErrors(out.report)) {
         if (!options.force)
             return out;
@@ -253,11 +184,11 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
     ExportScene scene = sceneFrom(rig, skeleton, std::move(meshes));
     if (options.materials)
         scene.materials = *options.materials;
-    Sampler sampler{scene, {}, {}};
+    SceneNodes nodes;
     for (const auto& joint : skeleton.joints)
-        sampler.jointNodes.push_back(joint.node);
+        nodes.joints.push_back(joint.node);
     if (options.controllers)
-        addControllers(rig, scene, sampler.controllerNodes);
+        addControllers(rig, scene, nodes.controllers);
     if (options.pose || options.rangeOfMotion) {
         auto program = eval::RigProgram::compile(rig);
         if (!program) {
@@ -265,7 +196,7 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
             out.report.insert(out.report.end(), d.begin(), d.end());
             return out;
         }
-        if (!addMotion(rig, options, *program, sampler, scene)) {
+        if (!addMotion(rig, options, *program, nodes, scene)) {
             out.cancelled = true;
             return out;
         }

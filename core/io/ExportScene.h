@@ -8,8 +8,9 @@
 //     forced, the safe fixes (renames, weight limiting) only when asked;
 //  4. options: controllers as tagged non-joint nodes, the current pose on the
 //     nodes (the bind pose stays in the inverse bind matrices), a range-of-motion
-//     clip rotating each controller in turn (joint tracks sampled from the
-//     evaluator, eval::RigProgram).
+//     clip exercising each controller in turn from the guide's test pose
+//     (io/RangeOfMotion.h plans it; joint tracks are sampled from the
+//     evaluator, eval::RigProgram, at its keys).
 // The scene is in the rig's convention (metres, Y-up); writers convert it to
 // the file's with converted().
 #include "base/Diagnostic.h"
@@ -60,6 +61,16 @@ struct ExportOptions {
     bool stampTime = false;                       // FBX: the real time in the header (else fixed: byte-identical files)
     // Called with the fraction done (0..1); returning false cancels the export.
     std::function<bool(double)> progress;
+    // Where the range of motion starts: the guide's test pose, relative to this
+    // rig's rest (so none for a rig already rebuilt in that pose, eval::posedRig).
+    // None: the rig's defaults.
+    const model::PoseValues* testPose = nullptr;
+    // The range of motion's frame grid: keys on whole frames at this rate
+    // (> 0; io/RangeOfMotion.h says how many frames apart).
+    double framesPerSecond = 30.0;
+    // One clip per exercised controller ("rom_<controller name>", each from
+    // time 0) instead of one clip with a marker per controller.
+    bool clipPerControl = false;
 };
 
 struct ExportJoint {
@@ -79,19 +90,46 @@ struct ExportController {
     Mat4 poseLocal{1.0};
 };
 
+// Bits of ExportTrack::animated / held.
+enum ExportChannel : unsigned {
+    kTranslationChannel = 1u,
+    kRotationChannel = 2u,
+    kScaleChannel = 4u,
+    kAllChannels = 7u,
+};
+
 // Sampled local transforms of one node per clip time.
 struct ExportTrack {
     int node = 0;                    // joint or controller index
     bool controller = false;
-    std::vector<Vec3> translations;
+    std::vector<Vec3> translations;  // one per clip time, whichever channels are animated
     std::vector<Quat> rotations;     // sign-continuous, for linear interpolation
     std::vector<Vec3> scales;
+    // Added for issue 21 (writers read these; the vectors above stay full):
+    // ExportChannel bits of the channels whose value changes during the clip:
+    // write them with every key. A channel in neither mask is constant and
+    // equal to the node's written transform (poseLocal): write nothing.
+    unsigned animated = kAllChannels;
+    // ExportChannel bits of channels constant during the clip but different
+    // from the node's written transform: write them with one key (the first).
+    unsigned held = 0;
+};
+
+// A named frame range of a clip: the part that exercises one controller.
+struct ExportMarker {
+    std::string name;                // the controller's name
+    std::string control;             // its rig node id (RigNode::path)
+    double start = 0.0, end = 0.0;   // seconds, on the clip's times
 };
 
 struct ExportClip {
     std::string name;
     std::vector<double> times;       // seconds, increasing
     std::vector<ExportTrack> tracks;
+    // Added for issue 21: the frame rate whose whole frames the times sit on
+    // (0: no grid) and the clip's named ranges, in time order.
+    double framesPerSecond = 0.0;
+    std::vector<ExportMarker> markers;
 };
 
 struct ExportScene {
@@ -108,6 +146,9 @@ struct PreparedExport {
     Diagnostics report;               // the validator's findings and any failure
     bool cancelled = false;
 };
+// Refuses (an error in the report, unless forced) when the export is invalid
+// or when the preset cannot map the rig: the Unity preset names humanoid
+// bones the rig has no joint for (each is listed with the joint it wanted).
 PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options);
 
 // The axes and units a file is written in.

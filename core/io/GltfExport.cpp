@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <filesystem>
 #include <sstream>
@@ -18,6 +19,8 @@ namespace {
 
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
+// Two animation values this close are one held value (below float resolution near 1: lossless).
+constexpr float kSameKey = 1e-7f;
 
 // Appends bufferViews and accessors to one buffer, 4-byte aligned.
 class GltfBuilder {
@@ -214,17 +217,49 @@ void addMaterials(tinygltf::Model& m, GltfBuilder& b, const ExportScene& scene, 
     }
 }
 
+// The keys of an animated channel worth writing: the first, the last, and
+// every key where the value changes before or after it (a key inside a run of
+// equal values is what linear interpolation gives anyway).
+std::vector<std::size_t> keptKeys(const std::vector<float>& values, std::size_t width)
+{
+    const std::size_t count = values.size() / width;
+    auto same = [&](std::size_t a, std::size_t b) {
+        for (std::size_t i = 0; i < width; ++i)
+            if (std::abs(values[a * width + i] - values[b * width + i]) > kSameKey)
+                return false;
+        return true;
+    };
+    std::vector<std::size_t> kept;
+    for (std::size_t k = 0; k < count; ++k)
+        if (k == 0 || k + 1 == count || !same(k - 1, k) || !same(k, k + 1))
+            kept.push_back(k);
+    return kept;
+}
+
 void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int firstController)
 {
     tinygltf::Animation animation;
     animation.name = clip.name;
-    std::vector<float> times(clip.times.begin(), clip.times.end());
-    const int input = b.bounded(times, TINYGLTF_TYPE_SCALAR, 1);
-    auto channel = [&](int node, const char* path, std::vector<float> values, int type) {
+    const std::vector<float> times(clip.times.begin(), clip.times.end());
+    std::map<std::vector<std::size_t>, int> inputs; // one time accessor per set of kept keys
+    auto channel = [&](int node, const char* path, const std::vector<float>& values, int type, std::size_t width,
+                       bool held) {
+        const auto kept = held ? std::vector<std::size_t>{0} : keptKeys(values, width);
+        auto input = inputs.find(kept);
+        if (input == inputs.end()) {
+            std::vector<float> keptTimes;
+            for (std::size_t k : kept)
+                keptTimes.push_back(times[k]);
+            input = inputs.emplace(kept, b.bounded(keptTimes, TINYGLTF_TYPE_SCALAR, 1)).first;
+        }
+        std::vector<float> keptValues;
+        for (std::size_t k : kept)
+            keptValues.insert(keptValues.end(), values.begin() + std::ptrdiff_t(k * width),
+                              values.begin() + std::ptrdiff_t((k + 1) * width));
         tinygltf::AnimationSampler sampler;
-        sampler.input = input;
+        sampler.input = input->second;
         sampler.interpolation = "LINEAR";
-        sampler.output = b.accessor(values, TINYGLTF_COMPONENT_TYPE_FLOAT, type, times.size());
+        sampler.output = b.accessor(keptValues, TINYGLTF_COMPONENT_TYPE_FLOAT, type, kept.size());
         animation.samplers.push_back(sampler);
         tinygltf::AnimationChannel c;
         c.sampler = int(animation.samplers.size() - 1);
@@ -243,11 +278,36 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
             r.insert(r.end(), {float(q.x), float(q.y), float(q.z), float(q.w)});
             s.insert(s.end(), {float(sv.x), float(sv.y), float(sv.z)});
         }
-        channel(node, "translation", std::move(t), TINYGLTF_TYPE_VEC3);
-        channel(node, "rotation", std::move(r), TINYGLTF_TYPE_VEC4);
-        channel(node, "scale", std::move(s), TINYGLTF_TYPE_VEC3);
+        // Animated channels get every key, held ones their first, constant ones nothing.
+        auto write = [&](unsigned bit, const char* path, const std::vector<float>& values, int type, std::size_t width) {
+            if (track.animated & bit)
+                channel(node, path, values, type, width, false);
+            else if (track.held & bit)
+                channel(node, path, values, type, width, true);
+        };
+        write(kTranslationChannel, "translation", t, TINYGLTF_TYPE_VEC3, 3);
+        write(kRotationChannel, "rotation", r, TINYGLTF_TYPE_VEC4, 4);
+        write(kScaleChannel, "scale", s, TINYGLTF_TYPE_VEC3, 3);
     }
-    m.animations.push_back(animation);
+    // The clip's frame rate and named ranges, for tools that read extras.
+    tinygltf::Value::Array markers;
+    for (const auto& marker : clip.markers) {
+        tinygltf::Value::Object o;
+        o["name"] = tinygltf::Value(marker.name);
+        o["control"] = tinygltf::Value(marker.control);
+        o["start"] = tinygltf::Value(marker.start);
+        o["end"] = tinygltf::Value(marker.end);
+        markers.push_back(tinygltf::Value(o));
+    }
+    tinygltf::Value::Object extras;
+    if (clip.framesPerSecond > 0.0)
+        extras["fps"] = tinygltf::Value(clip.framesPerSecond);
+    if (!markers.empty())
+        extras["markers"] = tinygltf::Value(markers);
+    if (!extras.empty())
+        animation.extras = tinygltf::Value(extras);
+    if (!animation.channels.empty())
+        m.animations.push_back(animation);
 }
 
 tinygltf::Model buildModel(const ExportScene& scene, const std::string& generator, Diagnostics& report)

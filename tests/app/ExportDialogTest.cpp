@@ -63,3 +63,35 @@ TEST(ExportDialog, ExportsTheBuiltRigWithTheChosenPresetAndOptions)
     EXPECT_TRUE(dialog->findChild<QPlainTextEdit*>("exportReport")->toPlainText().contains("/nonexistent/names.yml"));
     EXPECT_FALSE(std::filesystem::exists(glb));
 }
+
+TEST(ExportDialog, TheUnityPresetRefusesTheQuadrupedListingTheBonesUntilForced)
+{
+    test::Editor editor;
+    auto& w = editor.window;
+    ASSERT_TRUE(w.openFile(RIGSMITH_SOURCE_DIR "/resources/samples/quadruped.yml"));
+    w.action("exportRig")->trigger();
+    widgets::ExportDialog* dialog = w.exportDialog();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    const std::string glb = test::outputPath("dialog-unity-quadruped.glb");
+    std::filesystem::remove(glb);
+    dialog->findChild<QLineEdit*>("exportPath")->setText(QString::fromStdString(glb));
+    auto* preset = dialog->findChild<QComboBox*>("exportPreset");
+    preset->setCurrentIndex(preset->findData("unity"));
+    dialog->findChild<QCheckBox*>("exportRom")->setChecked(true);
+    dialog->findChild<QSpinBox*>("exportFps")->setValue(24);
+    dialog->findChild<QCheckBox*>("exportClipPerControl")->setChecked(true);
+    EXPECT_EQ(dialog->request().framesPerSecond, 24.0);
+    EXPECT_TRUE(dialog->request().clipPerControl);
+    auto* button = dialog->findChild<QPushButton*>("exportButton");
+    auto* report = dialog->findChild<QPlainTextEdit*>("exportReport");
+
+    QTest::mouseClick(button, Qt::LeftButton);
+    EXPECT_TRUE(report->toPlainText().contains("LeftUpperArm (no joint 'arm.L::skin.limb.0')")) << report->toPlainText().toStdString();
+    EXPECT_TRUE(report->toPlainText().contains("Not exported")) << report->toPlainText().toStdString();
+    EXPECT_FALSE(std::filesystem::exists(glb));
+
+    dialog->findChild<QCheckBox*>("exportForce")->setChecked(true);
+    QTest::mouseClick(button, Qt::LeftButton);
+    EXPECT_TRUE(report->toPlainText().endsWith("Exported " + QString::fromStdString(glb))) << report->toPlainText().toStdString();
+    EXPECT_TRUE(std::filesystem::exists(glb));
+}

@@ -160,45 +160,7 @@ TEST(RigExport, CurrentPoseMovesTheNodesAndKeepsTheBindPose)
     EXPECT_TRUE(std::equal(x, x + 16 * ibmA.count, y)) << "the bind pose does not move";
 }
 
-TEST(RigExport, RangeOfMotionClipRotatesEachControllerInTurn)
-{
-    io::ExportOptions options;
-    options.rangeOfMotion = true;
-    auto prepared = io::prepareExport(biped(), options);
-    ASSERT_TRUE(prepared.scene);
-    ASSERT_EQ(prepared.scene->clips.size(), 1u);
-    const io::ExportClip& clip = prepared.scene->clips[0];
-    EXPECT_EQ(clip.name, "range_of_motion");
-    // Rest, then per controller two keys per free rotate axis and a rest key.
-    std::size_t expected = 1;
-    for (const auto& node : biped().nodes)
-        if (node.kind == model::RigNodeKind::Controller) {
-            int free = 0;
-            for (int axis = 3; axis < 6; ++axis)
-                free += node.channels.isLocked(axis) ? 0 : 1;
-            expected += free ? std::size_t(2 * free + 1) : 0;
-        }
-    ASSERT_EQ(clip.times.size(), expected);
-    EXPECT_DOUBLE_EQ(clip.times[1] - clip.times[0], 0.25);
-    // Every key either is the rest pose or moves some joint; the first and last are rest.
-    auto differsFromRest = [&](std::size_t k) {
-        for (const auto& track : clip.tracks)
-            if (!track.controller && std::abs(glm::dot(track.rotations[k], track.rotations[0])) < 1.0 - 1e-9)
-                return true;
-        return false;
-    };
-    EXPECT_FALSE(differsFromRest(clip.times.size() - 1));
-    std::size_t moving = 0;
-    for (std::size_t k = 0; k < clip.times.size(); ++k)
-        moving += differsFromRest(k) ? 1 : 0;
-    EXPECT_GT(moving, clip.times.size() / 2);
-
-    const std::string path = test::temporaryPath("rom.glb");
-    ASSERT_TRUE(io::exportRig(biped(), path, options).empty());
-    const auto m = readGlb(path);
-    ASSERT_EQ(m.animations.size(), 1u);
-    EXPECT_EQ(m.animations[0].channels.size(), 3 * prepared.scene->joints.size());
-}
+// The range of motion is tested in RangeOfMotionTest.cpp.
 
 TEST(RigExport, UnrealFbxIsZUpCentimetresWithARootJointAtTheOrigin)
 {

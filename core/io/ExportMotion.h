@@ -1,0 +1,24 @@
+#pragma once
+// The moving parts of an export (internal to io/ExportScene.cpp): the current
+// pose on the scene's nodes and the range-of-motion clip(s), sampled from the
+// evaluator at the keys io/RangeOfMotion.h plans. Tracks say which channels
+// change (ExportTrack::animated / held); tracks that change nothing are left
+// out of the clip.
+#include "eval/RigProgram.h"
+#include "io/ExportScene.h"
+
+#include <vector>
+
+namespace rs::io {
+
+// The rig nodes the scene's joints and controllers are (kNoNode: a joint the preset added).
+struct SceneNodes {
+    std::vector<model::RigNodeIndex> joints, controllers;
+};
+
+// Applies options.pose and adds the range of motion (options.rangeOfMotion);
+// false when cancelled through options.progress.
+bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::RigProgram& program, const SceneNodes& nodes,
+               ExportScene& scene);
+
+} // namespace rs::io

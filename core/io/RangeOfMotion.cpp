@@ -1,0 +1,400 @@
+#include "io/RangeOfMotion.h"
+
+#include "eval/PoseTools.h"
+#include "io/StretchGauge.h"
+#include "model/Skeleton.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <variant>
+
+namespace rs::io {
+
+namespace {
+
+constexpr double kHingeDegrees = 90.0;
+constexpr double kOtherDegrees = 30.0;
+constexpr double kTranslateShare = 0.25;   // of the skeleton's size
+constexpr double kMaxStretch = 0.005;      // what a peak may add, relative
+constexpr double kMovesJoint = 1e-4;       // metres a motion must move some deform joint
+constexpr double kKeptShare = 0.1;         // a translation cut below this share of its nominal is left out
+constexpr int kBisections = 12;
+constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
+
+// An FK/IK switch: the blend constraints that share one weight channel.
+struct Switch {
+    int weight = -1;
+    double fk = 0.0, ik = 1.0;                    // the channel's FK and IK values
+    std::vector<const model::RigConstraint*> blends;
+    std::vector<model::RigNodeIndex> fkControls;   // controllers on the FK side
+    std::vector<model::RigNodeIndex> ikControls;   // controllers the IK side's solver reads
+    Vec3 bendNormal{0.0};                          // world, rest; zero when the IK side is no limb IK
+};
+
+// The controller a node follows: itself or its nearest controller ancestor.
+model::RigNodeIndex controllerOf(const model::Rig& rig, model::RigNodeIndex node)
+{
+    while (node != model::kNoNode && rig.nodes[node].kind != model::RigNodeKind::Controller)
+        node = rig.nodes[node].parent;
+    return node;
+}
+
+void addOnce(std::vector<model::RigNodeIndex>& list, model::RigNodeIndex node)
+{
+    if (node != model::kNoNode && std::find(list.begin(), list.end(), node) == list.end())
+        list.push_back(node);
+}
+
+std::vector<Switch> switchesOf(const model::Rig& rig, const eval::ChannelLayout& layout)
+{
+    std::map<int, Switch> byWeight;
+    for (const auto& c : rig.constraints) {
+        const auto* blend = std::get_if<model::BlendConstraint>(&c.settings);
+        const auto weight = blend ? layout.find(blend->weight) : std::nullopt;
+        if (!weight || c.targets.size() != 2)
+            continue;
+        Switch& s = byWeight[*weight];
+        s.weight = *weight;
+        s.fk = layout[std::size_t(*weight)].limited ? layout[std::size_t(*weight)].min : 0.0;
+        s.ik = layout[std::size_t(*weight)].limited ? layout[std::size_t(*weight)].max : 1.0;
+        s.blends.push_back(&c);
+        if (rig.nodes[c.targets[0]].kind == model::RigNodeKind::Controller)
+            addOnce(s.fkControls, c.targets[0]);
+    }
+    for (auto& [weight, s] : byWeight)
+        for (const auto& c : rig.constraints) {
+            const bool solver = std::holds_alternative<model::IkConstraint>(c.settings) ||
+                                std::holds_alternative<model::SplineConstraint>(c.settings);
+            if (!solver)
+                continue;
+            const bool feeds = std::any_of(s.blends.begin(), s.blends.end(), [&](const model::RigConstraint* b) {
+                return std::find(c.driven.begin(), c.driven.end(), b->targets[1]) != c.driven.end();
+            });
+            if (!feeds)
+                continue;
+            for (auto target : c.targets)
+                addOnce(s.ikControls, controllerOf(rig, target));
+            if (std::holds_alternative<model::IkConstraint>(c.settings) && c.driven.size() >= 3) {
+                const Vec3 a = translationOf(rig.nodes[c.driven[0]].worldMatrix);
+                const Vec3 b = translationOf(rig.nodes[c.driven[1]].worldMatrix);
+                const Vec3 e = translationOf(rig.nodes[c.driven[2]].worldMatrix);
+                const Vec3 n = glm::cross(b - a, e - b);
+                if (glm::length(n) > 1e-9)
+                    s.bendNormal = glm::normalize(n);
+            }
+        }
+    std::vector<Switch> out;
+    for (auto& [weight, s] : byWeight)
+        out.push_back(std::move(s));
+    return out;
+}
+
+// Channels that drive motion (a drive's value): the custom channels worth exercising.
+std::vector<int> drivingChannels(const model::Rig& rig, const eval::ChannelLayout& layout)
+{
+    std::vector<int> out;
+    for (const auto& c : rig.constraints)
+        if (const auto* drive = std::get_if<model::DriveConstraint>(&c.settings))
+            if (auto channel = layout.find(drive->value); channel && !layout[std::size_t(*channel)].locked)
+                if (std::find(out.begin(), out.end(), *channel) == out.end())
+                    out.push_back(*channel);
+    return out;
+}
+
+// What the planner evaluates with: the rig, its program, a scratch state.
+struct Planner {
+    const model::Rig& rig;
+    const eval::RigProgram& program;
+    eval::Posing posing;
+    std::vector<Switch> switches;
+    std::vector<int> driving;
+    StretchGauge gauge;
+    std::vector<model::RigNodeIndex> deform; // the deform joints' rig nodes
+    double size = 1.0;                       // the skeleton's bounding box diagonal, metres
+
+    Planner(const model::Rig& r, const eval::RigProgram& p)
+        : rig(r), program(p), posing(r, p), switches(switchesOf(r, p.channels())), driving(drivingChannels(r, p.channels())),
+          gauge(r, p)
+    {
+        if (auto skeleton = model::extractSkeleton(rig)) {
+            Vec3 low(1e300), high(-1e300);
+            for (const auto& j : skeleton->joints)
+                if (j.node != model::kNoNode) {
+                    deform.push_back(j.node);
+                    low = glm::min(low, translationOf(j.bindWorld));
+                    high = glm::max(high, translationOf(j.bindWorld));
+                }
+            if (!deform.empty())
+                size = std::max(glm::length(high - low), 1e-3);
+        }
+    }
+
+    double stretch(const eval::Pose& pose) { return gauge.measure(pose, posing.evaluate(pose)); }
+
+    std::vector<eval::Affine> deformPositions(const eval::Pose& pose)
+    {
+        const auto& state = posing.evaluate(pose);
+        std::vector<eval::Affine> out;
+        for (auto node : deform)
+            out.push_back(state.world[node]);
+        return out;
+    }
+    // Whether `pose` moves or turns some deform joint from where `from` has it.
+    bool movesAJoint(const std::vector<eval::Affine>& from, const eval::Pose& pose)
+    {
+        const auto to = deformPositions(pose);
+        for (std::size_t i = 0; i < to.size(); ++i) {
+            if (glm::length(to[i].translation - from[i].translation) > kMovesJoint)
+                return true;
+            for (int k = 0; k < 3; ++k) // a joint that turns in place (a hand without fingers) moves too
+                if (glm::length(to[i].linear[k] - from[i].linear[k]) > 1e-3)
+                    return true;
+        }
+        return false;
+    }
+
+    // `base` with the switch's chain on its FK side, FK snapped onto where the chain is.
+    eval::Pose toFk(const eval::Pose& base, const Switch& s)
+    {
+        if (std::abs(base[std::size_t(s.weight)] - s.fk) < 1e-9)
+            return base;
+        const auto& state = posing.evaluate(base);
+        std::vector<std::pair<model::RigNodeIndex, Mat4>> targets;
+        for (const auto* b : s.blends) {
+            const auto fk = b->targets[0];
+            if (rig.nodes[fk].kind == model::RigNodeKind::Controller) // the FK control where the blended joint is
+                targets.push_back({fk, (state.world[b->driven[0]] * program.restWorld(b->driven[0]).inverse() *
+                                        program.restWorld(fk)).matrix()});
+        }
+        eval::Pose out = base;
+        for (const auto& [fk, world] : targets) // parents first (blends are made in chain order)
+            out = posing.placeAt(out, fk, world);
+        out[std::size_t(s.weight)] = s.fk;
+        return out;
+    }
+    // `base` with the chain on its IK side, the IK controls matched to FK when the rig knows how.
+    eval::Pose toIk(const eval::Pose& base, const Switch& s)
+    {
+        if (std::abs(base[std::size_t(s.weight)] - s.ik) < 1e-9)
+            return base;
+        eval::Pose out = base;
+        if (!s.fkControls.empty())
+            if (auto matched = posing.fkToIk(base, s.fkControls.front()))
+                out = matched.take();
+        out[std::size_t(s.weight)] = s.ik;
+        return out;
+    }
+    eval::Pose allFk(eval::Pose base)
+    {
+        for (const auto& s : switches)
+            base = toFk(base, s);
+        return base;
+    }
+
+    // The share (0..1) of `offset` on `channel` from `base` that stretches nothing more than allowed.
+    double allowedShare(const eval::Pose& base, int channel, double offset, double limit)
+    {
+        auto fits = [&](double share) {
+            eval::Pose p = base;
+            p[std::size_t(channel)] = program.channels().clamp(channel, base[std::size_t(channel)] + share * offset);
+            return stretch(p) <= limit;
+        };
+        if (fits(1.0))
+            return 1.0;
+        double low = 0.0, high = 1.0;
+        for (int i = 0; i < kBisections; ++i) {
+            const double mid = 0.5 * (low + high);
+            (fits(mid) ? low : high) = mid;
+        }
+        return low;
+    }
+
+    double hingeDegrees(model::RigNodeIndex control, int axis) const
+    {
+        for (const auto& s : switches)
+            if (std::find(s.fkControls.begin(), s.fkControls.end(), control) != s.fkControls.end() &&
+                glm::length(s.bendNormal) > 0.0) {
+                const Mat4& world = rig.nodes[control].worldMatrix;
+                int best = 0;
+                for (int k = 1; k < 3; ++k)
+                    if (std::abs(glm::dot(glm::normalize(Vec3(world[k])), s.bendNormal)) >
+                        std::abs(glm::dot(glm::normalize(Vec3(world[best])), s.bendNormal)))
+                        best = k;
+                return best == axis ? kHingeDegrees : kOtherDegrees;
+            }
+        return kOtherDegrees;
+    }
+
+    // The offsets a channel is exercised by, from `base` (before stretch limits).
+    std::vector<double> nominalOffsets(model::RigNodeIndex control, int channel, const eval::Pose& base) const
+    {
+        const auto& c = program.channels()[std::size_t(channel)];
+        const double value = base[std::size_t(channel)];
+        if (c.limited) {
+            std::vector<double> out;
+            for (double bound : {c.max, c.min})
+                if (std::abs(bound - value) > 1e-6)
+                    out.push_back(bound - value);
+            return out;
+        }
+        if (c.transform >= 3 && c.transform < 6) {
+            const double degrees = hingeDegrees(control, c.transform - 3);
+            return {degrees, -degrees};
+        }
+        if (c.transform >= 0 && c.transform < 3)
+            return {kTranslateShare * size, -kTranslateShare * size};
+        return {};
+    }
+
+    std::vector<int> exercisedChannels(model::RigNodeIndex control) const
+    {
+        const auto& layout = program.channels();
+        std::vector<int> out;
+        if (const int tx = layout.transformOf(control); tx >= 0)
+            for (int i = 0; i < 6; ++i)
+                if (!layout[std::size_t(tx + i)].locked)
+                    out.push_back(tx + i);
+        const int first = layout.firstOf(control);
+        for (int i = first; i < first + layout.countOf(control); ++i)
+            if (layout[std::size_t(i)].transform < 0 && std::find(driving.begin(), driving.end(), i) != driving.end())
+                out.push_back(i);
+        return out;
+    }
+
+    // The peaks of one channel from `base`, cut to what stretches nothing; empty when none is worth keeping.
+    std::vector<eval::Pose> peaks(model::RigNodeIndex control, int channel, const eval::Pose& base, double limit,
+                                  const std::vector<eval::Affine>& baseJoints)
+    {
+        std::vector<eval::Pose> out;
+        const bool translation = program.channels()[std::size_t(channel)].transform >= 0 &&
+                                 program.channels()[std::size_t(channel)].transform < 3;
+        for (double offset : nominalOffsets(control, channel, base)) {
+            const double share = allowedShare(base, channel, offset, limit);
+            if (share <= 0.0 || (translation && share < kKeptShare))
+                continue;
+            eval::Pose p = base;
+            p[std::size_t(channel)] = program.channels().clamp(channel, base[std::size_t(channel)] + share * offset);
+            if (movesAJoint(baseJoints, p))
+                out.push_back(std::move(p));
+        }
+        return out;
+    }
+
+    // The base pose a control is exercised from: its chain switched as the control needs.
+    eval::Pose baseFor(model::RigNodeIndex control, const eval::Pose& start, bool& owned)
+    {
+        eval::Pose base = start;
+        owned = false;
+        for (const auto& s : switches) {
+            if (std::find(s.fkControls.begin(), s.fkControls.end(), control) != s.fkControls.end()) {
+                base = toFk(base, s);
+                owned = true;
+            } else if (std::find(s.ikControls.begin(), s.ikControls.end(), control) != s.ikControls.end()) {
+                base = toIk(base, s);
+                owned = true;
+            }
+        }
+        return base;
+    }
+
+    // The peaks, then back to `base`: through it between two peaks more than
+    // kWidestStep apart, so interpolation never takes a rotation the short way round.
+    void appendPeaks(std::vector<eval::Pose>& keys, std::vector<eval::Pose> found, const eval::Pose& base, int channel) const
+    {
+        const bool angle = program.channels()[std::size_t(channel)].transform < 0 ||
+                           program.channels()[std::size_t(channel)].transform >= 3;
+        for (std::size_t i = 0; i < found.size(); ++i) {
+            if (i > 0 && angle &&
+                std::abs(found[i][std::size_t(channel)] - keys.back()[std::size_t(channel)]) > kWidestStep)
+                keys.push_back(base);
+            keys.push_back(std::move(found[i]));
+        }
+        keys.push_back(base);
+    }
+
+    // Keys for one control: its base, each channel's peaks with the base between them.
+    std::vector<eval::Pose> motionOf(model::RigNodeIndex control, const eval::Pose& start)
+    {
+        bool owned = false;
+        const eval::Pose base = baseFor(control, start, owned);
+        const double limit = std::max(stretch(base), kMaxStretch);
+        const auto baseJoints = deformPositions(base);
+        std::vector<eval::Pose> keys;
+        for (int channel : exercisedChannels(control)) {
+            auto found = peaks(control, channel, base, limit, baseJoints);
+            // How far the peaks go, in the channel's unit.
+            auto reach = [&](const std::vector<eval::Pose>& peaksFound, const eval::Pose& from) {
+                double sum = 0.0;
+                for (const auto& p : peaksFound)
+                    sum += std::abs(p[std::size_t(channel)] - from[std::size_t(channel)]);
+                return sum;
+            };
+            double nominal = 0.0;
+            for (double offset : nominalOffsets(control, channel, base))
+                nominal += std::abs(offset);
+            if (!owned && !switches.empty() && reach(found, base) < 0.999 * nominal) {
+                // Held back by limbs in IK: try the same move with every switched chain in FK.
+                const eval::Pose loose = allFk(base);
+                const auto looseJoints = deformPositions(loose);
+                auto freer = peaks(control, channel, loose, std::max(stretch(loose), kMaxStretch), looseJoints);
+                if (reach(freer, loose) > reach(found, base) + 1e-6) {
+                    keys.push_back(loose);
+                    appendPeaks(keys, std::move(freer), loose, channel);
+                    keys.push_back(base);
+                    continue;
+                }
+            }
+            appendPeaks(keys, std::move(found), base, channel);
+        }
+        if (keys.empty())
+            return keys;
+        if (base != start) {
+            keys.insert(keys.begin(), base);
+            keys.push_back(start);
+        }
+        return keys;
+    }
+};
+
+} // namespace
+
+int framesPerKey(double framesPerSecond)
+{
+    const int frames = int(std::lround(framesPerSecond / 3.0));
+    return std::max(2, frames + (frames % 2));
+}
+
+double stretchOf(const model::Rig& rig, const eval::RigProgram& program, const eval::Pose& pose, const eval::EvalState& state)
+{
+    return StretchGauge(rig, program).measure(pose, state);
+}
+
+RangeOfMotionPlan planRangeOfMotion(const model::Rig& rig, const eval::RigProgram& program, const eval::Pose& start,
+                                    const std::function<bool(double)>& progress)
+{
+    Planner planner(rig, program);
+    RangeOfMotionPlan plan;
+    plan.keys.push_back(start);
+    for (model::RigNodeIndex i = 0; i < rig.nodes.size(); ++i) {
+        if (progress && i % 8 == 0 && !progress(0.1 + 0.4 * double(i) / double(rig.nodes.size())))
+            return {};
+        if (rig.nodes[i].kind != model::RigNodeKind::Controller)
+            continue;
+        auto keys = planner.motionOf(i, start);
+        if (keys.empty())
+            continue;
+        RangeOfMotionPart part{i, plan.keys.size() - 1, 0};
+        if (keys.back() != start)
+            keys.push_back(start);
+        for (auto& k : keys)
+            plan.keys.push_back(std::move(k));
+        part.lastKey = plan.keys.size() - 1;
+        plan.parts.push_back(part);
+    }
+    return plan;
+}
+
+} // namespace rs::io
