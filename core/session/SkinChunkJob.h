@@ -15,6 +15,7 @@
 // returning false) makes run fail; nothing in the session changes.
 #include "base/Result.h"
 #include "base/Status.h"
+#include "skin/InfluenceMap.h"
 #include "skin/SkinChunk.h"
 #include "skin/Transfer.h"
 
@@ -47,7 +48,8 @@ enum class VertexRoute : std::uint8_t { OneToOne, SingleInfluence, Transferred }
 
 // One import in flight. Owns copies of everything run() reads.
 struct SkinImportJob {
-    std::vector<skin::SkinChunk> chunks; // merged: one per mesh name, the newest kept
+    std::vector<skin::SkinChunk> chunks; // merged: one per mesh name, the newest kept; weights on the rig's skin bones
+    skin::InfluenceResolution influences; // how each chunk influence landed on a skin bone
     skin::TransferOptions options;
     struct Target {
         std::size_t characterMesh = 0;               // into Session::characterMeshes() at prepare
