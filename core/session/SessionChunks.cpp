@@ -236,6 +236,9 @@ std::vector<VertexRoute> SkinImportJob::routes(std::size_t t) const
                 for (std::uint32_t id : c.vertexIds)
                     if (id < count)
                         out[id] = VertexRoute::OneToOne;
+    for (std::uint32_t v : r.inpaintedVertices)
+        if (v < count)
+            out[v] = VertexRoute::Inpainted;
     return out;
 }
 

@@ -42,9 +42,10 @@ struct SkinScope {
 };
 
 // Per target vertex, how a run placed its weights, as far as the decision
-// tree's routes say it: Transferred covers every fallback method (closest
-// point, neighbours, inpainting; the report counts each).
-enum class VertexRoute : std::uint8_t { OneToOne, SingleInfluence, Transferred };
+// tree's routes and the fallback say it: Transferred is the chosen method's
+// copy (closest point or neighbours, the normal filter's fallback too),
+// Inpainted the vertices weight inpainting solved for.
+enum class VertexRoute : std::uint8_t { OneToOne, SingleInfluence, Transferred, Inpainted };
 
 // One import in flight. Owns copies of everything run() reads.
 struct SkinImportJob {

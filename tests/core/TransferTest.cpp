@@ -263,6 +263,10 @@ TEST(Transfer, InpaintingFillsWhatTheClosestPointWouldTakeFromTheWrongSurface)
     ASSERT_TRUE(inpainted.ok()) << formatAll(inpainted.diagnostics());
     EXPECT_EQ(reports[0].inpainted, wrong);
     EXPECT_EQ(reports[0].closestPoint + reports[0].inpainted, target.vertexCount());
+    const auto& ids = reports[0].inpaintedVertices; // by vertex: the ones closest point got wrong
+    ASSERT_EQ(ids.size(), wrong);
+    for (std::size_t v = 0; v < target.vertexCount(); ++v)
+        EXPECT_EQ(std::binary_search(ids.begin(), ids.end(), std::uint32_t(v)), dominant(closest->front(), v) != 0) << "vertex " << v;
     for (std::size_t v = 0; v < target.vertexCount(); ++v) {
         ASSERT_EQ(dominant(inpainted->front(), v), 0u) << "vertex " << v;
         float sum = 0.0f;
