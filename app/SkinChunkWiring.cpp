@@ -10,6 +10,8 @@
 
 #include "LogPanel.h"
 #include "SkinChunkPanel.h"
+#include "SkinInfluenceBox.h"
+#include "io/InfluenceNameMap.h"
 #include "io/SkinChunkInfo.h"
 #include "io/SkinChunks.h"
 
@@ -166,13 +168,33 @@ void MainWindow::importSkinChunks(const QStringList& files, bool preview)
         for (skin::SkinChunk& c : *chunks)
             all.push_back(std::move(c));
     }
+    widgets::SkinInfluenceBox* box = m_chunkPanel->influences();
+    box->clearResults();
+    skin::InfluenceMapOptions influences;
+    influences.missing = box->missing();
+    if (!box->nameMapFile().isEmpty()) {
+        auto names = io::readInfluenceNameMap(box->nameMapFile().toStdString());
+        if (!names) {
+            report(tr("Could not read the name map %1; nothing imported").arg(box->nameMapFile()), names.diagnostics());
+            return;
+        }
+        influences.names = names.take();
+    }
+    if (!m_session.rig() || m_session.isRigStale())
+        buildRig(); // the chunks' influences land on the rig's skin joints
+    const auto missing = influences.missing == skin::MissingInfluences::Create ? std::vector<skin::InfluenceMatch>{}
+                                                                               : m_session.missingInfluences(all, influences);
     const bool onSelection = m_chunkPanel->importOntoSelection();
     auto prepared = m_session.prepareSkinImport(std::move(all), m_chunkPanel->options(),
-                                                onSelection ? session::SkinScope::selectedVertices() : session::SkinScope::all());
+                                                onSelection ? session::SkinScope::selectedVertices() : session::SkinScope::all(), influences);
     if (!prepared) {
-        report(tr("Nothing imported"), prepared.diagnostics());
+        box->showMissing(missing);
+        report(missing.empty() ? tr("Nothing imported")
+                               : tr("Nothing imported: %1 influences are no skin joint of the rig (listed in the Skin Chunks dock)").arg(missing.size()),
+               prepared.diagnostics());
         return;
     }
+    box->showMoved(prepared->influences.matches);
     auto job = std::make_shared<ChunkImportJob>();
     job->job = prepared.take();
     job->preview = preview;

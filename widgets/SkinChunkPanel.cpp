@@ -1,5 +1,7 @@
 #include "SkinChunkPanel.h"
 
+#include "SkinInfluenceBox.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -120,6 +122,8 @@ QWidget* SkinChunkPanel::makeImportBox()
     m_previewSelects->setToolTip(tr("Preview runs the decision tree without applying it and selects these vertices in the viewport"));
     form->addRow(tr("Preview selects"), m_previewSelects);
     column->addLayout(form);
+    m_influences = new SkinInfluenceBox(box);
+    column->addWidget(m_influences);
     auto* runRow = new QHBoxLayout;
     QAbstractButton* preview = addButton(box, "preview", tr("Preview"), tr("Run the import without applying it: the table shows each mesh's route and counts"));
     QAbstractButton* apply = addButton(box, "import", tr("Import"), tr("Import the weights as one undo step (Cancel in the progress dialog changes nothing)"));

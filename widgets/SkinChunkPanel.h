@@ -2,7 +2,8 @@
 // The Skin Chunks dock (issue 20 item 6): export the character's weights as a
 // skin chunk file (the whole character, the meshes with selected vertices, or
 // only the selected vertices); import one or many chunk files with every
-// option of skin::TransferOptions onto everything or the selected vertices,
+// option of skin::TransferOptions and the missing-influence choices
+// (SkinInfluenceBox) onto everything or the selected vertices,
 // or preview the import (the decision tree run without applying: per mesh its
 // route and counts, and the vertices of one route selected); and inspect a
 // chunk file (its meshes, counts, influences, dates, user and vertex rows
@@ -26,6 +27,8 @@ class QSpinBox;
 class QTreeWidget;
 
 namespace rs::widgets {
+
+class SkinInfluenceBox;
 
 class SkinChunkPanel : public QWidget {
     Q_OBJECT
@@ -54,6 +57,8 @@ public:
     int inspectFrom() const;
     int inspectLimit() const;
 
+    // Missing influences (stop / map / create) and the name map file, and what they did.
+    SkinInfluenceBox* influences() const { return m_influences; }
     QTreeWidget* reportList() const { return m_reports; }
     QPlainTextEdit* inspector() const { return m_inspector; }
     // Buttons by name (tests): "export", "addFiles", "removeFiles", "preview", "import", "inspect".
@@ -90,6 +95,7 @@ private:
     QDoubleSpinBox* m_inpaintAngle = nullptr;
     QComboBox* m_onto = nullptr;
     QComboBox* m_previewSelects = nullptr;
+    SkinInfluenceBox* m_influences = nullptr;
     QTreeWidget* m_reports = nullptr;
     QSpinBox* m_from = nullptr;
     QSpinBox* m_limit = nullptr;

@@ -48,17 +48,19 @@ std::optional<Character> loadCharacter(const std::string& guidePath)
         return std::nullopt;
     }
     c.models.reserve(c.guide.models.size()); // meshes point into it
+    std::vector<const model::Model*> read;
     for (const std::string& path : c.guide.models) {
         auto model = io::importModel(path);
         print(model.diagnostics());
         if (!model)
             return std::nullopt;
         c.models.push_back(model.take());
-        for (const model::Mesh& mesh : c.models.back().meshes)
-            c.meshes.push_back({path, &mesh, -1});
+        read.push_back(&c.models.back());
     }
-    for (CharacterMesh& m : c.meshes)
-        m.binding = bindingOf(c, m.model, *m.mesh);
+    const auto pairs = model::pairBindings(c.guide.models, read, c.guide.bindings);
+    for (std::size_t m = 0; m < c.models.size(); ++m)
+        for (std::size_t k = 0; k < c.models[m].meshes.size(); ++k)
+            c.meshes.push_back({c.guide.models[m], &c.models[m].meshes[k], pairs[m][k]});
     return c;
 }
 
@@ -86,22 +88,6 @@ bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBo
         if (weights.joints[b] != bones[b].key || weights.parents[b] != bones[b].parent)
             return false;
     return true;
-}
-
-int bindingOf(const Character& c, const std::string& model, const model::Mesh& mesh)
-{
-    // The how-many-th mesh of this name in its model...
-    int nth = 0;
-    for (const CharacterMesh& m : c.meshes) {
-        if (m.mesh == &mesh)
-            break;
-        nth += m.model == model && m.mesh->name == mesh.name;
-    }
-    // ...pairs with the same-numbered record of that model and name.
-    for (std::size_t b = 0; b < c.guide.bindings.size(); ++b)
-        if (c.guide.bindings[b].model == model && c.guide.bindings[b].mesh == mesh.name && nth-- == 0)
-            return int(b);
-    return -1;
 }
 
 std::string jsonString(const std::string& text)

@@ -1,8 +1,8 @@
 #pragma once
 // What the skin chunk commands read from a guide: its built rig and skin
 // bones, its weight records (GUIDE.weights), its models, and each mesh paired
-// with its record as the session pairs them (the n-th mesh of a name in a
-// model with the n-th record of that model and name). Plus the small argument
+// with its record as the session pairs them (model::pairBindings: the n-th
+// mesh of a name in a model with the n-th record of that model and name). Plus the small argument
 // helpers those commands share.
 #include "model/GuideDocument.h"
 #include "model/Mesh.h"
@@ -33,8 +33,6 @@ struct Character {
 // Prints every problem (stderr); nothing when the guide, its rig, its weights
 // file or one of its models cannot be read, or it has no model.
 std::optional<Character> loadCharacter(const std::string& guidePath);
-// The record of `mesh` in `character` after bindings were added: see the pairing above.
-int bindingOf(const Character& character, const std::string& model, const model::Mesh& mesh);
 
 // The meshes whose record fits them, as bound (skin::bindingChunk): what the
 // guide keeps beside its weights (io::saveGuideChunks) to re-fit from. A

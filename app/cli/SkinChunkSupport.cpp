@@ -9,7 +9,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -128,58 +127,6 @@ Result<std::vector<std::string>> depotFiles(const std::string& dir, const std::s
 std::string assetOf(const std::string& guidePath)
 {
     return std::filesystem::path(guidePath).stem().string();
-}
-
-namespace {
-
-std::string trimmed(std::string s)
-{
-    const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
-    s.erase(s.begin(), std::find_if_not(s.begin(), s.end(), space));
-    s.erase(std::find_if_not(s.rbegin(), s.rend(), space).base(), s.end());
-    if (s.size() >= 2 && (s[0] == '"' || s[0] == '\'') && s.back() == s[0])
-        s = s.substr(1, s.size() - 2);
-    return s;
-}
-
-} // namespace
-
-bool parseMapEntry(const std::string& text, std::map<std::string, std::string>& names)
-{
-    const std::size_t equals = text.find('=');
-    if (equals == std::string::npos)
-        return false;
-    const std::string from = trimmed(text.substr(0, equals)), to = trimmed(text.substr(equals + 1));
-    if (from.empty() || to.empty())
-        return false;
-    names[from] = to;
-    return true;
-}
-
-Result<std::map<std::string, std::string>> readInfluenceNameMap(const std::string& path)
-{
-    using Out = Result<std::map<std::string, std::string>>;
-    std::ifstream in(path);
-    if (!in)
-        return Out::failure(makeError({path, 0, 0}, "cannot read the name map"));
-    std::map<std::string, std::string> names;
-    Diagnostics problems;
-    int number = 0;
-    for (std::string line; std::getline(in, line);) {
-        ++number;
-        if (const std::size_t hash = line.find('#'); hash != std::string::npos)
-            line.erase(hash);
-        if (trimmed(line).empty())
-            continue;
-        const std::size_t colon = line.find(": ") != std::string::npos ? line.find(": ") : line.find(':');
-        if (line.find('=') == std::string::npos && colon != std::string::npos)
-            line[colon] = '=';
-        if (!parseMapEntry(line, names))
-            problems.push_back(makeError({path, number, 1}, "expected 'OLD=NEW' or 'OLD: NEW' (an influence name and a rig joint name)"));
-    }
-    if (!problems.empty())
-        return Out::failure(std::move(problems));
-    return names;
 }
 
 std::function<bool(double)> progressPrinter(const std::string& what, bool forced)

@@ -1,6 +1,6 @@
 #pragma once
 // What the skin chunk commands (export, import, transfer) share: vertex
-// selections, the weight depot's layout, name map files, progress on stderr,
+// selections, the weight depot's layout, progress on stderr,
 // reading and merging chunk files, who exports when.
 #include "base/Result.h"
 #include "skin/SkinChunk.h"
@@ -37,12 +37,6 @@ std::vector<std::string> depotPaths(const std::string& dir, const std::string& a
 Result<std::vector<std::string>> depotFiles(const std::string& dir, const std::string& asset);
 // The asset a guide's depot folder is named by: the guide file's stem.
 std::string assetOf(const std::string& guidePath);
-
-// A name map file: one `OLD=NEW` or `OLD: NEW` per line (a flat YAML mapping
-// does), '#' comments, quotes around names optional. Errors: file:line.
-Result<std::map<std::string, std::string>> readInfluenceNameMap(const std::string& path);
-// `OLD=NEW` of --map; false when either side is empty.
-bool parseMapEntry(const std::string& text, std::map<std::string, std::string>& names);
 
 // Percent on stderr, at most every 0.2 s: a terminal gets one updating line
 // once the work has taken a second; with `forced` (--progress) a line per 10%

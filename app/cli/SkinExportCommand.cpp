@@ -7,6 +7,7 @@
 #include "cli/SkinChunkSupport.h"
 
 #include "eval/PoseTools.h"
+#include "io/AtomicFile.h"
 #include "io/SkinChunks.h"
 #include "skin/Retarget.h"
 
@@ -195,7 +196,10 @@ std::vector<skin::SkinChunk> exportChunks(const ExportArguments& e, const Charac
     return chunks;
 }
 
-// One file, or one file per mesh in the depot (each written atomically).
+// One file, or one file per mesh in the depot, all or nothing: every file is
+// written to a temp beside its target and checked before any is renamed, so a
+// failure (a folder or an unwritable file where one goes, a full disk) leaves
+// the depot's previous set as it was rather than a mix of old and new.
 Status saveChunks(const ExportArguments& e, const std::vector<skin::SkinChunk>& chunks)
 {
     if (e.depot.empty())
@@ -208,13 +212,24 @@ Status saveChunks(const ExportArguments& e, const std::vector<skin::SkinChunk>& 
     std::filesystem::create_directories(std::filesystem::path(paths.front()).parent_path(), ec);
     if (ec)
         return Status::failure(makeError({paths.front(), 0, 0}, "cannot make the weight depot's folder: " + ec.message()));
+    std::vector<std::string> encoded;
+    encoded.reserve(chunks.size());
+    std::vector<io::FileContent> files;
     for (std::size_t k = 0; k < chunks.size(); ++k) {
-        const Status saved = io::saveSkinChunkFile(paths[k], {chunks[k]});
-        if (saved.failed())
-            return saved;
-        std::cout << "skin chunk: " << paths[k] << '\n';
+        encoded.push_back(io::writeSkinChunks({chunks[k]}));
+        files.push_back({paths[k], encoded.back()});
     }
-    return {};
+    const Status saved = io::writeFilesAtomically(files);
+    if (saved.failed()) {
+        Diagnostics why = saved.diagnostics();
+        Diagnostic kept = makeWarning({paths.front(), 0, 0}, "nothing was written: the weight depot keeps its previous files");
+        kept.severity = Severity::Note;
+        why.push_back(std::move(kept));
+        return Status::failure(std::move(why));
+    }
+    for (const std::string& path : paths)
+        std::cout << "skin chunk: " << path << '\n';
+    return saved;
 }
 
 std::optional<skin::ChunkExportOptions> exportOptions(const ExportArguments& e, const Character& c, std::optional<model::Rig>& posed)

@@ -8,6 +8,7 @@
 #include "cli/SkinImportOptions.h"
 
 #include "io/AtomicFile.h"
+#include "io/InfluenceNameMap.h"
 #include "io/WeightsFile.h"
 #include "skin/ImportScope.h"
 #include "skin/Retarget.h"
@@ -39,7 +40,7 @@ int parseImportOption(const std::vector<std::string>& args, std::size_t& i, Impo
             return bad("map, create or stop");
         m.influences.missing = *rule;
     } else if (a == "--map") {
-        if (!parseMapEntry(value, m.influences.names))
+        if (!io::parseInfluenceMapEntry(value, m.influences.names))
             return bad("OLD=NEW (an influence name in the chunks and a skin joint name of the rig)");
     } else if (a == "--name-map" || a == "--depot" || a == "--asset" || a == "--json") {
         if (value.empty())
@@ -83,7 +84,7 @@ int parseImport(const std::vector<std::string>& args, ImportArguments& m)
 std::optional<std::vector<skin::SkinChunk>> readSources(ImportArguments& m)
 {
     if (!m.nameMap.empty()) {
-        auto names = readInfluenceNameMap(m.nameMap);
+        auto names = io::readInfluenceNameMap(m.nameMap);
         print(names.diagnostics());
         if (!names)
             return std::nullopt;

@@ -155,21 +155,11 @@ struct Gatherer {
         return index;
     }
 
-    int bindingOf(const std::string& modelPath, const std::string& mesh)
-    {
-        for (std::size_t b = 0; b < bindings.size(); ++b)
-            if (!used[b] && bindings[b].model == modelPath && bindings[b].mesh == mesh) {
-                used[b] = true;
-                return int(b);
-            }
-        return -1;
-    }
-
-    void addMesh(const CharacterModel& m, const model::Mesh& source, const std::vector<int>& materials)
+    // `b`: the mesh's record (model::pairBindings), -1 for none.
+    void addMesh(const CharacterModel& m, const model::Mesh& source, int b, const std::vector<int>& materials)
     {
         const int material = source.material >= 0 && std::size_t(source.material) < materials.size() ? materials[std::size_t(source.material)] : -1;
         SkinnedMesh mesh = geometryOf(source, material);
-        const int b = bindingOf(m.path, source.name);
         std::string problem;
         if (b < 0) {
             problem = "it has no skin weights; bind it";
@@ -214,7 +204,15 @@ CharacterExport characterExport(const model::Rig& rig, const std::vector<model::
         return failed;
     }
     Gatherer g{bindings, *bones, *joints, {}, {}, std::vector<bool>(bindings.size(), false)};
+    std::vector<std::string> paths;
+    std::vector<const model::Model*> read;
     for (const CharacterModel& m : models) {
+        paths.push_back(m.path);
+        read.push_back(m.model);
+    }
+    const auto pairs = model::pairBindings(paths, read, bindings);
+    for (std::size_t i = 0; i < models.size(); ++i) {
+        const CharacterModel& m = models[i];
         if (!m.model) {
             g.out.problems.push_back(makeError({m.path, 0, 0}, "the guide's model " + fileName(m.path) +
                                                                     " could not be read; its meshes are not exported"));
@@ -223,8 +221,12 @@ CharacterExport characterExport(const model::Rig& rig, const std::vector<model::
             continue;
         }
         const std::vector<int> materials = g.addMaterials(m);
-        for (const model::Mesh& mesh : m.model->meshes)
-            g.addMesh(m, mesh, materials);
+        for (std::size_t k = 0; k < m.model->meshes.size(); ++k) {
+            const int b = pairs[i][k];
+            if (b >= 0)
+                g.used[std::size_t(b)] = true;
+            g.addMesh(m, m.model->meshes[k], b, materials);
+        }
     }
     for (std::size_t b = 0; b < bindings.size(); ++b)
         if (!g.used[b])

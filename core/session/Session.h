@@ -201,18 +201,27 @@ public:
     // chunk file holds one chunk per name) or when nothing is left to export.
     Result<std::vector<skin::SkinChunk>> exportSkinChunks(const SkinScope& scope, skin::ChunkExportOptions stamp = {}) const;
     // An import of `chunks` (many files' chunks: merged here, the newest of a
-    // name wins) onto the meshes in `onto`. Refused for bad options, no target,
-    // or a selected-vertices import onto a mesh without applied weights.
-    Result<SkinImportJob> prepareSkinImport(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options, const SkinScope& onto) const;
+    // name wins) onto the meshes in `onto`, their influences resolved onto the
+    // built rig's skin joints by `influences` (skin/InfluenceMap.h: identity,
+    // name, name map; missing ones stop, listed, or are re-homed). Refused
+    // without a built rig, for bad options, missing influences under stop or
+    // map, no target, or selected vertices of a mesh without applied weights.
+    Result<SkinImportJob> prepareSkinImport(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options, const SkinScope& onto,
+                                            const skin::InfluenceMapOptions& influences = {}) const;
+    // The weighted influences of `chunks` the rig's skin joints and the name
+    // map leave unplaced (skin::missingInfluences), for a list in the editor.
+    std::vector<skin::InfluenceMatch> missingInfluences(const std::vector<skin::SkinChunk>& chunks,
+                                                        const skin::InfluenceMapOptions& influences) const;
     // A run job's weights as one undo step named `what` (ChangeKind::Weights):
     // a whole mesh's record is replaced (or added); with selected vertices only
-    // those change. The stored influences are the chunks' skin joint keys,
-    // carried onto the rig by identity like any binding. Refused, changing
+    // those change. The stored influences are the rig's skin joint keys the
+    // prepare resolved them onto. Refused, changing
     // nothing, when the job has not run or the models changed since prepare.
     Result<std::vector<skin::MeshImportReport>> applySkinImport(SkinImportJob job, const std::string& what);
     // prepare + run + apply on this thread.
     Result<std::vector<skin::MeshImportReport>> importSkinChunks(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options,
-                                                                 const SkinScope& onto, const std::string& what = "Import skin weights");
+                                                                 const SkinScope& onto, const skin::InfluenceMapOptions& influences = {},
+                                                                 const std::string& what = "Import skin weights");
 
     // --- re-fitting (SessionRefit.cpp). A binding whose mesh changed topology
     // is re-fitted from the previous mesh's chunk (its bind positions and
@@ -336,6 +345,8 @@ private:
     void updatePalette();
     // The character meshes a scope covers, each with its vertices (empty: all).
     Result<std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>>> scopeMeshes(const SkinScope& scope) const;
+    // The export names of the skin bones (their rig nodes' names), one per bone.
+    std::vector<std::string> skinBoneNames() const;
     // The rig in the evaluated pose; none when it is the bind pose.
     std::optional<model::Rig> posedRigNow() const;
     // The chunk holding binding `b`'s previous mesh, or null.

@@ -144,10 +144,28 @@ Result<std::vector<skin::SkinChunk>> Session::exportSkinChunks(const SkinScope& 
     return chunks;
 }
 
+std::vector<std::string> Session::skinBoneNames() const
+{
+    std::vector<std::string> names;
+    for (const skin::SkinBone& bone : m_skinBones)
+        names.push_back(m_rig && bone.node < m_rig->nodes.size() ? m_rig->nodes[bone.node].name : "");
+    return names;
+}
+
+std::vector<skin::InfluenceMatch> Session::missingInfluences(const std::vector<skin::SkinChunk>& chunks,
+                                                             const skin::InfluenceMapOptions& influences) const
+{
+    return skin::missingInfluences(chunks, m_skinBones, skinBoneNames(), influences);
+}
+
 Result<SkinImportJob> Session::prepareSkinImport(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options,
-                                                 const SkinScope& onto) const
+                                                 const SkinScope& onto, const skin::InfluenceMapOptions& influences) const
 {
     using Out = Result<SkinImportJob>;
+    if (!m_rig || m_skinBones.empty())
+        return Out::refused("build the rig before importing skin weights: their influences land on its skin joints");
+    if (influences.missing == skin::MissingInfluences::Map && influences.names.empty())
+        return Out::refused("missing influences: map needs a name map (influence name = rig skin joint name)");
     const Status valid = skin::validateTransferOptions(options);
     if (valid.failed())
         return Out::failure(valid.diagnostics());
@@ -159,9 +177,16 @@ Result<SkinImportJob> Session::prepareSkinImport(std::vector<skin::SkinChunk> ch
         return Out::failure(meshes.takeDiagnostics());
     SkinImportJob job;
     job.notes = merged.takeDiagnostics();
-    job.chunks = merged.take();
-    if (job.chunks.empty())
+    if (merged->empty())
         return Out::refused("no skin chunk to import");
+    const std::vector<std::string> names = skinBoneNames();
+    auto resolved = skin::resolveInfluences(*merged, m_skinBones, names, influences);
+    if (!resolved)
+        return Out::failure(resolved.takeDiagnostics());
+    for (Diagnostic& d : resolved.takeDiagnostics())
+        job.notes.push_back(std::move(d));
+    job.chunks = skin::applyInfluences(merged.take(), *resolved, m_skinBones, names);
+    job.influences = resolved.take();
     job.options = std::move(options);
     for (auto& [index, vertices] : *meshes) {
         std::sort(vertices.begin(), vertices.end());
@@ -211,6 +236,9 @@ std::vector<VertexRoute> SkinImportJob::routes(std::size_t t) const
                 for (std::uint32_t id : c.vertexIds)
                     if (id < count)
                         out[id] = VertexRoute::OneToOne;
+    for (std::uint32_t v : r.inpaintedVertices)
+        if (v < count)
+            out[v] = VertexRoute::Inpainted;
     return out;
 }
 
@@ -243,10 +271,11 @@ Result<std::vector<skin::MeshImportReport>> Session::applySkinImport(SkinImportJ
 }
 
 Result<std::vector<skin::MeshImportReport>> Session::importSkinChunks(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options,
-                                                                     const SkinScope& onto, const std::string& what)
+                                                                     const SkinScope& onto, const skin::InfluenceMapOptions& influences,
+                                                                     const std::string& what)
 {
     using Out = Result<std::vector<skin::MeshImportReport>>;
-    auto job = prepareSkinImport(std::move(chunks), std::move(options), onto);
+    auto job = prepareSkinImport(std::move(chunks), std::move(options), onto, influences);
     if (!job)
         return Out::failure(job.takeDiagnostics());
     const Status ran = job->run();

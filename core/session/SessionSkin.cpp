@@ -124,6 +124,13 @@ void Session::matchMeshes(const std::vector<std::size_t>* only)
     m_characterMeshes.clear();
     Diagnostics notes;
     std::vector<bool> used(m_document.bindings.size(), false);
+    std::vector<std::string> paths;
+    std::vector<const model::Model*> read;
+    for (const LoadedModel& loaded : m_models) {
+        paths.push_back(loaded.path);
+        read.push_back(loaded.model.get());
+    }
+    const auto pairs = model::pairBindings(paths, read, m_document.bindings);
     for (std::size_t m = 0; m < m_models.size(); ++m) {
         const LoadedModel& loaded = m_models[m];
         if (!loaded.model)
@@ -133,13 +140,9 @@ void Session::matchMeshes(const std::vector<std::size_t>* only)
             CharacterMesh out;
             out.model = m;
             out.mesh = i;
-            for (std::size_t b = 0; b < m_document.bindings.size(); ++b)
-                if (!used[b] && m_document.bindings[b].model == loaded.path && m_document.bindings[b].mesh == mesh.name) {
-                    used[b] = true;
-                    out.binding = int(b);
-                    break;
-                }
+            out.binding = pairs[m][i];
             if (out.binding >= 0) {
+                used[std::size_t(out.binding)] = true;
                 const model::MeshBinding& binding = m_document.bindings[std::size_t(out.binding)];
                 out.changed = !model::bindingFits(binding, mesh);
                 if (out.changed) {

@@ -15,6 +15,7 @@
 // returning false) makes run fail; nothing in the session changes.
 #include "base/Result.h"
 #include "base/Status.h"
+#include "skin/InfluenceMap.h"
 #include "skin/SkinChunk.h"
 #include "skin/Transfer.h"
 
@@ -41,13 +42,15 @@ struct SkinScope {
 };
 
 // Per target vertex, how a run placed its weights, as far as the decision
-// tree's routes say it: Transferred covers every fallback method (closest
-// point, neighbours, inpainting; the report counts each).
-enum class VertexRoute : std::uint8_t { OneToOne, SingleInfluence, Transferred };
+// tree's routes and the fallback say it: Transferred is the chosen method's
+// copy (closest point or neighbours, the normal filter's fallback too),
+// Inpainted the vertices weight inpainting solved for.
+enum class VertexRoute : std::uint8_t { OneToOne, SingleInfluence, Transferred, Inpainted };
 
 // One import in flight. Owns copies of everything run() reads.
 struct SkinImportJob {
-    std::vector<skin::SkinChunk> chunks; // merged: one per mesh name, the newest kept
+    std::vector<skin::SkinChunk> chunks; // merged: one per mesh name, the newest kept; weights on the rig's skin bones
+    skin::InfluenceResolution influences; // how each chunk influence landed on a skin bone
     skin::TransferOptions options;
     struct Target {
         std::size_t characterMesh = 0;               // into Session::characterMeshes() at prepare

@@ -193,6 +193,22 @@ Result<InfluenceResolution> resolveInfluences(const std::vector<SkinChunk>& chun
     return Result<InfluenceResolution>(std::move(out), std::move(problems));
 }
 
+std::vector<InfluenceMatch> missingInfluences(const std::vector<SkinChunk>& chunks, const std::vector<SkinBone>& bones,
+                                              const std::vector<std::string>& boneNames, const InfluenceMapOptions& options)
+{
+    if (bones.empty() || boneNames.size() != bones.size())
+        return {};
+    InfluenceMapOptions stop = options;
+    stop.missing = MissingInfluences::Stop; // rule 4 lists them instead of re-homing
+    Lookup lookup = lookupOf(bones, boneNames, stop);
+    InfluenceResolution placed;
+    std::vector<InfluenceMatch> missing;
+    Diagnostics notes;
+    for (const SkinChunk& c : chunks)
+        resolveChunk(c, lookup, boneNames, placed, missing, notes);
+    return missing;
+}
+
 namespace {
 
 bool alreadyOnBones(const SkinChunk& c, const std::vector<std::int32_t>& target, const std::vector<SkinBone>& bones)

@@ -62,6 +62,13 @@ struct InfluenceResolution {
 Result<InfluenceResolution> resolveInfluences(const std::vector<SkinChunk>& chunks, const std::vector<SkinBone>& bones,
                                               const std::vector<std::string>& boneNames, const InfluenceMapOptions& options);
 
+// The weighted influences rules 1-3 leave unplaced (what Stop would list),
+// whatever options.missing says: one entry per name (`target` empty) with the
+// meshes whose chunks weight it. Empty when every influence is placed or
+// there is no bone.
+std::vector<InfluenceMatch> missingInfluences(const std::vector<SkinChunk>& chunks, const std::vector<SkinBone>& bones,
+                                              const std::vector<std::string>& boneNames, const InfluenceMapOptions& options);
+
 // The chunks with their weights on `bones` (joints and parents the bones', in
 // order; `joints` named after them): each influence's share moved to its
 // target, shares landing on one bone added (order of first appearance). A

@@ -131,12 +131,13 @@ Result<model::MeshWeights> oneToOne(const SkinChunk& c, const model::Mesh& mesh,
         from[c.vertexIds[i]] = std::int64_t(i);
     model::Mesh left;
     left.name = mesh.name;
-    std::vector<std::uint32_t> leftIndex(n, 0);
+    std::vector<std::uint32_t> leftIndex(n, 0), leftVertex; // mesh vertex -> left vertex and back
     if (c.vertexIds.size() < n) {
         const std::vector<glm::vec3> normals = mesh.normals.size() == n ? mesh.normals : vertexNormals(mesh);
         for (std::size_t v = 0; v < n; ++v)
             if (from[v] < 0) {
                 leftIndex[v] = std::uint32_t(left.positions.size());
+                leftVertex.push_back(std::uint32_t(v));
                 left.positions.push_back(mesh.positions[v]);
                 left.normals.push_back(normals[v]);
             }
@@ -146,10 +147,13 @@ Result<model::MeshWeights> oneToOne(const SkinChunk& c, const model::Mesh& mesh,
         auto source = TransferSource::fromChunk(c, options.usePreDeformed);
         if (!source)
             return Result<model::MeshWeights>::failure(source.takeDiagnostics());
+        const std::size_t before = report.inpaintedVertices.size();
         auto transferred = transferWeights(*source, left, options, &report);
         if (!transferred)
             return transferred;
         rest = transferred.take();
+        for (std::size_t k = before; k < report.inpaintedVertices.size(); ++k) // ids of `left` -> of the mesh (still ascending)
+            report.inpaintedVertices[k] = leftVertex[report.inpaintedVertices[k]];
     }
     model::MeshWeights out;
     out.joints = c.weights.joints;

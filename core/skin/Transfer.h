@@ -89,6 +89,7 @@ struct MeshImportReport {
     std::size_t oneToOne = 0, singleInfluence = 0, closestPoint = 0, closestNeighbours = 0;
     std::size_t normalFilterFallbacks = 0; // counted in closestPoint too
     std::size_t inpainted = 0;             // vertices whose weights were inpainted (not counted in closestPoint)
+    std::vector<std::uint32_t> inpaintedVertices; // their ids, ascending (what a preview shows by step)
     std::size_t smoothed = 0;              // vertices a smoothing step changed
     double milliseconds = 0.0;
 };

@@ -319,7 +319,7 @@ Solved solveRegions(const Problem& p, const std::vector<std::vector<std::uint32_
 
 Result<std::size_t> inpaintWeights(const model::Mesh& target, const std::vector<std::uint8_t>& matched, int capacity,
                                    std::vector<model::Influence>& slots, std::vector<std::uint8_t>& counts,
-                                   const std::function<bool(double)>& progress)
+                                   const std::function<bool(double)>& progress, std::vector<std::uint32_t>* inpaintedVertices)
 {
     auto stopped = [&](Solved why) {
         return Result<std::size_t>::failure(makeError(
@@ -347,6 +347,8 @@ Result<std::size_t> inpaintWeights(const model::Mesh& target, const std::vector<
         std::copy(first, first + resultCounts[std::size_t(u)], slots.begin() + std::ptrdiff_t(v * std::size_t(capacity)));
         counts[v] = resultCounts[std::size_t(u)];
         ++inpainted;
+        if (inpaintedVertices)
+            inpaintedVertices->push_back(std::uint32_t(v));
     }
     return inpainted;
 }

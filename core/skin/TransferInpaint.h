@@ -21,11 +21,13 @@ namespace rs::skin {
 // `slots` holds `capacity` influences per file vertex of `target`, `counts`
 // how many are used; the vertices not `matched` are rewritten (at most
 // `capacity` influences, normalised). Returns how many file vertices were
-// inpainted; fails (slots unchanged) when a system cannot be factorised or
-// `progress` (optional; hears the fraction of the inpainting done, from the
-// calling thread, between regions and joint groups) returns false.
+// inpainted (and, with `inpaintedVertices`, appends their ids, ascending);
+// fails (slots unchanged) when a system cannot be factorised or `progress`
+// (optional; hears the fraction of the inpainting done, from the calling
+// thread, between regions and joint groups) returns false.
 Result<std::size_t> inpaintWeights(const model::Mesh& target, const std::vector<std::uint8_t>& matched, int capacity,
                                    std::vector<model::Influence>& slots, std::vector<std::uint8_t>& counts,
-                                   const std::function<bool(double)>& progress = {});
+                                   const std::function<bool(double)>& progress = {},
+                                   std::vector<std::uint32_t>* inpaintedVertices = nullptr);
 
 } // namespace rs::skin

@@ -570,22 +570,25 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
     }
     Diagnostics notes;
     std::size_t inpainted = 0;
+    std::vector<std::uint32_t> inpaintedIds;
     if (inpainting) {
         bool cancelled = false;
         std::function<bool(double)> progress;
         if (options.progress)
             progress = [&](double f) { return !(cancelled = !options.progress(queryShare + (1.0 - queryShare) * f)); };
-        auto solved = inpaintWeights(target, matched, slots.capacity, slots.slot, slots.count, progress);
+        auto solved = inpaintWeights(target, matched, slots.capacity, slots.slot, slots.count, progress, report ? &inpaintedIds : nullptr);
         if (cancelled)
             return Out::failure(solved.takeDiagnostics());
         if (solved)
             inpainted = *solved;
-        else
+        else {
+            inpaintedIds.clear();
             for (Diagnostic diagnostic : solved.diagnostics()) {
                 diagnostic.severity = Severity::Warning;
                 diagnostic.message += "; its vertices keep the closest point's weights";
                 notes.push_back(std::move(diagnostic));
             }
+        }
     }
     std::size_t smoothed = 0;
     if (options.smoothSteps > 0 && n > d.positions.size())
@@ -613,6 +616,7 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
         report->normalFilterFallbacks += std::size_t(std::count(route.begin(), route.end(), kFilterFallback));
         report->smoothed += smoothed;
         report->inpainted += inpainted;
+        report->inpaintedVertices.insert(report->inpaintedVertices.end(), inpaintedIds.begin(), inpaintedIds.end());
         report->closestPoint -= std::min(report->closestPoint, inpainted);
         report->milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }

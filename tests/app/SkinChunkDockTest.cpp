@@ -4,10 +4,16 @@
 #include "EditorTestSupport.h"
 
 #include "SkinChunkPanel.h"
+#include "SkinInfluenceBox.h"
+#include "io/SkinChunks.h"
 #include "io/WeightsFile.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
 #include <QPlainTextEdit>
 #include <QTreeWidget>
 
@@ -30,6 +36,31 @@ std::size_t selectedVertexCount(const session::Session& s)
     for (const auto& [mesh, vertices] : s.selectedVertices())
         n += vertices.size();
     return n;
+}
+
+// The chunk file with the elbow's influence renamed (another identity and
+// name, as from a rig of another build); the elbow joint's name.
+std::string writeRenamedElbow(const QString& from, const QString& to, const session::Session& s)
+{
+    auto chunks = io::loadSkinChunkFile(from.toStdString());
+    EXPECT_TRUE(chunks.ok());
+    const auto node = *s.rig()->findPath("arm.L::skin.limb.1");
+    for (skin::SkinChunk& c : *chunks)
+        for (std::size_t j = 0; j < c.joints.size(); ++j)
+            if (c.joints[j].key == s.rig()->nodes[node].key) {
+                c.weights.joints[j] = c.joints[j].key = {999, "", "skin.elbow_old"};
+                c.joints[j].name = "elbow_old";
+            }
+    EXPECT_TRUE(io::saveSkinChunkFile(to.toStdString(), *chunks).ok());
+    return s.rig()->nodes[node].name;
+}
+
+QStringList listed(const QListWidget* list)
+{
+    QStringList out;
+    for (int i = 0; i < list->count(); ++i)
+        out.push_back(list->item(i)->text());
+    return out;
 }
 
 } // namespace
@@ -95,4 +126,55 @@ TEST(SkinChunkDock, ARemeshedModelIsRefittedOnOpenFromTheSavedChunks)
     EXPECT_FALSE(s.history().isClean()) << "the re-fitted weights are not saved yet";
     e.window.action("undo")->trigger();
     EXPECT_EQ(s.document().bindings[0].vertexCount, 440u) << "undo brings the previous record back";
+}
+
+TEST(SkinChunkDock, MissingInfluencesStopWithAListOrMapByANameMapFileOrAreReHomed)
+{
+    Editor e;
+    bindSleeve(e, "sleeve-influences.obj");
+    auto& s = e.window.session();
+    const model::MeshWeights bound = s.document().bindings[0].weights;
+    e.window.action("skinChunks")->trigger();
+    widgets::SkinChunkPanel* panel = e.window.chunkPanel();
+    widgets::SkinInfluenceBox* box = panel->influences();
+    const QString exported = QString::fromStdString(outputPath("sleeve-influences.rschunks"));
+    ASSERT_TRUE(e.window.exportSkinChunks(exported));
+    const QString renamed = QString::fromStdString(outputPath("sleeve-renamed.rschunks"));
+    const std::string elbow = writeRenamedElbow(exported, renamed, s);
+    ASSERT_TRUE(s.applyWeightOperation(session::Session::WeightOperation::Limit, 1).ok());
+    const std::size_t steps = s.history().size();
+    panel->setImportFiles({renamed});
+
+    // Stop (the default): nothing changes, the dock lists the influence and the mesh weighting it.
+    EXPECT_EQ(box->missing(), skin::MissingInfluences::Stop);
+    e.window.importSkinChunks(panel->importFiles(), false);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isImportingChunks(); }, 20000));
+    EXPECT_EQ(s.history().size(), steps);
+    EXPECT_FALSE(box->resultList()->isHidden());
+    EXPECT_TRUE(box->resultHeading()->text().contains("The import stopped: 1 influence")) << box->resultHeading()->text().toStdString();
+    EXPECT_EQ(listed(box->resultList()), QStringList{"elbow_old  (weights 'sleeve')"});
+    EXPECT_TRUE(logSays(e.window, "Nothing imported: 1 influences are no skin joint of the rig"));
+
+    // Map, chosen in the dock, with a name map file: the bound weights exactly, one undo step.
+    const std::string map = outputPath("elbow.map");
+    std::ofstream(map) << "# old = new\nelbow_old = " << elbow << "\n";
+    box->findChild<QComboBox*>("missingInfluences")->setCurrentIndex(1);
+    box->findChild<QLineEdit*>("nameMapFile")->setText(QString::fromStdString(map));
+    EXPECT_EQ(box->missing(), skin::MissingInfluences::Map);
+    e.window.importSkinChunks(panel->importFiles(), false);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isImportingChunks(); }, 20000));
+    EXPECT_EQ(s.history().size(), steps + 1);
+    EXPECT_TRUE(s.document().bindings[0].weights == bound);
+    EXPECT_EQ(box->resultHeading()->text().toStdString(), "1 influences mapped by name, 0 re-homed on an ancestor");
+    EXPECT_EQ(listed(box->resultList()), QStringList{QString::fromStdString("elbow_old -> " + elbow + "  (mapped; weights 'sleeve')")});
+
+    // Create without the map: re-homed on an ancestor, said in the dock.
+    box->setNameMapFile({});
+    box->findChild<QComboBox*>("missingInfluences")->setCurrentIndex(2);
+    e.window.importSkinChunks(panel->importFiles(), true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isImportingChunks(); }, 20000));
+    EXPECT_EQ(box->resultHeading()->text().toStdString(), "0 influences mapped by name, 1 re-homed on an ancestor");
+    ASSERT_EQ(box->resultList()->count(), 1);
+    EXPECT_TRUE(box->resultList()->item(0)->text().startsWith("elbow_old -> ")) << box->resultList()->item(0)->text().toStdString();
+    EXPECT_EQ(s.history().size(), steps + 1) << "a preview applies nothing";
 }

@@ -9,6 +9,7 @@
 // transfers every target vertex (file reading is not timed). Target: <= 0.4 s
 // on two cores.
 #include "skin/NearestPoints.h"
+#include "skin/Refit.h"
 #include "skin/Transfer.h"
 
 #include <benchmark/benchmark.h>
@@ -41,21 +42,12 @@ model::Mesh sheet(const std::string& name, int n, float phase, float lift)
 skin::SkinChunk sourceChunk()
 {
     const model::Mesh mesh = sheet("cloth", 316, 0.0f, 0.0f);
-    skin::SkinChunk c;
-    c.mesh = mesh.name;
-    c.totalVertexCount = std::uint32_t(mesh.vertexCount());
-    c.fingerprint = model::topologyFingerprint(mesh);
-    for (std::uint32_t v = 0; v < mesh.vertexCount(); ++v)
-        c.vertexIds.push_back(v);
-    c.positions = mesh.positions;
-    c.normals = skin::vertexNormals(mesh);
-    c.triangles = mesh.indices;
+    model::MeshWeights weights; // 80 joints on a 10 x 8 lattice, each vertex on its cell's four corners
     for (int j = 0; j < 80; ++j) {
-        c.weights.joints.push_back({1, "", "skin.j" + std::to_string(j)});
-        c.weights.parents.push_back(j == 0 ? -1 : 0);
+        weights.joints.push_back({1, "", "skin.j" + std::to_string(j)});
+        weights.parents.push_back(j == 0 ? -1 : 0);
     }
-    c.joints.resize(80);
-    c.weights.offsets.push_back(0);
+    weights.offsets.push_back(0);
     for (const glm::vec3& p : mesh.positions) {
         const int jx = std::min(int(p.x * 9.0f), 8), jy = std::min(int(p.y * 7.0f), 6);
         const int corners[4] = {jy * 10 + jx, jy * 10 + jx + 1, (jy + 1) * 10 + jx, (jy + 1) * 10 + jx + 1};
@@ -66,11 +58,10 @@ skin::SkinChunk sourceChunk()
             sum += w[k];
         }
         for (int k = 0; k < 4; ++k)
-            c.weights.influences.push_back({std::uint32_t(corners[k]), w[k] / sum});
-        c.weights.offsets.push_back(std::uint32_t(c.weights.influences.size()));
+            weights.influences.push_back({std::uint32_t(corners[k]), w[k] / sum});
+        weights.offsets.push_back(std::uint32_t(weights.influences.size()));
     }
-    c.neighbourOffsets.assign(mesh.vertexCount() + 1, 0);
-    return c;
+    return skin::bindingChunk({"", mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), std::move(weights)}, mesh, nullptr);
 }
 
 double processSeconds()

@@ -5,6 +5,7 @@
 #include "TestSupport.h"
 
 #include "skin/ImportScope.h"
+#include "skin/Refit.h"
 #include "skin/Transfer.h"
 
 #include <gtest/gtest.h>
@@ -44,21 +45,10 @@ model::MeshWeights ramp(const model::Mesh& mesh)
     return w;
 }
 
+// The whole mesh's bind-pose chunk, its influences named by tag (no rig).
 skin::SkinChunk bindChunk(const model::Mesh& mesh, const model::MeshWeights& weights)
 {
-    skin::SkinChunk c;
-    c.mesh = mesh.name;
-    c.totalVertexCount = std::uint32_t(mesh.vertexCount());
-    c.fingerprint = model::topologyFingerprint(mesh);
-    for (std::uint32_t v = 0; v < mesh.vertexCount(); ++v)
-        c.vertexIds.push_back(v);
-    c.positions = mesh.positions;
-    c.normals = skin::vertexNormals(mesh);
-    c.weights = weights;
-    c.joints.resize(weights.joints.size());
-    c.triangles = mesh.indices;
-    c.neighbourOffsets.assign(mesh.vertexCount() + 1, 0);
-    return c;
+    return skin::bindingChunk({"", mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), weights}, mesh, nullptr);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // The skinny jeans and parachute pants fixture (JeansFixture.h).
 #include "JeansFixture.h"
+#include "skin/Refit.h"
 
 #include "skin/SkinChunk.h"
 
@@ -68,19 +69,7 @@ model::MeshWeights legWeights(const std::vector<float>& along, std::size_t leftC
 
 skin::SkinChunk chunkOf(const model::Mesh& mesh, const model::MeshWeights& weights)
 {
-    skin::SkinChunk c;
-    c.mesh = mesh.name;
-    c.totalVertexCount = std::uint32_t(mesh.vertexCount());
-    c.fingerprint = model::topologyFingerprint(mesh);
-    for (std::uint32_t v = 0; v < mesh.vertexCount(); ++v)
-        c.vertexIds.push_back(v);
-    c.positions = mesh.positions;
-    c.normals = skin::vertexNormals(mesh);
-    c.weights = weights;
-    c.joints.resize(weights.joints.size());
-    c.triangles = mesh.indices;
-    c.neighbourOffsets.assign(mesh.vertexCount() + 1, 0);
-    return c;
+    return skin::bindingChunk({"", mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), weights}, mesh, nullptr);
 }
 
 } // namespace

@@ -9,6 +9,7 @@
 #include "rigging/RigBuilder.h"
 #include "skin/AutoWeights.h"
 #include "skin/NearestPoints.h"
+#include "skin/Refit.h"
 #include "skin/Surface.h"
 #include "skin/Transfer.h"
 
@@ -75,19 +76,8 @@ model::MeshWeights allOn(const model::Mesh& mesh, std::uint32_t joint)
 // The chunk of a whole mesh in bind pose.
 skin::SkinChunk chunkOf(const model::Mesh& mesh, const model::MeshWeights& weights, std::int64_t time = 1)
 {
-    skin::SkinChunk c;
-    c.mesh = mesh.name;
-    c.exportedAtMicroseconds = time;
-    c.totalVertexCount = std::uint32_t(mesh.vertexCount());
-    c.fingerprint = model::topologyFingerprint(mesh);
-    for (std::uint32_t v = 0; v < mesh.vertexCount(); ++v)
-        c.vertexIds.push_back(v);
-    c.positions = mesh.positions;
-    c.normals = skin::vertexNormals(mesh);
-    c.weights = weights;
-    c.joints.resize(weights.joints.size());
-    c.triangles = mesh.indices;
-    c.neighbourOffsets.assign(mesh.vertexCount() + 1, 0);
+    skin::SkinChunk c = skin::bindingChunk({"", mesh.name, mesh.vertexCount(), model::topologyFingerprint(mesh), weights}, mesh, nullptr);
+    c.exportedAtMicroseconds = time; // the merge tests say which is newer
     return c;
 }
 
@@ -273,6 +263,10 @@ TEST(Transfer, InpaintingFillsWhatTheClosestPointWouldTakeFromTheWrongSurface)
     ASSERT_TRUE(inpainted.ok()) << formatAll(inpainted.diagnostics());
     EXPECT_EQ(reports[0].inpainted, wrong);
     EXPECT_EQ(reports[0].closestPoint + reports[0].inpainted, target.vertexCount());
+    const auto& ids = reports[0].inpaintedVertices; // by vertex: the ones closest point got wrong
+    ASSERT_EQ(ids.size(), wrong);
+    for (std::size_t v = 0; v < target.vertexCount(); ++v)
+        EXPECT_EQ(std::binary_search(ids.begin(), ids.end(), std::uint32_t(v)), dominant(closest->front(), v) != 0) << "vertex " << v;
     for (std::size_t v = 0; v < target.vertexCount(); ++v) {
         ASSERT_EQ(dominant(inpainted->front(), v), 0u) << "vertex " << v;
         float sum = 0.0f;

@@ -125,6 +125,21 @@ grep -q '"written": 1008, "kept": 0' replace.json || fail "without --append ever
 cp envelope.weights g.weights
 "$cli" skin export g.yml --depot depot > depot.txt || fail "depot export"
 [ -f depot/g/body.rschunks ] && [ -f depot/g/belt.rschunks ] || fail "depot files"
+# All or nothing: a folder where one mesh's file goes fails the export before
+# any file is replaced (either mesh first), and no temp file is left behind.
+for blocked in belt body; do
+    cp -r depot/g depot-before
+    rm depot/g/$blocked.rschunks && mkdir depot/g/$blocked.rschunks
+    sleep 1 # a later export time: every chunk file's bytes would differ
+    if "$cli" skin export g.yml --depot depot > blocked.txt 2> blocked-errors.txt; then fail "a depot export over a folder succeeded"; fi
+    grep -q "nothing was written: the weight depot keeps its previous files" blocked-errors.txt || fail "blocked depot message"
+    rmdir depot/g/$blocked.rschunks
+    for f in depot-before/*.rschunks; do
+        [ "$(basename "$f")" = $blocked.rschunks ] || cmp -s "$f" depot/g/"$(basename "$f")" || fail "a failed depot export replaced $(basename "$f")"
+    done
+    [ -z "$(ls -A depot/g | grep '\.tmp$' || true)" ] || fail "a failed depot export left temp files: $(ls -A depot/g)"
+    rm -rf depot/g && mv depot-before depot/g
+done
 cp closest.rschunks depot/g/old-body.rschunks
 sleep 1
 "$cli" skin export g.yml --depot depot --mesh body > /dev/null
