@@ -97,7 +97,9 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
     QTest::keyClick(w.viewportWidget(), Qt::Key_Down);
     EXPECT_EQ(w.session().selection().node, elbow);
 
-    // Mirror the left arm onto the right from the Pose menu.
+    // Mirror the left arm onto the right from the Pose menu, in FK (the IK
+    // control moved above is not among what is mirrored).
+    ASSERT_TRUE(w.session().setChannel(blend, 0.0, false).ok());
     w.session().selectControllers({elbow, settings}, false);
     w.action("mirrorPose")->trigger();
     EXPECT_EQ(w.session().history().undoText(), "Mirror pose");
