@@ -167,7 +167,10 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
     for (model::RigNodeIndex i = 0; i < rig->nodes.size(); ++i) {
         const model::RigNode& node = rig->nodes[i];
         const glm::dmat4 nodeWorld = world(i);
-        if (node.kind == model::RigNodeKind::Controller)
+        // Rig mode draws (and so picks) only what the pose shows: a limb's FK
+        // controls hide at full IK and its IK controls at full FK.
+        const bool shown = !posed || pose->isVisible(i);
+        if (node.kind == model::RigNodeKind::Controller && shown)
             for (const auto& curve : node.curves) {
                 SceneCurve c;
                 c.node = i;

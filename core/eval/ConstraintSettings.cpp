@@ -37,7 +37,17 @@ public:
         m_c.stretchChannel = optionalChannel(s.stretch, "stretch");
         m_c.softChannel = optionalChannel(s.soft, "soft");
     }
-    void operator()(const model::TwistConstraint& s) { m_c.fraction = s.fraction; }
+    void operator()(const model::TwistConstraint& s)
+    {
+        m_c.fraction = s.fraction;
+        m_c.nonRolling = s.nonRolling;
+    }
+    void operator()(const model::VisibilityConstraint& s)
+    {
+        m_c.valueChannel = channel(s.value, "value");
+        m_c.showAbove = s.when == model::ShowWhen::Above;
+        m_c.threshold = s.threshold;
+    }
     void operator()(const model::SplineConstraint& s) { m_c.stretchChannel = optionalChannel(s.stretch, "stretch"); }
     void operator()(const model::SpaceConstraint& s)
     {

@@ -6,9 +6,11 @@ namespace rs::eval {
 
 namespace {
 
-bool isWalkable(const model::RigNode& node)
+bool isWalkable(const model::Rig& rig, model::RigNodeIndex i, const std::vector<std::uint8_t>* shown)
 {
-    return node.kind == model::RigNodeKind::Controller && !node.hidden && node.isInVirtualHierarchy();
+    const model::RigNode& node = rig.nodes[i];
+    const bool visible = !shown || i >= shown->size() || (*shown)[i] != 0;
+    return node.kind == model::RigNodeKind::Controller && !node.hidden && node.isInVirtualHierarchy() && visible;
 }
 
 template <class Id>
@@ -24,18 +26,19 @@ Id sibling(const std::vector<Id>& siblings, Id from, int step)
 
 } // namespace
 
-model::RigNodeIndex pickwalk(const model::Rig& rig, model::RigNodeIndex from, WalkDirection direction)
+model::RigNodeIndex pickwalk(const model::Rig& rig, model::RigNodeIndex from, WalkDirection direction,
+                             const std::vector<std::uint8_t>* shown)
 {
     if (from >= rig.nodes.size())
         return from;
     const model::RigNode& node = rig.nodes[from];
     auto walkable = [&](std::vector<model::RigNodeIndex> nodes) {
-        nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [&](auto i) { return !isWalkable(rig.nodes[i]); }), nodes.end());
+        nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [&](auto i) { return !isWalkable(rig, i, shown); }), nodes.end());
         return nodes;
     };
     switch (direction) {
     case WalkDirection::Up:
-        return node.virtualParent != model::kNoNode && isWalkable(rig.nodes[node.virtualParent]) ? node.virtualParent : from;
+        return node.virtualParent != model::kNoNode && isWalkable(rig, node.virtualParent, shown) ? node.virtualParent : from;
     case WalkDirection::Down: {
         const auto children = walkable(rig.virtualChildren(from));
         return children.empty() ? from : children.front();
@@ -47,7 +50,7 @@ model::RigNodeIndex pickwalk(const model::Rig& rig, model::RigNodeIndex from, Wa
         return sibling(siblings, from, direction == WalkDirection::Right ? 1 : -1);
     }
     case WalkDirection::Mirror:
-        return node.twin != model::kNoNode ? node.twin : from;
+        return node.twin != model::kNoNode && (!shown || node.twin >= shown->size() || (*shown)[node.twin]) ? node.twin : from;
     }
     return from;
 }

@@ -8,11 +8,17 @@
 #include "model/GuideDocument.h"
 #include "model/Rig.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace rs::eval {
 
 enum class WalkDirection { Up, Down, Left, Right, Mirror };
 
-model::RigNodeIndex pickwalk(const model::Rig& rig, model::RigNodeIndex from, WalkDirection direction);
+// `shown` (EvalState::visible of the pose the animator sees; null: all)
+// skips controllers a visibility constraint hides, as if they were not there.
+model::RigNodeIndex pickwalk(const model::Rig& rig, model::RigNodeIndex from, WalkDirection direction,
+                             const std::vector<std::uint8_t>* shown = nullptr);
 // Instances: parent, first child, siblings; Mirror swaps a trailing L/R (l/r,
 // Left/Right) token of the name ("arm_L" <-> "arm_R") when that instance exists.
 model::InstanceId pickwalk(const model::GuideDocument& guide, model::InstanceId from, WalkDirection direction);

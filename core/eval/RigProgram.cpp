@@ -51,7 +51,8 @@ CompiledConstraint compileConstraint(const model::RigConstraint& rc, const model
     }
     if (c.kind == model::ConstraintKind::Twist && !before.empty()) {
         const CompiledConstraint& previous = before.back();
-        if (previous.kind == model::ConstraintKind::Twist && previous.targets == c.targets && !previous.driven.empty())
+        if (previous.kind == model::ConstraintKind::Twist && previous.targets == c.targets && !previous.driven.empty() &&
+            previous.nonRolling == c.nonRolling)
             c.shareTwistOf = previous.shareTwistOf >= 0 ? previous.shareTwistOf : previous.slot;
     }
     return c;
@@ -110,9 +111,17 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
                     placed[c.driven[k]] = false;
     for (model::RigNodeIndex i = 0; i < n; ++i)
         if (placed[i]) writers[i].push_back(i);
-    for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k)
-        for (model::RigNodeIndex d : p.m_constraints[k].driven)
-            writers[d].push_back(std::uint32_t(n + k));
+    // Visibility constraints place nothing: no writer, no step, no dependency.
+    auto isStep = [&](std::uint32_t k) {
+        return !p.m_constraints[k].driven.empty() && p.m_constraints[k].kind != model::ConstraintKind::Visibility;
+    };
+    for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k) {
+        if (!p.m_constraints[k].driven.empty() && !isStep(k))
+            p.m_visibility.push_back(k);
+        else
+            for (model::RigNodeIndex d : p.m_constraints[k].driven)
+                writers[d].push_back(std::uint32_t(n + k));
+    }
     std::vector<std::vector<std::uint32_t>> dependents(ops);
     std::vector<int> pending(ops, 0);
     auto depend = [&](std::uint32_t op, std::uint32_t on) {
@@ -127,7 +136,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
             depend(writers[i][w], writers[i][w - 1]);
     for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k) {
         const CompiledConstraint& c = p.m_constraints[k];
-        if (c.driven.empty())
+        if (!isStep(k))
             continue;
         if (!placed[c.driven.front()] && writers[c.driven.front()].front() == n + k) {
             const auto parent = rig.nodes[c.driven.front()].parent;
@@ -143,7 +152,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
     }
     std::deque<std::uint32_t> ready;
     for (std::uint32_t op = 0; op < ops; ++op)
-        if (pending[op] == 0 && (op >= n ? !p.m_constraints[op - n].driven.empty() : placed[op]))
+        if (pending[op] == 0 && (op >= n ? isStep(std::uint32_t(op - n)) : placed[op]))
             ready.push_back(op);
     while (!ready.empty()) {
         const std::uint32_t op = ready.front();
@@ -155,7 +164,7 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
     }
     std::size_t expected = 0;
     for (model::RigNodeIndex i = 0; i < n; ++i) expected += placed[i] ? 1 : 0;
-    for (const auto& c : p.m_constraints) expected += c.driven.empty() ? 0 : 1;
+    for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k) expected += isStep(k) ? 1 : 0;
     if (p.m_steps.size() != expected) {
         std::string list;
         int shown = 0;
@@ -175,6 +184,7 @@ EvalState RigProgram::makeState() const
     state.world = m_restWorld;
     state.arcLengths.resize(m_maxSamples);
     state.twistAngles.resize(m_constraints.size());
+    state.visible.assign(m_nodes.size(), 1);
     return state;
 }
 
@@ -206,6 +216,19 @@ void RigProgram::evaluate(const Pose& pose, EvalState& state) const
         } else {
             world[step.index] = world[s.parent] * local;
         }
+    }
+    if (state.visible.size() != m_nodes.size())
+        state.visible.assign(m_nodes.size(), 1);
+    for (std::uint32_t k : m_visibility) // shown unless one of its conditions fails
+        for (model::RigNodeIndex d : m_constraints[k].driven)
+            state.visible[d] = 1;
+    for (std::uint32_t k : m_visibility) {
+        const CompiledConstraint& c = m_constraints[k];
+        const double v = c.valueChannel >= 0 ? pose[c.valueChannel] : 0.0;
+        const bool shown = c.showAbove ? v > c.threshold : v < c.threshold;
+        if (!shown)
+            for (model::RigNodeIndex d : c.driven)
+                state.visible[d] = 0;
     }
 }
 

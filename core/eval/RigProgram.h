@@ -28,6 +28,10 @@ struct EvalState {
     std::vector<Affine> world;
     std::vector<double> arcLengths;
     std::vector<double> twistAngles; // per constraint: the twist a segment's twist joints share
+    // Per node: 1 shown, 0 hidden by a visibility constraint (model::VisibilityConstraint)
+    // in this pose. Nodes no visibility constraint drives stay 1.
+    std::vector<std::uint8_t> visible;
+    bool isVisible(model::RigNodeIndex node) const { return node >= visible.size() || visible[node] != 0; }
     Mat4 worldMatrix(model::RigNodeIndex node) const { return world[node].matrix(); }
 };
 
@@ -73,6 +77,7 @@ private:
     std::vector<Affine> m_restWorld; // apart from the steps: the hot loop never reads it
     std::vector<CompiledConstraint> m_constraints;
     std::vector<Step> m_steps;
+    std::vector<std::uint32_t> m_visibility; // visibility constraints: evaluated after the steps, ordering nothing
     std::size_t m_maxSamples = 0;
 };
 

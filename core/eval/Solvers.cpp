@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 
 namespace rs::eval {
 
@@ -94,9 +95,47 @@ void solveAim(const CompiledConstraint& c, std::vector<Affine>& world)
     driven = compose(frame * c.offsets[0].linear, driven.scale(), origin);
 }
 
+// The shortest-arc rotation taking unit vector `from` onto unit vector `to`
+// (about any perpendicular axis when they are opposite).
+Quat shortestArc(const Vec3& from, const Vec3& to)
+{
+    const double d = glm::dot(from, to);
+    if (d < -1.0 + 1e-12) {
+        Vec3 axis = glm::cross(Vec3(1, 0, 0), from);
+        if (glm::length(axis) < 1e-6) axis = glm::cross(Vec3(0, 1, 0), from);
+        return glm::angleAxis(glm::pi<double>(), glm::normalize(axis));
+    }
+    const Vec3 axis = glm::cross(from, to);
+    return glm::normalize(Quat(1.0 + d, axis.x, axis.y, axis.z));
+}
+
+// The roll of targets[0] about its bone relative to targets[2], and the
+// swing-only frame it is measured from (model::TwistConstraint, non-rolling).
+void solveNonRollingTwist(const CompiledConstraint& c, std::vector<Affine>& world)
+{
+    const Affine& a = world[c.targets[0]];
+    const Affine& b = world[c.targets[1]];
+    const Quat qr = rotationOf(world[c.targets[2]]);
+    const Quat local = glm::conjugate(qr) * rotationOf(a);
+    const Vec3 restBone = c.restFromReference * c.twistAxis, bone = local * c.twistAxis;
+    const Quat swung = shortestArc(restBone, bone) * c.restFromReference; // the start without its roll
+    Quat roll = glm::conjugate(swung) * local;
+    if (roll.w < 0.0)
+        roll = -roll;
+    const double angle = 2.0 * std::atan2(glm::dot(Vec3(roll.x, roll.y, roll.z), c.twistAxis), roll.w);
+    const Mat3 r = glm::mat3_cast(qr * swung * glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
+    Affine& driven = world[c.driven.front()];
+    const Vec3 position = glm::mix(a.translation, b.translation, c.fraction) + a.linear * c.restDelta;
+    driven = compose(r, driven.scale(), position);
+}
+
 void solveTwist(const CompiledConstraint& c, EvalState& state)
 {
     std::vector<Affine>& world = state.world;
+    if (c.nonRolling) {
+        solveNonRollingTwist(c, world);
+        return;
+    }
     const Affine& a = world[c.targets[0]];
     const Affine& b = world[c.targets[1]];
     const Mat3 ra = a.rotation();
@@ -105,8 +144,10 @@ void solveTwist(const CompiledConstraint& c, EvalState& state)
     if (c.shareTwistOf >= 0) { // twist joints of one segment share the segment's twist
         angle = state.twistAngles[c.shareTwistOf];
     } else {
-        // The change of b relative to a since rest, then its twist about the bone.
-        Quat delta = glm::conjugate(c.restRelative) * (glm::conjugate(qa) * rotationOf(b));
+        // The change of b relative to a since rest, in a's frame (where the
+        // twist axis is: b's rest frame may aim elsewhere, as an ankle aims at
+        // the ball), then its twist about the bone.
+        Quat delta = (glm::conjugate(qa) * rotationOf(b)) * glm::conjugate(c.restRelative);
         if (delta.w < 0.0)
             delta = -delta; // the shorter way round: the twist stays within +-180 degrees
         const double along = glm::dot(Vec3(delta.x, delta.y, delta.z), c.twistAxis);
@@ -196,8 +237,13 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         c.offsets[0].linear = glm::transpose(world[c.driven.front()].rotation()) * rest[c.driven.front()].rotation();
         return {};
     }
+    case ConstraintKind::Visibility:
+        return t == 0 ? std::string() : "takes no targets";
     case ConstraintKind::Twist: {
-        if (t != 2) return "needs two targets (start, end)";
+        if (c.nonRolling && t != 3) return "needs three targets (start, end, reference) to be non-rolling";
+        if (!c.nonRolling && t != 2) return "needs two targets (start, end)";
+        if (c.nonRolling)
+            c.restFromReference = glm::conjugate(rotationOf(rest[c.targets[2]])) * rotationOf(rest[c.targets[0]]);
         const Affine& a = rest[c.targets[0]];
         const Affine& b = rest[c.targets[1]];
         const Affine& d = rest[c.driven.front()];
@@ -236,6 +282,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Drive: solveDrive(c, pose, world); break;
     case ConstraintKind::Ik: solveIk(c, pose, world); break;
     case ConstraintKind::Spline: solveSpline(c, pose, state); break;
+    case ConstraintKind::Visibility: break; // RigProgram::evaluate writes EvalState::visible
     }
 }
 

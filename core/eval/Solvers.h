@@ -23,6 +23,9 @@ struct CompiledConstraint {
     int weightChannel = -1, stretchChannel = -1, softChannel = -1, valueChannel = -1, breakChannel = -1,
         spaceChannel = -1;             // -1: none
     double fraction = 0;               // twist
+    bool nonRolling = false;           // twist: the start's roll relative to targets[2]
+    bool showAbove = false;            // visibility: shown while value > threshold, else while value < threshold
+    double threshold = 0;
     bool orientOnly = false;           // space
     // Drive: the local rotation axis (0 x, 1 y, 2 z) unless it scales, the
     // response (model::DriveResponse's index) and its limits.
@@ -48,6 +51,7 @@ struct CompiledConstraint {
     Quat restRelative{1, 0, 0, 0};
     Vec3 twistAxis{1, 0, 0};
     Vec3 restDelta{0.0};
+    Quat restFromReference{1, 0, 0, 0}; // non-rolling twist: the start's rest rotation relative to targets[2]
 
     // Spline: rest tangents in each control's frame, per-driven curve parameter,
     // rest arc length and offset from the curve frame.

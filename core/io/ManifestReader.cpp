@@ -215,6 +215,15 @@ bool readRule(YamlReader& r, const YAML::Node& node, const std::string& what, Hi
     for (const auto& kv : node) {
         const std::string key = kv.first.Scalar();
         const YAML::Node& v = kv.second;
+        // A YAML null (`hook:` with nothing after it, as in Mikan's digit.legacy)
+        // means unset: no hook / no parent (which an override uses to clear the
+        // base rule's), and for root and chain the value is left as it was.
+        if (v.IsNull()) {
+            if (key == "parent") rule.parent = std::vector<std::string>{};
+            else if (key == "hook") rule.hook = std::vector<std::string>{};
+            else if (key != "root" && key != "chain") r.warning(kv.first, "unknown key '" + key + "' in " + what);
+            continue;
+        }
         if (key == "root") { if (auto b = r.boolean(v, what + ".root")) rule.root = *b; else ok = false; }
         else if (key == "chain") { if (auto b = r.boolean(v, what + ".chain")) rule.chain = *b; else ok = false; }
         else if (key == "parent") rule.parent = stringList(r, v, what + ".parent", ok);

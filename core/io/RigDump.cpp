@@ -95,7 +95,17 @@ public:
         field("stretch", attributeText(m_rig, s.stretch));
         field("soft", attributeText(m_rig, s.soft));
     }
-    void operator()(const model::TwistConstraint& s) { field("fraction", number(s.fraction)); }
+    void operator()(const model::TwistConstraint& s)
+    {
+        field("fraction", number(s.fraction));
+        field("non_rolling", boolText(s.nonRolling));
+    }
+    void operator()(const model::VisibilityConstraint& s)
+    {
+        field("value", attributeText(m_rig, s.value));
+        field("when", model::showWhenName(s.when));
+        field("threshold", number(s.threshold));
+    }
     void operator()(const model::SplineConstraint& s) { field("stretch", attributeText(m_rig, s.stretch)); }
     void operator()(const model::SpaceConstraint& s)
     {

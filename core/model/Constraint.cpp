@@ -37,9 +37,12 @@ const char* constraintKindName(ConstraintKind kind)
     case ConstraintKind::Drive: return "drive";
     case ConstraintKind::Aim: return "aim";
     case ConstraintKind::Scale: return "scale";
+    case ConstraintKind::Visibility: return "visibility";
     }
     return "parent";
 }
+
+const char* showWhenName(ShowWhen when) { return when == ShowWhen::Above ? "above" : "below"; }
 
 } // namespace rs::model
 
@@ -68,6 +71,8 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 optionalRef(settings.stretch);
             } else if constexpr (std::is_same_v<T, SpaceConstraint>) {
                 ref(settings.choice);
+            } else if constexpr (std::is_same_v<T, VisibilityConstraint>) {
+                ref(settings.value);
             } else if constexpr (std::is_same_v<T, DriveConstraint>) {
                 ref(settings.value);
                 std::visit(

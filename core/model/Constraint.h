@@ -103,8 +103,20 @@ struct IkConstraint {
 // offset kept) and turns by `fraction` of the end's twist about the bone
 // relative to the start (taken within +-180 degrees). Consecutive twist
 // constraints with the same targets share one twist angle.
+//
+// Non-rolling (an upper arm or thigh, whose start joint rolls with the
+// shoulder or hip): targets = [start, end, reference], reference being what
+// the limb hangs under (the clavicle side). The twist shared is then the
+// start's own roll about its bone relative to the reference, measured from the
+// frame that swings the start's rest frame (as seen from the reference) onto
+// its bone by the shortest arc; driven[0] takes that frame turned by
+// `fraction` of the roll. So a joint at the start (fraction 0) does not roll
+// and one at the end (fraction 1) rolls fully, like the start joint itself:
+// no candy wrapper at the shoulder. The swing is undefined when the bone
+// points straight opposite its rest direction relative to the reference.
 struct TwistConstraint {
     double fraction = 0.0; // 0 at targets[0], 1 at targets[1]
+    bool nonRolling = false; // the start's roll relative to targets[2] (above)
     bool operator==(const TwistConstraint&) const = default;
 };
 
@@ -178,13 +190,31 @@ struct AimConstraint {
     bool operator==(const AimConstraint&) const = default;
 };
 
+// Visibility driven by a channel: the driven nodes are shown only while
+// `value` is below (or above) `threshold`, strictly. A limb's FK controls are
+// shown while ik_blend < 1 and its IK controls while ik_blend > 0, so at full
+// IK only the IK controls are seen, at full FK only the FK ones, and both in
+// between. It places nothing: it has no targets, writes no transform and
+// orders no other step; the evaluator writes EvalState::visible, which the
+// viewport (drawing and picking in Rig mode) and the pickwalk honour. A node
+// under several is shown when all of them hold. Visibility is not inherited:
+// each node that hides has its own.
+enum class ShowWhen : std::uint8_t { Below = 0, Above = 1 };
+const char* showWhenName(ShowWhen when); // "below", "above"
+struct VisibilityConstraint {
+    AttributeRef value{};
+    ShowWhen when = ShowWhen::Below;
+    double threshold = 1.0; // in the attribute's unit
+    bool operator==(const VisibilityConstraint&) const = default;
+};
+
 // What a constraint does; the index of its settings in ConstraintSettings.
-enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale };
+enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale, Visibility };
 const char* constraintKindName(ConstraintKind kind); // "parent", "orient"...
 
 using ConstraintSettings = std::variant<ParentConstraint, OrientConstraint, PointConstraint, BlendConstraint, IkConstraint,
                                         TwistConstraint, SplineConstraint, SpaceConstraint, DriveConstraint, AimConstraint,
-                                        ScaleConstraint>;
+                                        ScaleConstraint, VisibilityConstraint>;
 
 template <ConstraintKind kind>
 using SettingsOf = std::variant_alternative_t<static_cast<std::size_t>(kind), ConstraintSettings>;
@@ -199,7 +229,8 @@ static_assert(std::is_same_v<SettingsOf<ConstraintKind::Space>, SpaceConstraint>
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Drive>, DriveConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Aim>, AimConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Scale>, ScaleConstraint>);
-static_assert(std::variant_size_v<ConstraintSettings> == 11);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Visibility>, VisibilityConstraint>);
+static_assert(std::variant_size_v<ConstraintSettings> == 12);
 
 struct RigConstraint {
     NodeKey key;                       // identity, as a node's

@@ -47,7 +47,8 @@ void Session::selectControllers(const std::vector<model::RigNodeIndex>& nodes, b
 void Session::pickwalk(eval::WalkDirection direction, bool instances)
 {
     if (!instances && m_mode == Mode::Rig && m_rig && m_selection.node != model::kNoNode) {
-        selectControllers({eval::pickwalk(*m_rig, m_selection.node, direction)}, false);
+        const auto* shown = m_program ? &m_evaluation.visible : nullptr; // skip what the pose hides
+        selectControllers({eval::pickwalk(*m_rig, m_selection.node, direction, shown)}, false);
         return;
     }
     if (m_selection.instance != model::kNoId)

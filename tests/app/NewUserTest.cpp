@@ -72,6 +72,10 @@ TEST(NewUser, ChannelBoxGivesTheKeyboardBackToTheViewportAfterAnEdit)
     w.action("build")->trigger();
     const model::Rig* rig = w.session().rig();
     const auto elbow = *rig->findPath("arm.L::ctrls.fk.1");
+    // The arm is in IK by default, where its FK controls are hidden (and so not pickwalked): switch it to FK.
+    const auto blend = w.session().program()->channels().find(*rig->findPath("arm.L::ctrls.switch"), "ik_blend");
+    ASSERT_TRUE(blend.has_value());
+    ASSERT_TRUE(w.session().setChannel(*blend, 0.0, false).ok());
     w.session().selectControllers({elbow}, false);
     QApplication::processEvents();
     const int rz = *w.session().program()->channels().find(elbow, "rz");

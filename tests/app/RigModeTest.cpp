@@ -57,16 +57,18 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
     const std::size_t undoStart = w.session().history().index();
     const Vec3 restHand = posedPosition(w, "arm.L::skin.limb.2");
 
-    // Click the left arm's FK elbow control: selected, its channels in the channel box.
+    // The arm is in IK by default, where its FK controls are hidden: switch it
+    // half-way to FK through its switch control's channel, so both FK and IK show.
     const auto elbow = nodeId(w, "arm.L::ctrls.fk.1");
+    EXPECT_FALSE(w.session().evaluation()->isVisible(elbow));
+    const auto settings = nodeId(w, "arm.L::ctrls.switch");
+    const int blend = *w.session().program()->channels().find(settings, "ik_blend");
+    ASSERT_TRUE(w.session().setChannel(blend, 0.5, true).ok());
+    // Click the left arm's FK elbow control: selected, its channels in the channel box.
     ASSERT_TRUE(clickController(w, elbow));
     const int rz = *w.session().program()->channels().find(elbow, "rz");
     auto* spin = qobject_cast<QDoubleSpinBox*>(w.channelBox()->editorFor(rz));
     ASSERT_NE(spin, nullptr);
-    // The arm is in IK by default: switch it to FK through its switch control's channel.
-    const auto settings = nodeId(w, "arm.L::ctrls.switch");
-    const int blend = *w.session().program()->channels().find(settings, "ik_blend");
-    ASSERT_TRUE(w.session().setChannel(blend, 0.0, true).ok());
     spin->setValue(45.0); // as if typed and confirmed
     EXPECT_EQ(w.session().history().undoText(), "Set c_arm2_L.rz");
     EXPECT_GT(glm::length(posedPosition(w, "arm.L::skin.limb.2") - restHand), 0.05); // the hand followed
@@ -95,7 +97,9 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
     QTest::keyClick(w.viewportWidget(), Qt::Key_Down);
     EXPECT_EQ(w.session().selection().node, elbow);
 
-    // Mirror the left arm onto the right from the Pose menu.
+    // Mirror the left arm onto the right from the Pose menu, in FK (the IK
+    // control moved above is not among what is mirrored).
+    ASSERT_TRUE(w.session().setChannel(blend, 0.0, false).ok());
     w.session().selectControllers({elbow, settings}, false);
     w.action("mirrorPose")->trigger();
     EXPECT_EQ(w.session().history().undoText(), "Mirror pose");
@@ -124,7 +128,12 @@ TEST(RigMode, BoxSelectPicksEveryControllerInTheRectangle)
     QTest::mouseMove(view, QPoint(view->width() / 2, view->height() / 2));
     QTest::mouseMove(view, QPoint(view->width() - 2, view->height() - 2));
     QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(view->width() - 2, view->height() - 2));
-    EXPECT_EQ(w.session().selection().nodes.size(), w.session().rig()->count(model::RigNodeKind::Controller));
+    // Every controller the pose shows (the limbs are in IK: their FK controls are hidden).
+    std::size_t shown = 0;
+    for (model::RigNodeIndex i = 0; i < w.session().rig()->nodes.size(); ++i)
+        shown += w.session().rig()->nodes[i].kind == model::RigNodeKind::Controller && w.session().evaluation()->isVisible(i);
+    EXPECT_LT(shown, w.session().rig()->count(model::RigNodeKind::Controller));
+    EXPECT_EQ(w.session().selection().nodes.size(), shown);
     w.action("resetSelected")->trigger(); // nothing posed: a refused (empty) step is not recorded
     EXPECT_FALSE(w.session().history().canUndo());
 }

@@ -10,7 +10,9 @@
 
 namespace rs::test {
 
-PosedRig::PosedRig(const std::string& sample) : rig(rigging::buildRig(loadSample(sample), builtinTemplates()))
+PosedRig::PosedRig(const std::string& sample) : PosedRig(loadSample(sample)) {}
+
+PosedRig::PosedRig(const model::GuideDocument& guide) : rig(rigging::buildRig(guide, builtinTemplates()))
 {
     EXPECT_FALSE(hasErrors(rig.diagnostics));
     auto compiled = eval::RigProgram::compile(rig);

@@ -13,6 +13,7 @@ namespace rs::test {
 class PosedRig {
 public:
     explicit PosedRig(const std::string& sample);
+    explicit PosedRig(const model::GuideDocument& guide); // a sample with options changed
     PosedRig(const PosedRig&) = delete;
     PosedRig& operator=(const PosedRig&) = delete;
 

@@ -143,3 +143,30 @@ TEST(TemplateRegistry, AMissingIconFallsBackWithAWarningAtItsLine)
                                  " (the default icon is used)");
     EXPECT_EQ(registry.iconPath(*registry.find("extra.odd")), icons + "/template.svg");
 }
+
+// Mikan's digit.legacy clears a hook in a conditional override with a bare
+// `hook:`; a YAML null where a value may be unset means "unset", not an error.
+TEST(ManifestReader, AYamlNullUnsetsAHookOrParentInsteadOfFailing)
+{
+    auto r = read("name: digit\n"
+                  "structure:\n  chain: /*\n  base: chain[:-1]\n"
+                  "opts:\n  shear:\n    value: off\n"
+                  "hierarchy:\n"
+                  "  skin:\n    hook: base\n    chain: on\n"
+                  "    opts:\n      shear:\n        chain: off\n        hook:\n"
+                  "  ctrls:\n    parent:\n    root:\n    hook: base\n");
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics());
+    EXPECT_FALSE(hasErrors(r.diagnostics()));
+    const auto& h = r->hierarchy;
+    ASSERT_EQ(h.size(), 2u);
+    ASSERT_EQ(h[0].conditional.size(), 1u);
+    const HierarchyRule& shear = h[0].conditional[0].second;
+    ASSERT_TRUE(shear.hook.has_value()) << "a null hook overrides the base rule's";
+    EXPECT_TRUE(shear.hook->empty());
+    EXPECT_EQ(shear.chain, std::optional<bool>(false));
+    ASSERT_TRUE(h[0].base.hook.has_value());
+    EXPECT_EQ(*h[0].base.hook, std::vector<std::string>{"base"});
+    ASSERT_TRUE(h[1].base.parent.has_value());
+    EXPECT_TRUE(h[1].base.parent->empty());
+    EXPECT_FALSE(h[1].base.root.has_value()) << "a null root leaves it unset";
+}

@@ -189,21 +189,33 @@ double guideNumber(const std::map<std::string, Value>& guides, const std::string
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
                     const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly)
 {
+    std::vector<Space> named;
+    for (std::size_t i = 0; i < spaces.size(); ++i)
+        named.push_back({spaces[i], i == 0 ? first : model::kNoNode});
+    addSpaceSwitch(ctx, group, control, option, tag, named, orientOnly);
+}
+
+void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
+                    const std::string& tag, const std::vector<Space>& spaces, bool orientOnly)
+{
     const std::string chosen = ctx.optionString(option);
     std::vector<model::RigNodeIndex> targets;
+    std::vector<std::string> labels;
     int index = 0;
     for (std::size_t i = 0; i < spaces.size(); ++i) {
-        model::RigNodeIndex target = i == 0 ? first : ctx.space(spaces[i]);
+        model::RigNodeIndex target = spaces[i].node != model::kNoNode ? spaces[i].node : ctx.space(spaces[i].name);
         if (target == model::kNoNode) {
-            if (spaces[i] == chosen)
-                ctx.warning(option + " '" + chosen + "' is not a space of this rig; it follows '" + spaces.front() + "'", option);
-            target = first;
+            if (spaces[i].name == chosen)
+                ctx.warning(option + " '" + chosen + "' is not a space of this rig; it follows '" + spaces.front().name + "'",
+                            option);
+            target = spaces.front().node;
         }
-        if (spaces[i] == chosen)
+        if (spaces[i].name == chosen)
             index = int(i);
         targets.push_back(target);
+        labels.push_back(spaces[i].name);
     }
-    const model::AttributeRef choice = ctx.addEnumAttribute(control, "space", index, spaces);
+    const model::AttributeRef choice = ctx.addEnumAttribute(control, "space", index, labels);
     ctx.addConstraint(tag, {group}, targets, model::SpaceConstraint{.choice = choice, .orientOnly = orientOnly});
 }
 

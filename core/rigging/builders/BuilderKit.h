@@ -52,6 +52,15 @@ model::RigNodeIndex addSetup(BuildContext& ctx, model::RigNodeKind kind, const s
 // (warned when it is the default). orientOnly keeps the position from the parent.
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
                     const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly);
+// The same with the instance's own spaces: each entry names a space and gives
+// its node, or kNoNode for the rig's named space of that name; entry 0 must
+// have a node, and is what a space missing from the rig falls back to.
+struct Space {
+    std::string name;
+    model::RigNodeIndex node = model::kNoNode;
+};
+void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
+                    const std::string& tag, const std::vector<Space>& spaces, bool orientOnly);
 
 // Guide positions of a structure tag; nullopt (with the error reported) when it fails.
 std::optional<std::vector<Vec3>> positions(const BuildContext& ctx, const std::vector<model::JointId>& joints);

@@ -8,6 +8,7 @@
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
+#include "rigging/builders/LimbParts.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
@@ -161,6 +162,7 @@ void LimbBuilder::configure(BuildContext& ctx) const
     if (group && control)
         kit::addSpaceSwitch(ctx, *group, *control, "ik_space", "cns.ik_space", ctx.node(*group).parent,
                             legLike() ? kLegSpaces : kArmSpaces, false);
+    limb::addPoleSpaceSwitch(ctx);
 }
 
 void LimbBuilder::generate(BuildContext& ctx) const
@@ -193,18 +195,8 @@ void LimbBuilder::generate(BuildContext& ctx) const
         fk.push_back(parent);
     }
 
-    // Settings: FK/IK blend, stretch and soft IK live on one switch controller.
-    Mat4 switchFrame = frames[k - 1];
-    switchFrame[3] = Vec4(g.points[k - 1] - poleDirection * 0.12, 1.0);
-    const auto settings = kit::addControl(ctx, "switch", "switch", {}, limbGroup, switchFrame, g.limb[k - 1]).ctrl;
-    if (ctx.node(settings).kind == model::RigNodeKind::Controller)
-        ctx.channels(settings).lock(0, model::ChannelSettings::kCount); // a settings holder: custom channels only
-    const AttributeRef weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
-    const AttributeRef stretch = ctx.addAttribute(settings, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
-    const AttributeRef soft = ctx.addAttribute(settings, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
-
     // IK controller, pole vector and the reverse foot.
-    const Mat4 ikFrame = legLike() ? kit::uprightFrame(g.points[k - 1]) : frames[k - 1];
+    const Mat4 ikFrame = limb::ikControlFrame(ctx, g.points[k - 1], frames[k - 1], g.limb[k - 1]);
     // The IK control hangs under a space group that follows the space `ik_space` picks.
     const auto ikSpace = ctx.createNode(RigNodeKind::Group, "spaces.ik", ctx.nodeName(model::NameRole::Group, "ik_space"), world,
                                         ikFrame, g.limb[k - 1]);
@@ -212,8 +204,10 @@ void LimbBuilder::generate(BuildContext& ctx) const
     double chainLength = 0.0;
     for (std::size_t i = 1; i < k; ++i)
         chainLength += glm::length(g.points[i] - g.points[i - 1]);
-    const Vec3 polePosition = g.points[1] + poleDirection * std::max(chainLength * 0.75, 0.05);
-    const auto poleCtrl = kit::addControl(ctx, "pole", "pole", {}, world, kit::uprightFrame(polePosition), g.limb[1]).ctrl;
+    const Mat4 poleFrame = kit::uprightFrame(g.points[1] + poleDirection * std::max(chainLength * 0.75, 0.05));
+    // The pole hangs under a space group that follows the space `pv_space` picks (configure()).
+    const auto poleSpace = limb::addPoleSpaceGroups(ctx, world, limbGroup, ikCtrl, poleFrame, g.limb[1]);
+    const auto poleCtrl = kit::addControl(ctx, "pole", "pole", {}, poleSpace, poleFrame, g.limb[1]).ctrl;
     if (ctx.node(poleCtrl).kind == model::RigNodeKind::Controller)
         ctx.channels(poleCtrl).lock(3, 6); // only its position matters
     RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
@@ -230,12 +224,24 @@ void LimbBuilder::generate(BuildContext& ctx) const
         blendParent = kit::addSetup(ctx, RigNodeKind::Joint, "blend." + index, "blend", int(i) + 1, blendParent, frames[i], g.limb[i]);
         blend.push_back(blendParent);
     }
+    // Settings: FK/IK blend, stretch and soft IK live on one switch controller,
+    // which rides on the limb's end (wrist or ankle), off the side away from the pole.
+    Mat4 switchFrame = frames[k - 1];
+    switchFrame[3] = Vec4(g.points[k - 1] - poleDirection * 0.12, 1.0);
+    const auto settings = kit::addControl(ctx, "switch", "switch", {}, blend.back(), switchFrame, g.limb[k - 1]).ctrl;
+    if (ctx.node(settings).kind == model::RigNodeKind::Controller)
+        ctx.channels(settings).lock(0, model::ChannelSettings::kCount); // a settings holder: custom channels only
+    const AttributeRef weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
+    const AttributeRef stretch = ctx.addAttribute(settings, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+    const AttributeRef soft = ctx.addAttribute(settings, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
     ctx.addConstraint("cns.ik", ik, {effector, poleCtrl}, model::IkConstraint{.stretch = stretch, .soft = soft});
     for (std::size_t i = 0; i < k; ++i)
         ctx.addConstraint("cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]}, model::BlendConstraint{.weight = weight});
+    std::vector<RigNodeIndex> fkShown = fk;
     RigNodeIndex end = blend.back();
     if (legLike()) { // the ball joint: FK toe control or the reverse foot's toe tap
         const auto toeFk = kit::addControl(ctx, "fk.ball", "toe", {}, fk.back(), frames[k], g.end).ctrl;
+        fkShown.push_back(toeFk);
         const auto ikBall = kit::addSetup(ctx, RigNodeKind::Joint, "ik.ball", "ik_toe", {}, ik.back(), frames[k], g.end);
         ctx.addConstraint("cns.ik_ball", {ikBall}, {toeTap}, model::OrientConstraint{});
         end = kit::addSetup(ctx, RigNodeKind::Joint, "blend.ball", "blend_toe", {}, blend.back(), frames[k], g.end);
@@ -249,21 +255,9 @@ void LimbBuilder::generate(BuildContext& ctx) const
         skin.push_back(kit::addSkin(ctx, "limb." + std::to_string(i), "", int(i) + 1, blend[i], frames[i], g.limb[i]));
     if (legLike())
         kit::addSkin(ctx, "ball", "toe", {}, end, frames[k], g.end);
+    limb::addBlendVisibility(ctx, weight, fkShown, {ikCtrl, poleCtrl});
     if (ctx.optionBool("do_skin")) {
-        const char* segment[] = {"up", "dn"};
-        const char* option[] = {"twist_upper", "twist_lower"};
-        for (std::size_t s = 0; s < 2; ++s) {
-            const long long count = ctx.optionInt(option[s]);
-            for (long long t = 0; t < count; ++t) {
-                const double fraction = double(t + 1) / double(count + 1);
-                Mat4 frame = frames[s];
-                frame[3] = Vec4(glm::mix(g.points[s], g.points[s + 1], fraction), 1.0);
-                const auto joint = kit::addSkin(ctx, std::string(segment[s]) + "." + std::to_string(t), segment[s], int(t) + 1,
-                                                skin[s], frame, g.limb[s]);
-                ctx.addConstraint("cns." + std::string(segment[s]) + "." + std::to_string(t), {joint}, {blend[s], blend[s + 1]},
-                                  model::TwistConstraint{.fraction = fraction});
-            }
-        }
+        limb::addTwistJoints(ctx, g.points, frames, g.limb, blend, skin, limbGroup);
         if (ctx.optionBool("blend_joints"))
             for (std::size_t i = 1; i < k; ++i) {
                 const auto joint = kit::addSkin(ctx, "mid." + std::to_string(i - 1), "mid", int(i), skin[i - 1], frames[i], g.limb[i]);
