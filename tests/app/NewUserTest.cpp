@@ -58,7 +58,11 @@ TEST(NewUser, WheelOverAnUnfocusedOptionFieldLeavesItsValue)
     EXPECT_EQ(w.session().history().index(), steps) << "no edit from scrolling";
     EXPECT_EQ(twist->focusPolicy(), Qt::StrongFocus) << "the wheel does not focus it";
 
+    // Another GUI test on the same X display may hold the focus for a moment.
+    w.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
     twist->setFocus();
+    QTRY_VERIFY(twist->hasFocus());
     turnWheel(twist, 1); // a focused field takes the wheel
     EXPECT_EQ(twist->value(), before + 1);
 }
