@@ -59,8 +59,10 @@ inline bool dragGizmoHandle(viewport::ViewportWidget* view, int axis, double fro
     return true;
 }
 
-// An OBJ tube of `rings` rings around the left arm, shoulder to wrist (builds the rig first).
-inline QString writeSleeve(app::MainWindow& w, const std::string& name, int rings)
+// An OBJ tube of `rings` rings of `sides` around the left arm, shoulder to
+// wrist (builds the rig first); `mirrored`: with its mirror image across
+// x = 0, as one mesh ("sleeves").
+inline QString writeSleeve(app::MainWindow& w, const std::string& name, int rings, int sides = 10, bool mirrored = false)
 {
     if (!w.session().rig())
         w.buildRig();
@@ -72,19 +74,24 @@ inline QString writeSleeve(app::MainWindow& w, const std::string& name, int ring
     const Vec3 up = glm::cross(axis, side);
     const std::string path = outputPath(name);
     std::ofstream out(path);
-    constexpr int kSides = 10;
-    for (int r = 0; r < rings; ++r)
-        for (int s = 0; s < kSides; ++s) {
-            const double t = 6.283185307179586 * s / kSides;
-            const Vec3 p = a + (b - a) * (double(r) / (rings - 1)) + 0.05 * (std::cos(t) * side + std::sin(t) * up);
-            out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-        }
-    out << "o sleeve\n";
-    for (int r = 0; r + 1 < rings; ++r)
-        for (int s = 0; s < kSides; ++s) {
-            const int i = r * kSides + s + 1, j = r * kSides + (s + 1) % kSides + 1;
-            out << "f " << i << ' ' << j << ' ' << j + kSides << ' ' << i + kSides << '\n';
-        }
+    const int halves = mirrored ? 2 : 1;
+    for (int half = 0; half < halves; ++half)
+        for (int r = 0; r < rings; ++r)
+            for (int s = 0; s < sides; ++s) {
+                const double t = 6.283185307179586 * s / sides;
+                Vec3 p = a + (b - a) * (double(r) / (rings - 1)) + 0.05 * (std::cos(t) * side + std::sin(t) * up);
+                if (half == 1)
+                    p.x = -p.x;
+                out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+            }
+    out << (mirrored ? "o sleeves\n" : "o sleeve\n");
+    for (int half = 0; half < halves; ++half)
+        for (int r = 0; r + 1 < rings; ++r)
+            for (int s = 0; s < sides; ++s) {
+                const int base = half * rings * sides + 1;
+                const int i = base + r * sides + s, j = base + r * sides + (s + 1) % sides;
+                out << "f " << i << ' ' << j << ' ' << j + sides << ' ' << i + sides << '\n';
+            }
     return QString::fromStdString(path);
 }
 

@@ -23,37 +23,7 @@ namespace {
 
 // An OBJ of two tubes around the arms, shoulder to wrist: the left one and its
 // mirror image across x = 0, as one mesh.
-QString writeSleeves(app::MainWindow& w, const std::string& name)
-{
-    if (!w.session().rig())
-        w.buildRig();
-    const model::Rig& rig = *w.session().rig();
-    const Vec3 a = translationOf(rig.nodes[*rig.findPath("arm.L::skin.limb.0")].worldMatrix);
-    const Vec3 b = translationOf(rig.nodes[*rig.findPath("arm.L::skin.limb.2")].worldMatrix);
-    const Vec3 axis = glm::normalize(b - a);
-    const Vec3 side = glm::normalize(glm::cross(axis, Vec3(0, 1, 0)));
-    const Vec3 up = glm::cross(axis, side);
-    const std::string path = outputPath(name);
-    std::ofstream out(path);
-    constexpr int kRings = 16, kSides = 12;
-    for (double mirror : {1.0, -1.0})
-        for (int r = 0; r < kRings; ++r)
-            for (int s = 0; s < kSides; ++s) {
-                const double t = 6.283185307179586 * s / kSides;
-                Vec3 p = a + (b - a) * (double(r) / (kRings - 1)) + 0.05 * (std::cos(t) * side + std::sin(t) * up);
-                p.x *= mirror;
-                out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-            }
-    out << "o sleeves\n";
-    for (int half = 0; half < 2; ++half)
-        for (int r = 0; r + 1 < kRings; ++r)
-            for (int s = 0; s < kSides; ++s) {
-                const int base = half * kRings * kSides + 1;
-                const int i = base + r * kSides + s, j = base + r * kSides + (s + 1) % kSides;
-                out << "f " << i << ' ' << j << ' ' << j + kSides << ' ' << i + kSides << '\n';
-            }
-    return QString::fromStdString(path);
-}
+QString writeSleeves(app::MainWindow& w, const std::string& name) { return test::writeSleeve(w, name, 16, 12, true); }
 
 int boneOf(app::MainWindow& w, const std::string& path)
 {
