@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,11 +23,27 @@ namespace rs::app {
 
 namespace {
 
+double cpuClockMs(clockid_t clock)
+{
+    timespec t{};
+    clock_gettime(clock, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
+}
+
+// CPU time one frame took: the GUI thread's and the whole process's (llvmpipe's
+// rasterisers included). Unlike wall time, it does not grow when the machine
+// runs something else or the hypervisor takes the CPU away ("steal").
+struct FrameCpu {
+    double gui = 0.0, process = 0.0;
+};
+
 // Runs `edit` and waits for the viewport's next swapped frame; milliseconds.
 // `editMs`, when given, gets the part spent in `edit` itself (the session's
-// rebuild and the views' refresh, before any painting).
-double timeToFrame(viewport::ViewportWidget* view, const std::function<void()>& edit, std::vector<double>* editMs = nullptr)
+// rebuild and the views' refresh, before any painting); `cpu` the frame's CPU time.
+double timeToFrame(viewport::ViewportWidget* view, const std::function<void()>& edit, std::vector<double>* editMs = nullptr,
+                   FrameCpu* cpu = nullptr)
 {
+    const double gui0 = cpuClockMs(CLOCK_THREAD_CPUTIME_ID), process0 = cpuClockMs(CLOCK_PROCESS_CPUTIME_ID);
     QEventLoop loop;
     QElapsedTimer timer;
     double ms = -1.0;
@@ -42,6 +59,8 @@ double timeToFrame(viewport::ViewportWidget* view, const std::function<void()>& 
     view->update();
     loop.exec();
     QObject::disconnect(connection);
+    if (cpu)
+        *cpu = {cpuClockMs(CLOCK_THREAD_CPUTIME_ID) - gui0, cpuClockMs(CLOCK_PROCESS_CPUTIME_ID) - process0};
     return ms < 0.0 ? 2000.0 : ms;
 }
 
@@ -105,6 +124,13 @@ int reportEditLatency(MainWindow& window, int drags)
     for (int i = 0; i < 20; ++i)
         idle.push_back(timeToFrame(view, [] {}));
     std::vector<double> moves, commits, edits;
+    struct Frame {
+        int drag = 0;
+        bool commit = false;
+        double ms = 0.0, editMs = 0.0;
+        FrameCpu cpu;
+    };
+    std::vector<Frame> frames; // every frame in order, to name the slowest
     const CpuTime cpuStart = cpuNow();
     const int steps = 4; // mouse moves per drag
     moves.reserve(std::size_t(drags * steps));
@@ -115,9 +141,13 @@ int reportEditLatency(MainWindow& window, int drags)
         for (int s = 1; s <= steps; ++s) {
             Mat4 world = start;
             world[3][1] += 0.002 * s * (d % 2 == 0 ? 1.0 : -1.0); // up, then back down: the guide stays put
-            moves.push_back(timeToFrame(view, [&] { emit view->gizmoDragged(joint, world); }, &edits));
+            FrameCpu cpu;
+            moves.push_back(timeToFrame(view, [&] { emit view->gizmoDragged(joint, world); }, &edits, &cpu));
+            frames.push_back({d, false, moves.back(), edits.back(), cpu});
         }
-        commits.push_back(timeToFrame(view, [&] { emit view->gizmoDragFinished(joint); }, &edits));
+        FrameCpu cpu;
+        commits.push_back(timeToFrame(view, [&] { emit view->gizmoDragFinished(joint); }, &edits, &cpu));
+        frames.push_back({d, true, commits.back(), edits.back(), cpu});
     }
     const CpuTime cpuEnd = cpuNow();
     window.session().discardAutosave(); // a measurement leaves no recovery behind
@@ -128,6 +158,20 @@ int reportEditLatency(MainWindow& window, int drags)
         return v.empty() ? 0.0 : v[v.size() / 2];
     };
     auto ms = [](double v) { return std::round(v * 100.0) / 100.0; };
+    double worstGuiCpu = 0.0, worstProcessCpu = 0.0;
+    for (const Frame& f : frames) {
+        worstGuiCpu = std::max(worstGuiCpu, f.cpu.gui);
+        worstProcessCpu = std::max(worstProcessCpu, f.cpu.process);
+    }
+    std::sort(frames.begin(), frames.end(), [](const Frame& a, const Frame& b) { return a.ms > b.ms; });
+    nlohmann::json slowest = nlohmann::json::array();
+    for (std::size_t i = 0; i < std::min<std::size_t>(5, frames.size()); ++i)
+        slowest.push_back({{"drag", frames[i].drag},
+                           {"kind", frames[i].commit ? "commit" : "move"},
+                           {"ms", ms(frames[i].ms)},
+                           {"edit_ms", ms(frames[i].editMs)},
+                           {"gui_cpu_ms", ms(frames[i].cpu.gui)},
+                           {"process_cpu_ms", ms(frames[i].cpu.process)}});
     const nlohmann::json report{{"drags", drags},
                                 {"frames", all.size()},
                                 {"median_ms", ms(median(all))},
@@ -144,6 +188,10 @@ int reportEditLatency(MainWindow& window, int drags)
                                 {"viewport_px", {int(view->width() * view->devicePixelRatio()), int(view->height() * view->devicePixelRatio())}},
                                 {"window_px", {window.width(), window.height()}},
                                 {"build_ms", ms(window.session().lastBuildMilliseconds())},
+                                {"slowest_frames", slowest},
+                                // The most CPU one frame took: what the worst frame would be without contention.
+                                {"worst_frame_gui_cpu_ms", ms(worstGuiCpu)},
+                                {"worst_frame_process_cpu_ms", ms(worstProcessCpu)},
                                 {"undo_steps", window.session().history().size()}};
     std::printf("%s\n", report.dump().c_str());
     std::fflush(stdout);
