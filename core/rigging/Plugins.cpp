@@ -91,38 +91,28 @@ private:
     }
 };
 
-// Seed 004's cleanup, the part a rig model needs: FK chains compensate the
-// parent segment's scale (scaling the upper arm control lengthens the upper arm,
-// the forearm keeps its size and follows the elbow).
-class SegmentScalePlugin final : public GeneratorPlugin {
-public:
-    const char* name() const override { return "segment scale"; }
-    void finalize(RigAssembly& a) const override
-    {
-        for (auto& node : a.rig.nodes) {
-            if (node.parent == model::kNoNode || node.key.tag.rfind("roots.fk.", 0) != 0)
-                continue;
-            const auto& parent = a.rig.nodes[node.parent];
-            node.scaleCompensate = parent.kind == model::RigNodeKind::Controller &&
-                                   parent.key.tag.rfind("ctrls.fk.", 0) == 0;
-        }
-    }
-};
-
-// The rig must evaluate: constraint cycles and dangling attribute paths are
-// build errors, reported here rather than when the animator first moves a control.
-class EvaluationCheckPlugin final : public GeneratorPlugin {
-public:
-    const char* name() const override { return "evaluation check"; }
-    void finalize(RigAssembly& a) const override
-    {
-        a.program = eval::RigProgram::compile(a.rig);
-        for (const Diagnostic& d : a.program->diagnostics())
-            a.report(d.severity, nullptr, d.message);
-    }
-};
-
 } // namespace
+
+void compensateSegmentScale(RigAssembly& a)
+{
+    for (auto& node : a.rig.nodes) {
+        if (node.parent == model::kNoNode || node.key.tag.rfind("roots.fk.", 0) != 0)
+            continue;
+        const auto& parent = a.rig.nodes[node.parent];
+        node.scaleCompensate = parent.kind == model::RigNodeKind::Controller && parent.key.tag.rfind("ctrls.fk.", 0) == 0;
+    }
+}
+
+void compileProgram(RigAssembly& a)
+{
+    a.program = eval::RigProgram::compile(a.rig);
+}
+
+void reportProgram(RigAssembly& a)
+{
+    for (const Diagnostic& d : a.program->diagnostics())
+        a.report(d.severity, nullptr, d.message);
+}
 
 const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
 {
@@ -131,8 +121,6 @@ const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
         list.push_back(std::make_unique<ControllerSetPlugin>());
         list.push_back(std::make_unique<SkinRootPlugin>());
         list.push_back(std::make_unique<NamingCheckPlugin>());
-        list.push_back(std::make_unique<SegmentScalePlugin>());
-        list.push_back(std::make_unique<EvaluationCheckPlugin>());
         return list;
     }();
     return plugins;

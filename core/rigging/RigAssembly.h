@@ -115,4 +115,18 @@ public:
 // Controller set, skin-root and naming checks, in the order they run.
 const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins();
 
+// Seed 004's cleanup, the part a rig model needs: FK chains compensate the
+// parent segment's scale (scaling the upper arm control lengthens the upper
+// arm, the forearm keeps its size and follows the elbow).
+void compensateSegmentScale(RigAssembly& assembly);
+// The evaluation check: the rig must evaluate. Constraint cycles and dangling
+// attribute paths are build errors, reported when the rig is built rather than
+// when the animator first moves a control. The compiled program is the one the
+// session evaluates. Compiling reads only what generation and configuration
+// made (nodes, their rest placement, channels and attributes, constraints),
+// so it may run beside the shape and hierarchy stages; `reportProgram` adds its
+// messages to the build log afterwards.
+void compileProgram(RigAssembly& assembly);
+void reportProgram(RigAssembly& assembly);
+
 } // namespace rs::rigging

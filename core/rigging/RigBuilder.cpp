@@ -4,6 +4,8 @@
 #include "rigging/RigAssembly.h"
 #include "templates/Structure.h"
 
+#include <tbb/task_group.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -418,12 +420,19 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
         if (a.rig.nodes[i].parent == kNoNode)
             a.rig.nodes[i].parent = 0;
+    compensateSegmentScale(a);
+    // The program compiles on another core while shapes, hierarchy and the
+    // checks run here: they write none of what it reads (see compileProgram).
+    tbb::task_group compiling;
+    compiling.run([&a] { compileProgram(a); });
     ShapeSamples samples; // a build without a cache samples its shapes once
     applyShapes(a, cache ? cache->shapeSamples : samples);
     buildVirtualHierarchy(a);
     computeLocalMatrices(a.rig);
     for (const auto& plugin : builtinPlugins())
         plugin->finalize(a);
+    compiling.wait();
+    reportProgram(a);
     reportOrphanRecords(guide, a.rig);
     if (cache) {
         cache->program = std::move(a.program);
