@@ -4,6 +4,7 @@
 #include "rigging/RigAssembly.h"
 #include "templates/Structure.h"
 
+#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -423,15 +424,19 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     compensateSegmentScale(a);
     // The program compiles on another core while shapes, hierarchy and the
     // checks run here: they write none of what it reads (see compileProgram).
-    tbb::task_group compiling;
-    compiling.run([&a] { compileProgram(a); });
-    ShapeSamples samples; // a build without a cache samples its shapes once
-    applyShapes(a, cache ? cache->shapeSamples : samples);
-    buildVirtualHierarchy(a);
-    computeLocalMatrices(a.rig);
-    for (const auto& plugin : builtinPlugins())
-        plugin->finalize(a);
-    compiling.wait();
+    // Isolated: while it waits, this thread runs only its own task, never a
+    // piece of unrelated parallel work (a skin job's loop) from the shared pool.
+    tbb::this_task_arena::isolate([&] {
+        tbb::task_group compiling;
+        compiling.run([&a] { compileProgram(a); });
+        ShapeSamples samples; // a build without a cache samples its shapes once
+        applyShapes(a, cache ? cache->shapeSamples : samples);
+        buildVirtualHierarchy(a);
+        computeLocalMatrices(a.rig);
+        for (const auto& plugin : builtinPlugins())
+            plugin->finalize(a);
+        compiling.wait();
+    });
     reportProgram(a);
     reportOrphanRecords(guide, a.rig);
     if (cache) {
