@@ -138,8 +138,9 @@ TEST(Limb, IkFkVisibilityFollowsTheBlend)
             for (const auto& id : ik)
                 EXPECT_EQ(state.isVisible(r.index(limb + id)), blend > 0.0) << limb << id << " at " << blend;
             EXPECT_TRUE(state.isVisible(r.index(limb + "::ctrls.switch")));
-            if (limb.rfind("leg", 0) == 0)
+            if (limb.rfind("leg", 0) == 0) {
                 EXPECT_EQ(state.isVisible(r.index(limb + "::ctrls.fk.ball")), blend < 1.0) << limb << " toe at " << blend;
+            }
         }
     }
 }
