@@ -49,6 +49,10 @@ const BuilderRegistry& BuilderRegistry::builtin()
         r.add("quad.leg", makeLimbBuilder(LimbKind::Quad));
         r.add("digit.finger", makeDigitBuilder());
         r.add("rig.spline", makeSplineBuilder());
+        r.add("face.jaw", makeJawBuilder());
+        r.add("face.eye", makeEyeBuilder());
+        r.add("face.brow", makeBrowBuilder());
+        r.add("face.mouth", makeMouthBuilder());
         r.add(kFallbackBuilder, makeJointChainBuilder());
         return r;
     }();

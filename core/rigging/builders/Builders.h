@@ -25,6 +25,14 @@ std::unique_ptr<TemplateBuilder> makeDigitBuilder();
 // rig.spline: a chain following a curve through spline controllers (tails).
 std::unique_ptr<TemplateBuilder> makeSplineBuilder();
 
+// face.jaw, face.eye, face.brow, face.mouth: the face's parts on guides placed
+// on the head (jaw and chin; an eye aiming at a shared look target, lids
+// following the gaze and a blink; a brow; lips and corners the jaw carries).
+std::unique_ptr<TemplateBuilder> makeJawBuilder();
+std::unique_ptr<TemplateBuilder> makeEyeBuilder();
+std::unique_ptr<TemplateBuilder> makeBrowBuilder();
+std::unique_ptr<TemplateBuilder> makeMouthBuilder();
+
 // The rest-pose frame of a guide joint: its world matrix without scale or shear.
 Mat4 rigidFrame(const Mat4& world);
 

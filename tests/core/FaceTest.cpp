@@ -1,0 +1,129 @@
+// The face templates as an animator checks them on the built and evaluated
+// face sample (issue 22 item 6): eyes that aim at a shared look target with
+// lids that follow the gaze and close on blink, a jaw that carries the lower
+// lip all the way and the corners half way, and the parts mirrored on L/R.
+#include "EvalTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <map>
+
+namespace rs {
+namespace {
+
+using eval::Pose;
+using test::PosedRig;
+
+Vec3 axisAt(const PosedRig& r, const std::string& id, int column)
+{
+    return glm::normalize(r.state().world[r.index(id)].rotation()[column]);
+}
+
+// Pitch of a frame's X axis above the horizontal, degrees.
+double pitch(const Vec3& x) { return glm::degrees(std::asin(std::clamp(x.y, -1.0, 1.0))); }
+
+TEST(Face, SampleBuildsEveryPartOnBothSides)
+{
+    PosedRig r("face");
+    ASSERT_TRUE(r.ok());
+    for (const char* id : {"jaw::ctrls.jaw", "jaw::ctrls.chin", "eye.L::ctrls.eye", "eye.R::ctrls.eye", "eye.L::ctrls.look",
+                           "eye.L::ctrls.lid_up", "eye.R::ctrls.lid_low", "brow.L::ctrls.brow", "brow.R::ctrls.fk.2",
+                           "mouth::ctrls.lip_up", "mouth::ctrls.lip_low", "mouth::ctrls.corner_L", "mouth::ctrls.corner_R"})
+        EXPECT_TRUE(r.rig.findPath(id)) << id;
+    for (const char* id : {"eye", "lid_up", "lid_low"}) {
+        const Vec3 left = r.restPosition(std::string("eye.L::skin.") + id), right = r.restPosition(std::string("eye.R::skin.") + id);
+        EXPECT_NEAR(left.x, -right.x, 1e-9) << id;
+        EXPECT_NEAR(left.y, right.y, 1e-9) << id;
+    }
+    const Vec3 cornerL = r.restPosition("mouth::skin.corner_L"), cornerR = r.restPosition("mouth::skin.corner_R");
+    EXPECT_GT(cornerL.x, 0.01);
+    EXPECT_NEAR(cornerL.x, -cornerR.x, 1e-9);
+    // The look control sits between the eyes, in front of them.
+    const Vec3 look = r.restPosition("eye.L::ctrls.look");
+    EXPECT_NEAR(look.x, 0.0, 1e-9);
+    EXPECT_GT(look.z, r.restPosition("eye.L::skin.eye").z + 0.2);
+}
+
+TEST(Face, EyesFollowTheLookTargetAndTheLidsFollowTheGaze)
+{
+    PosedRig r("face");
+    ASSERT_TRUE(r.ok());
+    // A mirrored branch's frames are reflections (W' = M W M): its X axes point
+    // the other way, so its forward is -X.
+    auto forward = [&](const std::string& side, const std::string& id) {
+        return axisAt(r, side + "::" + id, 0) * (side == "eye.R" ? -1.0 : 1.0);
+    };
+    Pose pose = r.defaults();
+    r.evaluate(pose);
+    std::map<std::string, double> rest;
+    for (const std::string side : {"eye.L", "eye.R"})
+        for (const std::string id : {"skin.eye", "skin.lid_up", "skin.lid_low"})
+            rest[side + id] = pitch(forward(side, id));
+    pose[r.channel("eye.L::ctrls.look", "ty")] = 0.15; // look up: both eyes turn up
+    r.evaluate(pose);
+    for (const std::string side : {"eye.L", "eye.R"}) {
+        const double eye = pitch(forward(side, "skin.eye")) - rest[side + "skin.eye"];
+        EXPECT_GT(eye, 15.0) << side;
+        // Each lid turns by lid_follow (0.35) of the eye's turn.
+        const double up = pitch(forward(side, "skin.lid_up")) - rest[side + "skin.lid_up"];
+        const double low = pitch(forward(side, "skin.lid_low")) - rest[side + "skin.lid_low"];
+        EXPECT_NEAR(up, 0.35 * eye, 0.05 * eye) << side;
+        EXPECT_NEAR(low, 0.35 * eye, 0.05 * eye) << side;
+        // The eye aims at its own target exactly.
+        const Vec3 at = r.position(side + "::skin.eye"), target = r.position(side + "::ctrls.target");
+        EXPECT_GT(glm::dot(forward(side, "skin.eye"), glm::normalize(target - at)), 1.0 - 1e-9) << side;
+    }
+}
+
+TEST(Face, BlinkClosesTheLidsWhereTheyMeet)
+{
+    PosedRig r("face");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    for (const char* side : {"eye.L", "eye.R"}) {
+        pose[r.channel(std::string(side) + "::ctrls.eye", "blink")] = 1.0;
+        r.evaluate(pose);
+        const Vec3 up = axisAt(r, std::string(side) + "::skin.lid_up", 0), low = axisAt(r, std::string(side) + "::skin.lid_low", 0);
+        EXPECT_GT(glm::dot(up, low), 1.0 - 1e-9) << side << ": the lids meet";
+        pose[r.channel(std::string(side) + "::ctrls.eye", "blink")] = 0.0;
+    }
+    r.evaluate(pose);
+    EXPECT_LT(glm::dot(axisAt(r, "eye.L::skin.lid_up", 0), axisAt(r, "eye.L::skin.lid_low", 0)), 0.9) << "open at rest";
+}
+
+TEST(Face, TheJawCarriesTheLowerLipAllTheWayAndTheCornersHalfWay)
+{
+    PosedRig r("face");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    r.evaluate(pose);
+    auto rest = [&](const std::string& id) { return r.position(id); };
+    const Vec3 lipUp = rest("mouth::skin.lip_up"), lipLow = rest("mouth::skin.lip_low"), corner = rest("mouth::skin.corner_L"),
+               chin = rest("jaw::skin.chin"), cornerR = rest("mouth::skin.corner_R");
+    const int open = r.channel("jaw::ctrls.jaw", "rz");
+    pose[open] = -20.0; // the jaw opens (about its side axis)
+    r.evaluate(pose);
+    const Vec3 chinMove = r.position("jaw::skin.chin") - chin;
+    ASSERT_GT(glm::length(chinMove), 0.01);
+    EXPECT_LT(glm::length(r.position("mouth::skin.lip_up") - lipUp), 1e-9) << "the upper lip stays";
+    const double lowMove = glm::length(r.position("mouth::skin.lip_low") - lipLow);
+    const double cornerMove = glm::length(r.position("mouth::skin.corner_L") - corner);
+    EXPECT_GT(lowMove, 0.005);
+    // Where the jaw would carry each point alone (rigidly), the lower lip goes all the way, the corner half way.
+    pose[open] = 0.0;
+    r.evaluate(pose);
+    const auto jawRest = r.state().world[r.index("jaw::ctrls.jaw")];
+    pose[open] = -20.0;
+    r.evaluate(pose);
+    const auto jawOpen = r.state().world[r.index("jaw::ctrls.jaw")];
+    auto carried = [&](const Vec3& p) { return Vec3(jawOpen.matrix() * glm::inverse(jawRest.matrix()) * Vec4(p, 1.0)); };
+    EXPECT_NEAR(lowMove, glm::length(carried(lipLow) - lipLow), 1e-6);
+    EXPECT_NEAR(cornerMove, 0.5 * glm::length(carried(corner) - corner), 0.1 * cornerMove);
+    EXPECT_NEAR(glm::length(r.position("mouth::skin.corner_R") - cornerR), cornerMove, 1e-9) << "both corners";
+}
+
+} // namespace
+} // namespace rs
