@@ -235,7 +235,7 @@ int runSkinImport(const std::vector<std::string>& args)
         if (!planned)
             return 1;
         created = planned.take();
-        rules.missing = skin::MissingInfluences::Stop;
+        rules = session::rulesWithCreated(m.influences, created);
     }
     auto resolved = skin::resolveInfluences(*chunks, bones, names, rules);
     print(resolved.diagnostics());

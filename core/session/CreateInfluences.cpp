@@ -207,6 +207,16 @@ Status addCreatedInstances(edit::History& history, const CreatedInfluences& crea
     return Status::success();
 }
 
+skin::InfluenceMapOptions rulesWithCreated(const skin::InfluenceMapOptions& influences, const CreatedInfluences& created)
+{
+    skin::InfluenceMapOptions rules = influences;
+    rules.missing = skin::MissingInfluences::Stop;
+    for (const CreatedInfluence& c : created.influences)
+        if (c.boneName != c.influence)
+            rules.names[c.influence] = c.boneName;
+    return rules;
+}
+
 void markCreated(skin::InfluenceResolution& resolution, const CreatedInfluences& created)
 {
     for (skin::InfluenceMatch& m : resolution.matches)

@@ -56,6 +56,11 @@ Result<CreatedInfluences> planCreatedInfluences(const model::GuideDocument& guid
 // when the guide no longer has room for them as planned).
 Status addCreatedInstances(edit::History& history, const CreatedInfluences& created);
 
+// The rules that place every influence once the planned joints are among the
+// bones: `influences` with Stop for what is still missing, and a created
+// joint named otherwise than its influence (a side added) in the name map.
+skin::InfluenceMapOptions rulesWithCreated(const skin::InfluenceMapOptions& influences, const CreatedInfluences& created);
+
 // Marks the matches of created influences as How::Created.
 void markCreated(skin::InfluenceResolution& resolution, const CreatedInfluences& created);
 

@@ -189,7 +189,7 @@ Result<SkinImportJob> Session::prepareSkinImport(std::vector<skin::SkinChunk> ch
         for (Diagnostic& d : planned.takeDiagnostics())
             job.notes.push_back(std::move(d));
         job.created = planned.take();
-        rules.missing = skin::MissingInfluences::Stop;
+        rules = rulesWithCreated(influences, job.created);
     }
     auto resolved = skin::resolveInfluences(*merged, bones, names, rules);
     if (!resolved)
