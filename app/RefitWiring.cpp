@@ -6,6 +6,7 @@
 // re-fit prepared again from the guide as it is now.
 #include "MainWindow.h"
 
+#include <QLabel>
 #include <QStatusBar>
 #include <QThread>
 #include <QTimer>
@@ -22,6 +23,7 @@ struct MainWindow::RefitRun {
     Status result;
     QThread* thread = nullptr;
     QTimer* poll = nullptr;
+    QLabel* label = nullptr; // in the status bar while it runs
     ~RefitRun()
     {
         cancel = true;
@@ -30,6 +32,7 @@ struct MainWindow::RefitRun {
             delete thread;
         }
         delete poll;
+        delete label;
     }
 };
 
@@ -51,10 +54,13 @@ void MainWindow::startRefit(session::RefitJob job)
     };
     m_refit = run;
     const std::size_t meshes = run->job.items.size();
+    run->label = new QLabel;
+    run->label->setObjectName("refitProgress");
+    statusBar()->addPermanentWidget(run->label);
     auto showProgress = [this, meshes] {
         if (m_refit)
-            statusBar()->showMessage(tr("Re-fitting the weights of %n changed mesh(es): %1%", nullptr, int(meshes))
-                                         .arg(int(m_refit->fraction.load() * 100.0)));
+            m_refit->label->setText(tr("Re-fitting the weights of %n changed mesh(es): %1%", nullptr, int(meshes))
+                                        .arg(int(m_refit->fraction.load() * 100.0)));
     };
     showProgress();
     run->poll = new QTimer;
@@ -73,7 +79,7 @@ void MainWindow::finishRefit()
     std::shared_ptr<RefitRun> run = std::move(m_refit);
     run->thread->wait();
     run->poll->stop();
-    statusBar()->clearMessage();
+    run->label->hide();
     if (run->next) { // a newer guide asked for its own re-fit
         startRefit(std::move(*run->next));
         return;

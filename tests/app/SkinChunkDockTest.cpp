@@ -138,8 +138,9 @@ TEST(SkinChunkDock, ARemeshedModelIsRefittedOnOpenFromTheSavedChunks)
     ASSERT_TRUE(e.window.openFile(guide));
     EXPECT_TRUE(e.window.isRefitting()) << "the open returns while the re-fit computes";
     EXPECT_EQ(s.document().bindings[0].vertexCount, 440u) << "nothing applied yet";
-    EXPECT_TRUE(e.window.statusBar()->currentMessage().startsWith("Re-fitting the weights of 1 changed mesh"))
-        << e.window.statusBar()->currentMessage().toStdString();
+    const QLabel* progress = e.window.statusBar()->findChild<QLabel*>("refitProgress");
+    ASSERT_NE(progress, nullptr);
+    EXPECT_TRUE(progress->text().startsWith("Re-fitting the weights of 1 changed mesh")) << progress->text().toStdString();
     // An edit while it computes: that result is stale, discarded and computed again, never applied over the edit.
     ASSERT_TRUE(QTest::qWaitFor([&] { return waits.load() > 0; }, 20000));
     const model::InstanceId renamed = s.document().instances().back().id;
@@ -147,6 +148,7 @@ TEST(SkinChunkDock, ARemeshedModelIsRefittedOnOpenFromTheSavedChunks)
     QTimer::singleShot(50, [&] { released = true; }); // only a running event loop lets the worker go
     ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isRefitting(); }, 30000));
     EXPECT_TRUE(released) << "the worker was let go by the GUI thread's timer";
+    EXPECT_EQ(e.window.statusBar()->findChild<QLabel*>("refitProgress"), nullptr) << "the progress leaves the status bar";
     ASSERT_EQ(s.document().bindings.size(), 1u);
     EXPECT_EQ(s.document().bindings[0].vertexCount, 520u);
     EXPECT_TRUE(logSays(e.window, "(440 vertices then, 520 now): its weights were re-fitted from the previous mesh"));
