@@ -58,6 +58,8 @@ void MainWindow::follow(const edit::Change& change)
 {
     using K = edit::ChangeKind;
     const bool everything = change.hasAny(K::Document | K::Templates);
+    if (change.has(K::Document))
+        clearRoutes(); // another guide: its meshes' steps are its own
     if (everything || (!change.preview && change.hasAny(K::Instances | K::Names)))
         m_outliner->refresh(m_session.document(), m_session.templates());
     if (everything || change.hasAny(K::Selection | K::Instances))

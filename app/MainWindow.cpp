@@ -48,6 +48,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     createActions();
     createDocks();
     connectDocument();
+    createRouteOverlay();
+    // Changed meshes are re-fitted on a worker thread: opening a guide never blocks the window.
+    m_session.setRefitRunner([this](session::RefitJob job) { startRefit(std::move(job)); });
     settings::restoreWindow(*this);
 
     auto* autosave = new QTimer(this);

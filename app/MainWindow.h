@@ -9,6 +9,7 @@
 #include <QMainWindow>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -97,6 +98,13 @@ public:
     // target, on a worker thread with a progress dialog whose Cancel changes nothing.
     void importSkinChunks(const QStringList& files, bool preview);
     bool isImportingChunks() const { return m_chunkImport != nullptr; }
+    // A re-fit of changed meshes (on open, reload or build) running on its
+    // worker thread (RefitWiring.cpp); its progress is in the status bar.
+    bool isRefitting() const { return m_refit != nullptr; }
+    // View > Display > Skin Chunk Steps (RouteOverlay.cpp): the character's
+    // vertices coloured by the step that placed their weights, outside painting.
+    bool isShowingRoutes() const { return m_showRoutes; }
+    static glm::vec3 routeColour(session::VertexRoute route);
     void cancelChunkImport();
     void inspectSkinChunks(const QString& file);
     widgets::SkinChunkPanel* chunkPanel() const { return m_chunkPanel; }
@@ -127,6 +135,12 @@ private:
     void createSkinChunkActions(QMenu* skinMenu); // SkinChunkWiring.cpp
     void createSkinChunkDock();
     void finishChunkImport();
+    void createRouteOverlay(); // RouteOverlay.cpp
+    void setRoutes(std::size_t characterMesh, std::vector<session::VertexRoute> routes);
+    void clearRoutes();
+    void applyRouteColours(viewport::Scene& scene);
+    void startRefit(session::RefitJob job); // RefitWiring.cpp
+    void finishRefit();
     void connectTransformPanel(); // TransformWiring.cpp
     void refreshTransformPanel();
     void showHelpText(const QString& title, const QString& markdown);
@@ -182,6 +196,16 @@ private:
     widgets::SkinChunkPanel* m_chunkPanel = nullptr;
     struct ChunkImportJob;
     std::shared_ptr<ChunkImportJob> m_chunkImport; // the import running on its worker thread
+    std::map<std::size_t, std::vector<session::VertexRoute>> m_routes; // per character mesh: the last import, preview or re-fit
+    struct RouteColours {
+        const model::Mesh* mesh = nullptr;
+        bool fromRoutes = false;
+        std::shared_ptr<const std::vector<glm::vec3>> colours; // the renderer uploads a new object only
+    };
+    std::map<std::size_t, RouteColours> m_routeColours;
+    bool m_showRoutes = false;
+    struct RefitRun;
+    std::shared_ptr<RefitRun> m_refit; // the re-fit running on its worker thread
     QFileSystemWatcher* m_modelWatcher = nullptr;
     QStringList m_modelsAsked; // changed model files already offered (asked once per change)
 };

@@ -245,7 +245,14 @@ void MainWindow::finishChunkImport()
                job->cancel ? Diagnostics{} : job->result.diagnostics());
         return;
     }
+    std::vector<std::pair<std::size_t, std::vector<session::VertexRoute>>> routes; // the steps each vertex took
+    for (std::size_t t = 0; t < job->job.targets.size(); ++t)
+        if (job->job.targets[t].vertices.empty()) // a whole mesh (onto selected vertices, the others keep theirs)
+            routes.emplace_back(job->job.targets[t].characterMesh, job->job.routes(t));
     if (job->preview) {
+        for (auto& [mesh, steps] : routes)
+            setRoutes(mesh, std::move(steps));
+        refreshScene();
         const bool oneToOne = m_chunkPanel->previewSelects() == widgets::SkinChunkPanel::PreviewSelects::OneToOne;
         m_session.clearVertexSelection();
         std::size_t selected = 0;
@@ -274,6 +281,9 @@ void MainWindow::finishChunkImport()
         report(tr("The import could not be applied; nothing changed"), applied.diagnostics());
         return;
     }
+    for (auto& [mesh, steps] : routes)
+        setRoutes(mesh, std::move(steps));
+    refreshScene();
     m_chunkPanel->showReports(*applied, false);
     report(tr("Imported skin weights onto %1 meshes (Edit > Undo takes them back)").arg(applied->size()), applied.diagnostics());
 }

@@ -116,6 +116,8 @@ void MainWindow::refreshScene()
     if (m_display.weights == viewport::WeightDisplay::SelectedJoint)
         scene.weightBone = isPainting() ? paintBone() : viewport::skinBoneFor(m_session, rigMode);
     viewport::applyDisplay(scene, m_display, rigMode);
+    if (m_showRoutes && !isPainting())
+        applyRouteColours(scene);
     m_viewport->setScene(std::move(scene));
     const auto* rig = m_session.rig();
     const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();

@@ -16,7 +16,9 @@
 //   --frame X0,Y0,Z0,X1,Y1,Z1             frame this box (metres) instead of everything
 //   --action NAME                         trigger an action by object name, e.g.
 //                                         weights:selected, skinning:dualQuaternion (repeatable)
-//   --chunks FILE                         the Skin Chunks dock previewing an import of FILE
+//   --chunks FILE                         the Skin Chunks dock previewing an import of FILE, each
+//                                         vertex coloured by the step it would take (1:1, transferred,
+//                                         inpainted; View > Display > Skin Chunk Steps)
 //   --stroke X0,Y0,Z0,X1,Y1,Z1            with --action paintWeights: drag a paint stroke with the
 //                                         mouse from one world point's pixel to the other's (what
 //                                         lies under them is painted), the brush left at the end
@@ -172,6 +174,8 @@ bool previewChunks(QApplication& app, rs::app::MainWindow& window, const QString
     while (window.isImportingChunks())
         app.processEvents(QEventLoop::AllEvents, 50);
     window.inspectSkinChunks(files.front());
+    if (QAction* steps = window.findChild<QAction*>("display:routes"); steps && !steps->isChecked())
+        steps->trigger(); // each vertex coloured by the step the preview took
     return true;
 }
 
@@ -213,7 +217,8 @@ const char* kUsage =
     "  --pose CONTROLLER=RX,RY,RZ     set a controller's rotation in degrees, repeatable\n"
     "  --frame X0,Y0,Z0,X1,Y1,Z1      frame this box (metres) instead of everything\n"
     "  --action NAME                  trigger an action by object name (weights:selected...), repeatable\n"
-    "  --chunks FILE                  the Skin Chunks dock previewing an import of FILE (repeatable)\n"
+    "  --chunks FILE                  the Skin Chunks dock previewing an import of FILE (repeatable), each vertex\n"
+    "                                 coloured by its step (1:1, transferred, inpainted)\n"
     "The headless command line (build, bind, export) is rigsmith-cli.\n";
 
 int main(int argc, char** argv)
@@ -290,6 +295,8 @@ int main(int argc, char** argv)
     }
 
     window.buildRig();
+    while (window.isRefitting()) // changed meshes re-fitted on open (a worker thread) before the picture
+        app.processEvents(QEventLoop::AllEvents, 50);
     if (!applySetup(window, rigMode, sets, poses, actions))
         return 1;
     if (!chunkFiles.isEmpty() && !previewChunks(app, window, chunkFiles))

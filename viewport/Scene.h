@@ -71,6 +71,10 @@ struct SceneMesh {
     std::shared_ptr<const std::string> textureImage;     // an embedded texture's encoded bytes; null: read texturePath
     std::size_t characterMesh = 0;                       // into session::Session::characterMeshes()
     std::vector<std::uint32_t> selectedVertices;         // weight painting's vertex selection, sorted
+    // A colour per vertex drawn instead of the material and the weight display
+    // (linear RGB, lit like the material; the skin chunk routes overlay); null
+    // or the wrong size: none.
+    std::shared_ptr<const std::vector<glm::vec3>> vertexColors;
     const model::Mesh& data() const { return model->meshes[mesh]; }
 };
 

@@ -15,6 +15,7 @@
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTreeWidget>
@@ -141,7 +142,33 @@ QWidget* SkinChunkPanel::makeImportBox()
     m_reports->setRootIsDecorated(false);
     m_reports->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     column->addWidget(m_reports, 1);
+    auto* routeRow = new QHBoxLayout;
+    m_routeColours = new QCheckBox(tr("Colour vertices by step"), box);
+    m_routeColours->setObjectName("routeColours");
+    m_routeColours->setToolTip(tr("Colour each vertex of the character by the step that placed its weights: the last import, "
+                                  "preview or re-fit (View > Display > Skin Chunk Steps)"));
+    connect(m_routeColours, &QCheckBox::toggled, this, &SkinChunkPanel::routeColoursToggled);
+    m_routeLegend = new QLabel(box);
+    m_routeLegend->setObjectName("routeLegend");
+    m_routeLegend->setTextFormat(Qt::RichText);
+    routeRow->addWidget(m_routeColours);
+    routeRow->addWidget(m_routeLegend, 1);
+    column->addLayout(routeRow);
     return box;
+}
+
+void SkinChunkPanel::setRouteColours(bool on)
+{
+    const QSignalBlocker quiet(m_routeColours); // set from the View menu's action: no echo
+    m_routeColours->setChecked(on);
+}
+
+void SkinChunkPanel::setRouteLegend(const QList<QPair<QColor, QString>>& entries)
+{
+    QString html;
+    for (const auto& [colour, text] : entries)
+        html += QString("<span style=\"color:%1\">&#9632;</span>&nbsp;%2&nbsp;&nbsp; ").arg(colour.name(), text.toHtmlEscaped());
+    m_routeLegend->setText(html);
 }
 
 QWidget* SkinChunkPanel::makeOptionsBox()

@@ -11,6 +11,9 @@
 // the app runs each request as session work (an import is one undo step).
 #include "skin/Transfer.h"
 
+#include <QColor>
+#include <QList>
+#include <QPair>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -21,6 +24,7 @@ class QAbstractButton;
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
 class QListWidget;
 class QPlainTextEdit;
 class QSpinBox;
@@ -61,6 +65,13 @@ public:
     SkinInfluenceBox* influences() const { return m_influences; }
     QTreeWidget* reportList() const { return m_reports; }
     QPlainTextEdit* inspector() const { return m_inspector; }
+    // Colour the character's vertices by the step that placed their weights
+    // (1:1, transferred, inpainted...), in the viewport outside paint mode;
+    // the legend: one entry per step, its colour and what it means.
+    QCheckBox* routeColours() const { return m_routeColours; }
+    void setRouteColours(bool on);
+    void setRouteLegend(const QList<QPair<QColor, QString>>& entries);
+    QLabel* routeLegend() const { return m_routeLegend; }
     // Buttons by name (tests): "export", "addFiles", "removeFiles", "preview", "import", "inspect".
     QAbstractButton* button(const QString& name) const;
 
@@ -69,6 +80,7 @@ signals:
     void importRequested(bool preview);
     void inspectRequested(const QString& file); // the current import file, or one chosen
     void filesChanged();
+    void routeColoursToggled(bool on);
 
 private:
     QWidget* makeExportBox();
@@ -97,6 +109,8 @@ private:
     QComboBox* m_previewSelects = nullptr;
     SkinInfluenceBox* m_influences = nullptr;
     QTreeWidget* m_reports = nullptr;
+    QCheckBox* m_routeColours = nullptr;
+    QLabel* m_routeLegend = nullptr;
     QSpinBox* m_from = nullptr;
     QSpinBox* m_limit = nullptr;
     QPlainTextEdit* m_inspector = nullptr;

@@ -32,9 +32,9 @@ SkinInfluenceBox::SkinInfluenceBox(QWidget* parent) : QGroupBox(tr("Influences")
     m_missing = new QComboBox(this);
     m_missing->setObjectName("missingInfluences");
     // In skin::MissingInfluences order: Stop, Map, Create.
-    m_missing->addItems({tr("Stop and list them"), tr("Map them by the name map"), tr("Create: re-home on the nearest matched ancestor")});
+    m_missing->addItems({tr("Stop and list them"), tr("Map them by the name map"), tr("Create them as joints under their matched parent")});
     m_missing->setToolTip(tr("An influence of the chunks that is no skin joint of the rig (by identity or name): stop the import "
-                             "and list them, map them with a name map, or give their weights to their nearest ancestor the rig has"));
+                             "and list them, map them with a name map, or add each as a joint of the guide (named as the influence, at its bind position) under the joint its nearest matched ancestor is; one undo step with the weights"));
     form->addRow(tr("Missing influences"), m_missing);
     auto* mapRow = new QHBoxLayout;
     m_nameMap = new QLineEdit(this);
@@ -104,18 +104,18 @@ void SkinInfluenceBox::showMoved(const std::vector<skin::InfluenceMatch>& matche
 {
     using How = skin::InfluenceMatch::How;
     clearResults();
-    int mapped = 0, rehomed = 0;
+    int mapped = 0, created = 0;
     for (const skin::InfluenceMatch& m : matches) {
         if (m.how != How::Mapped && m.how != How::Created)
             continue;
-        (m.how == How::Mapped ? mapped : rehomed) += 1;
+        (m.how == How::Mapped ? mapped : created) += 1;
         m_results->addItem(tr("%1 -> %2  (%3; weights %4)")
                                .arg(QString::fromStdString(m.name), QString::fromStdString(m.target),
-                                    m.how == How::Mapped ? tr("mapped") : tr("re-homed"), meshList(m.meshes)));
+                                    m.how == How::Mapped ? tr("mapped") : tr("created"), meshList(m.meshes)));
     }
-    if (mapped + rehomed == 0)
+    if (mapped + created == 0)
         return;
-    m_heading->setText(tr("%1 influences mapped by name, %2 re-homed on an ancestor").arg(mapped).arg(rehomed));
+    m_heading->setText(tr("%1 influences mapped by name, %2 created as joints").arg(mapped).arg(created));
     m_heading->show();
     m_results->show();
 }

@@ -2,9 +2,9 @@
 // The Skin Chunks dock's missing-influence choices (issue 20 item 4, as the
 // CLI's --missing / --name-map): what an import does with a chunk influence
 // the rig has no skin joint of (identity or name) for: stop (default) with the
-// list of them, map them by a name map file, or re-home their weights on the
-// nearest matched ancestor ("create"). After a run it lists what stopped the
-// import, or which influences were mapped and re-homed. It only holds the
+// list of them, map them by a name map file, or create them as joints of the
+// guide under their matched parent ("create"). After a run it lists what stopped the
+// import, or which influences were mapped and created. It only holds the
 // choices and shows results; the app reads the name map file.
 #include "skin/InfluenceMap.h"
 
@@ -33,7 +33,7 @@ public:
     // The influences that stopped an import (skin::missingInfluences), each
     // with the meshes that weight it; empty hides the list.
     void showMissing(const std::vector<skin::InfluenceMatch>& missing);
-    // After a run: the influences that were mapped or re-homed (the others landed by identity or name).
+    // After a run: the influences that were mapped or created (the others landed by identity or name).
     void showMoved(const std::vector<skin::InfluenceMatch>& matches);
     void clearResults();
 

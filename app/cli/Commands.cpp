@@ -75,7 +75,7 @@ std::string usage()
            "                          else transferred from the name's chunk or from all chunks; the newest chunk of a name wins;\n"
            "                          the chunks' pre-deformed points unless --export-pose; influences by identity, then name;\n"
            "                          a missing one stops the import (stop), is mapped by the name map (map; OLD: NEW lines)\n"
-           "                          or re-homed on its nearest matched ancestor (create); the weights replace the mesh's\n"
+           "                          or created as a joint of the guide (saved) under its matched parent (create); the weights replace the mesh's\n"
            "                          unless --append (vertices a subset chunk leaves out keep theirs); --mesh/--vertices\n"
            "                          write only those vertices)\n"
            "       rigsmith-cli skin transfer SOURCE TARGET -o FILE.rschunks|FILE.glb|FILE.gltf [the import's method options]\n"

@@ -27,6 +27,7 @@ std::optional<Character> loadCharacter(const std::string& guidePath)
     if (!guide)
         return std::nullopt;
     Character c;
+    c.templates = templates;
     c.guide = guide.take();
     const Status weights = io::loadGuideWeights(guidePath, c.guide);
     print(weights.diagnostics());

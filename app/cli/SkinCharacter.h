@@ -9,7 +9,9 @@
 #include "model/Rig.h"
 #include "skin/SkinBones.h"
 #include "skin/SkinChunk.h"
+#include "templates/TemplateRegistry.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +25,7 @@ struct CharacterMesh {
 };
 
 struct Character {
+    std::shared_ptr<const templates::TemplateRegistry> templates; // the rig is built with
     model::GuideDocument guide;
     model::Rig rig;
     std::vector<skin::SkinBone> bones;

@@ -7,7 +7,11 @@
 #include "cli/SkinChunkSupport.h"
 #include "cli/SkinImportOptions.h"
 
+#include "edit/History.h"
 #include "io/AtomicFile.h"
+#include "io/GuideFile.h"
+#include "rigging/RigBuilder.h"
+#include "session/CreateInfluences.h"
 #include "io/InfluenceNameMap.h"
 #include "io/WeightsFile.h"
 #include "skin/ImportScope.h"
@@ -180,6 +184,31 @@ void bindImported(const ImportArguments& m, Character& c, const std::vector<skin
     printImportReport(report, t);
 }
 
+// The created joints into the guide, saved (before the weights that name
+// them), and the rig rebuilt with them for the chunks kept beside the weights.
+bool addCreatedJoints(const ImportArguments& m, Character& c, const session::CreatedInfluences& created)
+{
+    edit::History history(c.guide);
+    const Status added = session::addCreatedInstances(history, created);
+    print(added.diagnostics());
+    if (added.failed())
+        return false;
+    model::Rig rig = rigging::buildRig(c.guide, *c.templates);
+    if (hasErrors(rig.diagnostics)) {
+        print(rig.diagnostics);
+        return false;
+    }
+    const Status saved = io::saveGuideFile(c.guide, m.guide);
+    print(saved.diagnostics());
+    if (saved.failed())
+        return false;
+    for (const session::CreatedInfluence& joint : created.influences)
+        std::cout << "created joint: " << joint.boneName << " (influence " << joint.influence << ") under " << joint.parent << '\n';
+    std::cout << "guide: " << m.guide << '\n';
+    c.rig = std::move(rig);
+    return true;
+}
+
 } // namespace
 
 int runSkinImport(const std::vector<std::string>& args)
@@ -194,12 +223,27 @@ int runSkinImport(const std::vector<std::string>& args)
     if (!character)
         return 1;
     Character& c = *character;
-    auto resolved = skin::resolveInfluences(*chunks, c.bones, boneNames(c), m.influences);
+    std::vector<skin::SkinBone> bones = c.bones;
+    std::vector<std::string> names = boneNames(c);
+    skin::InfluenceMapOptions rules = m.influences;
+    session::CreatedInfluences created;
+    if (rules.missing == skin::MissingInfluences::Create) { // the missing ones become joints of the guide
+        if (!canWriteBeside(m.guide, "guide"))
+            return 1;
+        auto planned = session::planCreatedInfluences(c.guide, c.rig, *c.templates, *chunks, m.influences, bones, names);
+        print(planned.diagnostics());
+        if (!planned)
+            return 1;
+        created = planned.take();
+        rules = session::rulesWithCreated(m.influences, created);
+    }
+    auto resolved = skin::resolveInfluences(*chunks, bones, names, rules);
     print(resolved.diagnostics());
     auto targets = resolved ? importTargets(m, c) : std::nullopt;
     if (!targets)
         return 1;
-    *chunks = skin::applyInfluences(std::move(*chunks), *resolved, c.bones, boneNames(c));
+    session::markCreated(*resolved, created);
+    *chunks = skin::applyInfluences(std::move(*chunks), *resolved, bones, names);
     std::vector<const model::Mesh*> meshes;
     for (const ImportTarget& t : *targets)
         meshes.push_back(t.mesh.mesh);
@@ -211,6 +255,8 @@ int runSkinImport(const std::vector<std::string>& args)
         return 1;
     for (std::size_t i = 0; i < targets->size(); ++i)
         bindImported(m, c, *chunks, reports[i], (*targets)[i], std::move((*imported)[i]));
+    if (!created.empty() && !addCreatedJoints(m, c, created))
+        return 1;
     const Status saved = io::saveGuideWeights(c.guide, m.guide);
     print(saved.diagnostics());
     if (saved.failed())

@@ -237,6 +237,13 @@ model::RigNodeIndex BuildContext::createNode(model::RigNodeKind kind, const std:
     node.key = m_assembly.keyOf(m_instance, tag);
     node.path = m_assembly.pathOf(m_instance, tag);
     node.name = name;
+    // A name override keyed by the node's tag (`names: {skin.0: sk_ear}`: a
+    // tag has a '.', a naming token has none) names the node exactly, with
+    // the branch's side in a branch copy (sk_ear_L); `name` is then unused.
+    if (auto it = m_instance.names.find(tag); tag.find('.') != std::string::npos && it != m_instance.names.end()) {
+        const std::string& suffix = m_assembly.copyOf(m_instance.id).suffix; // "_L", "_A_L"
+        node.name = suffix.empty() ? it->second : it->second + m_assembly.guide.naming.side + suffix.substr(1);
+    }
     node.kind = kind;
     node.parent = parent == model::kNoNode ? m_hookNode : parent;
     node.owner = m_assembly.copyOf(m_instance.id).original;

@@ -31,6 +31,9 @@ void Session::unsubscribe(int handle)
 
 void Session::emitChange(const Change& change)
 {
+    constexpr std::uint32_t kViewOnly = ChangeKind::History | ChangeKind::Selection | ChangeKind::Evaluation | ChangeKind::Mode | ChangeKind::Pose;
+    if (change.kinds & ~kViewOnly) // what a re-fit (or another job) read may have changed
+        ++m_revision;
     followCharacter(change);
     const auto listeners = m_listeners; // a listener may unsubscribe
     for (const auto& [handle, listener] : listeners)

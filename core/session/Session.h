@@ -25,6 +25,7 @@
 #include "eval/PoseTools.h"
 #include "model/Rig.h"
 #include "session/MirroredGuides.h"
+#include "session/RefitJob.h"
 #include "session/SkinChunkJob.h"
 #include "skin/SkinBones.h"
 #include "skin/WeightTools.h"
@@ -203,7 +204,8 @@ public:
     // An import of `chunks` (many files' chunks: merged here, the newest of a
     // name wins) onto the meshes in `onto`, their influences resolved onto the
     // built rig's skin joints by `influences` (skin/InfluenceMap.h: identity,
-    // name, name map; missing ones stop, listed, or are re-homed). Refused
+    // name, name map; missing ones stop, listed, or, under create, become
+    // guide joints: session/CreateInfluences.h, added by apply). Refused
     // without a built rig, for bad options, missing influences under stop or
     // map, no target, or selected vertices of a mesh without applied weights.
     Result<SkinImportJob> prepareSkinImport(std::vector<skin::SkinChunk> chunks, skin::TransferOptions options, const SkinScope& onto,
@@ -215,7 +217,8 @@ public:
     // A run job's weights as one undo step named `what` (ChangeKind::Weights):
     // a whole mesh's record is replaced (or added); with selected vertices only
     // those change. The stored influences are the rig's skin joint keys the
-    // prepare resolved them onto. Refused, changing
+    // prepare resolved them onto. Joints the job creates are added in the same
+    // undo step (refused when the guide changed since prepare). Refused, changing
     // nothing, when the job has not run or the models changed since prepare.
     Result<std::vector<skin::MeshImportReport>> applySkinImport(SkinImportJob job, const std::string& what);
     // prepare + run + apply on this thread.
@@ -244,8 +247,21 @@ public:
     // the previous chunk kept for a changed or missing mesh (nothing lost).
     std::vector<skin::SkinChunk> bindingChunks() const;
     // Re-fits every changed mesh with a previous chunk; the reports of those
-    // re-fitted (empty: nothing to do, or it failed, said in the log).
+    // re-fitted (empty: nothing to do, or it failed, said in the log). With a
+    // refit runner set, the prepared job goes to it instead and this returns
+    // nothing: the host runs it and calls applyRefit (session/RefitJob.h).
     std::vector<skin::MeshImportReport> refitChangedMeshes();
+    // What a re-fit reads, copied; nullopt when no changed mesh has a previous chunk.
+    std::optional<RefitJob> prepareRefit() const;
+    // A run job's records as one undo step ("Re-fit weights of mesh 'x'"),
+    // its notes to the reporter. Refused, changing nothing, for a stale job.
+    Result<std::vector<skin::MeshImportReport>> applyRefit(RefitJob job);
+    // Whether nothing a re-fit reads changed since `job` was prepared.
+    bool isCurrent(const RefitJob& job) const { return job.revision == m_revision; }
+    using RefitRunner = std::function<void(RefitJob job)>;
+    void setRefitRunner(RefitRunner runner) { m_refitRunner = std::move(runner); }
+    // Counts the changes of the document, its models, weights and rig.
+    std::uint64_t revision() const { return m_revision; }
 
     // --- weight painting (SessionPaint.cpp). Tools act on the bound,
     // unchanged character meshes; every one keeps weights normalised and
@@ -408,6 +424,8 @@ private:
     std::map<std::size_t, std::vector<std::uint32_t>> m_selectedVertices;
     std::vector<std::pair<NodeKey, float>> m_copiedWeights;
     std::vector<skin::SkinChunk> m_savedChunks; // previous meshes, for re-fitting
+    RefitRunner m_refitRunner;
+    std::uint64_t m_revision = 0;
     skin::TransferOptions m_refitOptions = defaultRefitOptions();
     static skin::TransferOptions defaultRefitOptions();
 };

@@ -179,13 +179,25 @@ Result<SkinImportJob> Session::prepareSkinImport(std::vector<skin::SkinChunk> ch
     job.notes = merged.takeDiagnostics();
     if (merged->empty())
         return Out::refused("no skin chunk to import");
-    const std::vector<std::string> names = skinBoneNames();
-    auto resolved = skin::resolveInfluences(*merged, m_skinBones, names, influences);
+    std::vector<std::string> names = skinBoneNames();
+    std::vector<skin::SkinBone> bones = m_skinBones;
+    skin::InfluenceMapOptions rules = influences;
+    if (influences.missing == skin::MissingInfluences::Create) { // the missing ones become joints, then match by name
+        auto planned = planCreatedInfluences(m_document, *m_rig, *m_templates, *merged, influences, bones, names);
+        if (!planned)
+            return Out::failure(planned.takeDiagnostics());
+        for (Diagnostic& d : planned.takeDiagnostics())
+            job.notes.push_back(std::move(d));
+        job.created = planned.take();
+        rules = rulesWithCreated(influences, job.created);
+    }
+    auto resolved = skin::resolveInfluences(*merged, bones, names, rules);
     if (!resolved)
         return Out::failure(resolved.takeDiagnostics());
     for (Diagnostic& d : resolved.takeDiagnostics())
         job.notes.push_back(std::move(d));
-    job.chunks = skin::applyInfluences(merged.take(), *resolved, m_skinBones, names);
+    markCreated(*resolved, job.created);
+    job.chunks = skin::applyInfluences(merged.take(), *resolved, bones, names);
     job.influences = resolved.take();
     job.options = std::move(options);
     for (auto& [index, vertices] : *meshes) {
@@ -221,25 +233,36 @@ Status SkinImportJob::run()
     return Status::success(std::move(notes));
 }
 
+std::vector<VertexRoute> vertexRoutes(const skin::MeshImportReport& r, std::size_t count, const std::vector<std::uint32_t>* oneToOne)
+{
+    if (r.route == skin::ImportRoute::SingleInfluence)
+        return std::vector<VertexRoute>(count, VertexRoute::SingleInfluence);
+    std::vector<VertexRoute> out(count, VertexRoute::Transferred);
+    if (r.route == skin::ImportRoute::OneToOne) {
+        if (!oneToOne)
+            std::fill(out.begin(), out.end(), VertexRoute::OneToOne);
+        else
+            for (std::uint32_t id : *oneToOne)
+                if (id < count)
+                    out[id] = VertexRoute::OneToOne;
+    }
+    for (std::uint32_t v : r.inpaintedVertices)
+        if (v < count)
+            out[v] = VertexRoute::Inpainted;
+    return out;
+}
+
 std::vector<VertexRoute> SkinImportJob::routes(std::size_t t) const
 {
     if (t >= reports.size() || t >= targets.size())
         return {};
     const skin::MeshImportReport& r = reports[t];
-    const std::size_t count = targets[t].mesh->vertexCount();
-    if (r.route == skin::ImportRoute::SingleInfluence)
-        return std::vector<VertexRoute>(count, VertexRoute::SingleInfluence);
-    std::vector<VertexRoute> out(count, VertexRoute::Transferred);
-    if (r.route == skin::ImportRoute::OneToOne)
-        for (const skin::SkinChunk& c : chunks)
-            if (c.mesh == r.source)
-                for (std::uint32_t id : c.vertexIds)
-                    if (id < count)
-                        out[id] = VertexRoute::OneToOne;
-    for (std::uint32_t v : r.inpaintedVertices)
-        if (v < count)
-            out[v] = VertexRoute::Inpainted;
-    return out;
+    const std::vector<std::uint32_t> none;
+    const std::vector<std::uint32_t>* ids = &none;
+    for (const skin::SkinChunk& c : chunks)
+        if (c.mesh == r.source)
+            ids = &c.vertexIds;
+    return vertexRoutes(r, targets[t].mesh->vertexCount(), ids);
 }
 
 Result<std::vector<skin::MeshImportReport>> Session::applySkinImport(SkinImportJob job, const std::string& what)
@@ -262,7 +285,22 @@ Result<std::vector<skin::MeshImportReport>> Session::applySkinImport(SkinImportJ
         records.push_back({m_models[m->model].path, target.mesh->name, target.mesh->vertexCount(), model::topologyFingerprint(*target.mesh),
                            std::move(weights)});
     }
+    if (!job.created.empty()) { // the created joints and the weights: one undo step
+        if (m_history.inTransaction())
+            return Out::refused("finish the edit in progress before importing weights that create joints; nothing changed");
+        m_history.begin(what);
+        if (const Status added = addCreatedInstances(m_history, job.created); added.failed()) {
+            m_history.rollback();
+            return Out::failure(added.diagnostics());
+        }
+    }
     const Status set = setBindings(std::move(records), what);
+    if (!job.created.empty()) {
+        if (set.failed())
+            m_history.rollback();
+        else
+            m_history.commit(what);
+    }
     if (set.failed())
         return Out::failure(set.diagnostics());
     Diagnostics notes = std::move(job.notes);

@@ -48,13 +48,11 @@ std::vector<skin::SkinChunk> Session::bindingChunks() const
     return out;
 }
 
-std::vector<skin::MeshImportReport> Session::refitChangedMeshes()
+std::optional<RefitJob> Session::prepareRefit() const
 {
     if (m_history.inTransaction())
-        return {};
-    std::vector<model::MeshBinding> records;
-    std::vector<skin::MeshImportReport> reports;
-    Diagnostics notes;
+        return std::nullopt;
+    RefitJob job;
     for (const CharacterMesh& m : m_characterMeshes) {
         if (!m.changed)
             continue;
@@ -62,20 +60,61 @@ std::vector<skin::MeshImportReport> Session::refitChangedMeshes()
         const skin::SkinChunk* previous = previousChunk(was);
         if (!previous)
             continue; // reported by matchMeshes: kept, not applied
-        const model::Mesh& mesh = m.data(m_models);
-        auto refit = skin::refitBinding(was, *previous, mesh, rig(), m_refitOptions);
+        job.items.push_back({was, *previous, m_models[m.model].model, &m.data(m_models)});
+    }
+    if (job.items.empty())
+        return std::nullopt;
+    job.rig = m_rig ? std::make_shared<const model::Rig>(*m_rig) : nullptr;
+    job.options = m_refitOptions;
+    job.revision = m_revision;
+    return job;
+}
+
+Status RefitJob::run()
+{
+    refits.clear();
+    notes.clear();
+    for (const Item& item : items) {
+        auto refit = skin::refitBinding(item.was, item.previous, *item.mesh, rig.get(), options);
         if (!refit) {
-            Diagnostic d = makeWarning({was.model, 0, 0}, "mesh '" + mesh.name + "' could not be re-fitted (" + formatAll(refit.diagnostics()) +
-                                                              "): its weights are kept but not applied");
-            d.subject = Subject::ofMesh(mesh.name);
+            if (refit.diagnostics().empty()) // cancelled (options.progress), not failed
+                return Status::refused("the re-fit was cancelled; nothing changed");
+            Diagnostic d = makeWarning({item.was.model, 0, 0}, "mesh '" + item.mesh->name + "' could not be re-fitted (" +
+                                                                   formatAll(refit.diagnostics()) + "): its weights are kept but not applied");
+            d.subject = Subject::ofMesh(item.mesh->name);
             notes.push_back(std::move(d));
+            refits.emplace_back();
             continue;
         }
         refit->note.message += "; undo brings the previous weights back";
-        notes.push_back(std::move(refit->note));
-        records.push_back(std::move(refit->binding));
-        reports.push_back(std::move(refit->report));
+        refits.push_back(refit.take());
     }
+    return Status::success();
+}
+
+std::vector<VertexRoute> RefitJob::routes(std::size_t i) const
+{
+    if (i >= refits.size() || !refits[i])
+        return {};
+    return vertexRoutes(refits[i]->report, items[i].mesh->vertexCount()); // the previous chunk covers the whole mesh
+}
+
+Result<std::vector<skin::MeshImportReport>> Session::applyRefit(RefitJob job)
+{
+    using Out = Result<std::vector<skin::MeshImportReport>>;
+    if (!isCurrent(job))
+        return Out::refused("the guide changed while its meshes were re-fitted; the result is stale");
+    if (job.refits.size() != job.items.size())
+        return Out::refused("the re-fit has not run");
+    std::vector<model::MeshBinding> records;
+    std::vector<skin::MeshImportReport> reports;
+    Diagnostics notes = std::move(job.notes);
+    for (std::optional<skin::Refit>& refit : job.refits)
+        if (refit) {
+            notes.push_back(std::move(refit->note));
+            records.push_back(std::move(refit->binding));
+            reports.push_back(std::move(refit->report));
+        }
     if (!records.empty()) {
         const std::string what = records.size() == 1 ? "Re-fit weights of mesh '" + records[0].mesh + "'"
                                                      : "Re-fit weights of " + std::to_string(records.size()) + " meshes";
@@ -85,7 +124,21 @@ std::vector<skin::MeshImportReport> Session::refitChangedMeshes()
             reports.clear();
     }
     report(notes);
-    return reports;
+    return Out(std::move(reports));
+}
+
+std::vector<skin::MeshImportReport> Session::refitChangedMeshes()
+{
+    std::optional<RefitJob> job = prepareRefit();
+    if (!job)
+        return {};
+    if (m_refitRunner) { // the host runs it (the editor: on a worker thread) and applies it later
+        m_refitRunner(std::move(*job));
+        return {};
+    }
+    job->run();
+    auto applied = applyRefit(std::move(*job));
+    return applied ? applied.take() : std::vector<skin::MeshImportReport>{};
 }
 
 } // namespace rs::session

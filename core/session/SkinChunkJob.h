@@ -15,6 +15,7 @@
 // returning false) makes run fail; nothing in the session changes.
 #include "base/Result.h"
 #include "base/Status.h"
+#include "session/CreateInfluences.h"
 #include "skin/InfluenceMap.h"
 #include "skin/SkinChunk.h"
 #include "skin/Transfer.h"
@@ -47,8 +48,15 @@ struct SkinScope {
 // Inpainted the vertices weight inpainting solved for.
 enum class VertexRoute : std::uint8_t { OneToOne, SingleInfluence, Transferred, Inpainted };
 
+// Per vertex of a mesh of `count` vertices, its route by `report`: under the
+// 1:1 route the vertices in `oneToOne` (the chunk's vertex ids; null: all of
+// them), the others Transferred; the inpainted ones Inpainted.
+std::vector<VertexRoute> vertexRoutes(const skin::MeshImportReport& report, std::size_t count,
+                                      const std::vector<std::uint32_t>* oneToOne = nullptr);
+
 // One import in flight. Owns copies of everything run() reads.
 struct SkinImportJob {
+    CreatedInfluences created; // missing influences made joints (rule "create"): apply adds them first
     std::vector<skin::SkinChunk> chunks; // merged: one per mesh name, the newest kept; weights on the rig's skin bones
     skin::InfluenceResolution influences; // how each chunk influence landed on a skin bone
     skin::TransferOptions options;

@@ -115,8 +115,8 @@ Diagnostics missingErrors(const std::vector<InfluenceMatch>& missing, MissingInf
         errors.push_back(makeError({}, "influence '" + m.name + "' (weighting mesh" + (m.meshes.size() > 1 ? "es " : " ") +
                                            meshList(m.meshes) + ") is not a skin joint of the rig" +
                                            (rule == MissingInfluences::Map ? " and the name map does not name it"
-                                                                           : "; map it to one by name, or re-home its weights on its "
-                                                                             "nearest ancestor (missing influences: create)")));
+                                                                           : "; map it to one by name, or create it as a joint under "
+                                                                             "its matched parent (missing influences: create)")));
     return errors;
 }
 

@@ -10,11 +10,13 @@
 //      - Stop (default): an error per missing influence, naming it and the
 //        meshes whose chunks weight it; nothing is imported.
 //      - Map: as Stop; says the name map is the way (the map must be given).
-//      - Create: "create under parent-matched names". The rig is built from
-//        the guide, so an import cannot add a joint to it; the influence is
-//        re-homed instead: its weights go to its nearest ancestor in the
-//        chunk's hierarchy that rules 1-3 match (the skeleton's root when
-//        none does), and a note names each re-homing.
+//      - Create: "create under parent-matched names". The session and the
+//        CLI add such an influence to the guide first, as a joint under its
+//        matched parent (session/CreateInfluences.h), and resolve with Stop,
+//        so nothing is missing here. Called with Create directly (no guide to
+//        add a joint to), the influence is re-homed: its weights go to its
+//        nearest ancestor in the chunk's hierarchy that rules 1-3 match (the
+//        skeleton's root when none does), and a warning names each.
 //
 // An influence that carries no weight in its chunk is never missing: it is
 // dropped (a chunk lists every skin joint of the rig it came from).

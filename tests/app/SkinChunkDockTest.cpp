@@ -15,7 +15,13 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
+#include <QStatusBar>
+#include <QTimer>
 #include <QTreeWidget>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
 
 using namespace rs;
 using namespace rs::test;
@@ -117,18 +123,51 @@ TEST(SkinChunkDock, ARemeshedModelIsRefittedOnOpenFromTheSavedChunks)
     ASSERT_TRUE(e.window.saveFile(guide));
     EXPECT_TRUE(std::filesystem::exists(io::chunksPathFor(guide.toStdString()))) << "the bound meshes are saved beside the weights";
     writeSleeve(e.window, "sleeve-reopen.obj", 14); // remeshed in another program
-    ASSERT_TRUE(e.window.openFile(guide));
     auto& s = e.window.session();
+    // The worker waits (at most 20 s) for the GUI thread's event loop to let it go: the re-fit computes while the window runs.
+    std::atomic<bool> released{false};
+    std::atomic<int> waits{0};
+    skin::TransferOptions watched = s.refitOptions();
+    watched.progress = [&](double) {
+        ++waits;
+        for (int i = 0; i < 20000 && !released; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return true;
+    };
+    s.setRefitOptions(watched);
+    ASSERT_TRUE(e.window.openFile(guide));
+    EXPECT_TRUE(e.window.isRefitting()) << "the open returns while the re-fit computes";
+    EXPECT_EQ(s.document().bindings[0].vertexCount, 440u) << "nothing applied yet";
+    const QLabel* progress = e.window.statusBar()->findChild<QLabel*>("refitProgress");
+    ASSERT_NE(progress, nullptr);
+    EXPECT_TRUE(progress->text().startsWith("Re-fitting the weights of 1 changed mesh")) << progress->text().toStdString();
+    // An edit while it computes: that result is stale, discarded and computed again, never applied over the edit.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return waits.load() > 0; }, 20000));
+    const model::InstanceId renamed = s.document().instances().back().id;
+    ASSERT_TRUE(s.renameInstance(renamed, "renamed_meanwhile").ok());
+    QTimer::singleShot(50, [&] { released = true; }); // only a running event loop lets the worker go
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isRefitting(); }, 30000));
+    EXPECT_TRUE(released) << "the worker was let go by the GUI thread's timer";
+    EXPECT_EQ(e.window.statusBar()->findChild<QLabel*>("refitProgress"), nullptr) << "the progress leaves the status bar";
     ASSERT_EQ(s.document().bindings.size(), 1u);
     EXPECT_EQ(s.document().bindings[0].vertexCount, 520u);
     EXPECT_TRUE(logSays(e.window, "(440 vertices then, 520 now): its weights were re-fitted from the previous mesh"));
     EXPECT_EQ(s.history().undoText(), "Re-fit weights of mesh 'sleeve'");
+    EXPECT_EQ(s.document().instance(renamed)->name, "renamed_meanwhile") << "the edit made meanwhile is kept";
+    ASSERT_EQ(s.history().size(), 2u) << "the rename, then the re-fit computed again after it";
     EXPECT_FALSE(s.history().isClean()) << "the re-fitted weights are not saved yet";
+    const model::MeshBinding threaded = s.document().bindings[0];
     e.window.action("undo")->trigger();
     EXPECT_EQ(s.document().bindings[0].vertexCount, 440u) << "undo brings the previous record back";
+
+    // The same re-fit on this thread (as the CLI runs it) gives the same record.
+    s.setRefitRunner(nullptr);
+    s.setRefitOptions(skin::defaultRefitOptions());
+    ASSERT_EQ(s.refitChangedMeshes().size(), 1u);
+    EXPECT_TRUE(s.document().bindings[0] == threaded) << "the worker's result equals the synchronous one";
 }
 
-TEST(SkinChunkDock, MissingInfluencesStopWithAListOrMapByANameMapFileOrAreReHomed)
+TEST(SkinChunkDock, MissingInfluencesStopWithAListOrMapByANameMapFileOrAreCreatedAsJoints)
 {
     Editor e;
     bindSleeve(e, "sleeve-influences.obj");
@@ -165,16 +204,27 @@ TEST(SkinChunkDock, MissingInfluencesStopWithAListOrMapByANameMapFileOrAreReHome
     ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isImportingChunks(); }, 20000));
     EXPECT_EQ(s.history().size(), steps + 1);
     EXPECT_TRUE(s.document().bindings[0].weights == bound);
-    EXPECT_EQ(box->resultHeading()->text().toStdString(), "1 influences mapped by name, 0 re-homed on an ancestor");
+    EXPECT_EQ(box->resultHeading()->text().toStdString(), "1 influences mapped by name, 0 created as joints");
     EXPECT_EQ(listed(box->resultList()), QStringList{QString::fromStdString("elbow_old -> " + elbow + "  (mapped; weights 'sleeve')")});
 
-    // Create without the map: re-homed on an ancestor, said in the dock.
+    // Create without the map: a joint of the guide under the elbow's parent (in the left arm's copy), said in the dock.
     box->setNameMapFile({});
     box->findChild<QComboBox*>("missingInfluences")->setCurrentIndex(2);
+    const std::size_t instances = s.document().instances().size();
     e.window.importSkinChunks(panel->importFiles(), true);
     ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isImportingChunks(); }, 20000));
-    EXPECT_EQ(box->resultHeading()->text().toStdString(), "0 influences mapped by name, 1 re-homed on an ancestor");
+    EXPECT_EQ(box->resultHeading()->text().toStdString(), "0 influences mapped by name, 1 created as joints");
     ASSERT_EQ(box->resultList()->count(), 1);
-    EXPECT_TRUE(box->resultList()->item(0)->text().startsWith("elbow_old -> ")) << box->resultList()->item(0)->text().toStdString();
+    EXPECT_EQ(box->resultList()->item(0)->text().toStdString(), "elbow_old -> elbow_old_L  (created; weights 'sleeve')");
     EXPECT_EQ(s.history().size(), steps + 1) << "a preview applies nothing";
+    EXPECT_EQ(s.document().instances().size(), instances) << "a preview adds no joint";
+    e.window.importSkinChunks(panel->importFiles(), false);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !e.window.isImportingChunks(); }, 20000));
+    EXPECT_EQ(s.history().size(), steps + 2) << "the joint and the weights: one undo step";
+    ASSERT_EQ(s.document().instances().size(), instances + 1);
+    EXPECT_EQ(s.document().instances().back().templateId, "core.joints");
+    ASSERT_NE(s.rig(), nullptr);
+    EXPECT_TRUE(std::any_of(s.rig()->nodes.begin(), s.rig()->nodes.end(), [](const model::RigNode& n) { return n.name == "elbow_old_L"; }));
+    e.window.action("undo")->trigger();
+    EXPECT_EQ(s.document().instances().size(), instances) << "undo removes the joint with the weights";
 }

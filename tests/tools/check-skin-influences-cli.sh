@@ -2,7 +2,7 @@
 # rigsmith-cli skin export / import / transfer (issue 20 items 1, 4, 5, 6) on a
 # generated character (a world and a spine, a cylinder body and a belt, bound
 # by envelope): export selections (vertices, joints), missing influences
-# (stop lists them, create re-homes them, a name map maps them), import onto a
+# (stop lists them, create adds them to the guide, a name map maps them), import onto a
 # selection and --append keep the other vertices' weights, a weight depot
 # round trip where the newest chunk wins, skin transfer onto another mesh
 # file, progress on stderr. Failures exit 1 and write nothing; usage errors 2.
@@ -65,13 +65,29 @@ if "$cli" skin import torso.yml all.rschunks 2> stop.txt; then fail "missing inf
 grep -q "influence 'sk_spine_hips' (weighting meshes 'body', 'belt') is not a skin joint of the rig" stop.txt || fail "stop message"
 [ "$(grep -c "is not a skin joint of the rig" stop.txt)" = 5 ] || fail "stop lists every missing influence"
 [ ! -e torso.weights ] || fail "a stopped import wrote weights"
-"$cli" skin import torso.yml all.rschunks --missing create --json create.json > /dev/null 2> create.txt || fail "create"
+cp torso.yml torso-before.yml
+"$cli" skin import torso.yml all.rschunks --missing create --json create.json > create-out.txt 2> create.txt || fail "create"
 python3 -c '
 import json, sys
 r = json.load(open(sys.argv[1]))["influences"]
 assert r["created"] == 5 and r["mapped"] == 0 and r["identity"] == 1, r
-assert all(m["to"] == "sk_world_root" for m in r["moved"]), r
-' create.json || fail "create re-homes every spine influence on the root"
+assert all(m["how"] == "created" and m["to"] == m["influence"] for m in r["moved"]), r
+' create.json || fail "create makes a joint named as each spine influence"
+grep -q "created joint: sk_spine4 (influence sk_spine4) under sk_spine3" create-out.txt || fail "create names each joint and its parent"
+[ "$(grep -c "template: core.joints" torso.yml)" = 5 ] || fail "create saves five core.joints instances into the guide"
+[ -z "$(ls -A | grep '\.tmp$' || true)" ] || fail "create left temp files"
+python3 - <<'PY' || fail "the created joints sit where the influences were bound"
+import re
+text = open("torso.yml").read()
+hips = re.search(r"names:\n\s+skin\.0: sk_spine_hips\n\s+joints:\n\s+- \{id: \d+, t: \[([^]]*)\]", text)
+assert hips, text
+t = [float(x) for x in hips.group(1).split(",")]
+assert abs(t[0]) < 1e-6 and abs(t[2]) < 1e-6 and 0.8 < t[1] < 1.0, t # under the world root joint (at the origin): at the hips' height
+PY
+"$cli" skin import torso.yml all.rschunks --json again.json > /dev/null 2>&1 || fail "the created joints are found by name on the next import"
+grep -q '"created": 0' again.json && grep -q '"name": 5' again.json || fail "the next import matches the created joints by name"
+cp torso-before.yml torso.yml
+rm -f torso.weights torso.weights.rschunks
 printf '# old spine -> torso\nsk_spine_hips: sk_torso_hips\nsk_spine1: sk_torso1\n"sk_spine2" = sk_torso2\n' > names.yml
 "$cli" skin import torso.yml all.rschunks --name-map names.yml --missing create --json mapped.json > /dev/null 2>&1 || fail "map + create"
 python3 -c '
@@ -79,8 +95,10 @@ import json, sys
 r = json.load(open(sys.argv[1]))["influences"]
 assert r["mapped"] == 3 and r["created"] == 2, r
 to = {m["influence"]: (m["how"], m["to"]) for m in r["moved"]}
-assert to["sk_spine1"] == ("mapped", "sk_torso1") and to["sk_spine4"] == ("created", "sk_torso2"), to
-' mapped.json || fail "a name map maps, and create re-homes the rest under the mapped ancestor"
+assert to["sk_spine1"] == ("mapped", "sk_torso1") and to["sk_spine4"] == ("created", "sk_spine4"), to
+' mapped.json || fail "a name map maps, and create makes joints for the rest"
+grep -q "sk_spine3" torso.yml && ! grep -q "sk_spine1" torso.yml || fail "create makes only the joints the map leaves missing"
+cp torso-before.yml torso.yml
 rm -f torso.weights
 if "$cli" skin import torso.yml all.rschunks --missing map --map sk_spine_hips=sk_torso_hips 2> map.txt; then fail "a partial map imported"; fi
 grep -q "influence 'sk_spine1' (weighting meshes 'body', 'belt') is not a skin joint of the rig and the name map does not name it" map.txt || fail "map message"

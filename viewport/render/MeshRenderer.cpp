@@ -22,10 +22,11 @@ layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
 layout(location = 3) in uvec4 joints;  // the 4 largest influences, largest first
 layout(location = 4) in vec4 weights;  // summing to 1, or all 0 (no influence)
+layout(location = 5) in vec3 overlayColor; // SceneMesh::vertexColors
 uniform mat4 viewProjection;
 uniform samplerBuffer palette; // linear: 4 texels (matrix columns) per bone; dual quaternion: 2 (real, dual)
 uniform int skinning;          // 0 bind pose, 1 linear blend, 2 dual quaternion
-uniform int weightDisplay;     // 0 material, 1 one bone's weight, 2 dominant bone
+uniform int weightDisplay;     // 0 material, 1 one bone's weight, 2 dominant bone, 3 a colour per vertex
 uniform int weightBone;
 out vec3 worldNormal;
 out vec2 texCoord;
@@ -76,6 +77,8 @@ void main() {
         weightColor = heat(w);
     } else if (weightDisplay == 2) {
         weightColor = weighted ? boneColor(joints.x) : vec3(0.35);
+    } else if (weightDisplay == 3) {
+        weightColor = overlayColor;
     } else {
         weightColor = vec3(0.0);
     }
@@ -126,7 +129,9 @@ struct MeshRenderer::Gl {
         std::size_t mesh = 0;
         std::shared_ptr<const model::MeshWeights> weights; // what the influence buffer holds
         bool hasInfluences = false;
-        GLuint vao = 0, vertices = 0, influences = 0, indices = 0;
+        std::shared_ptr<const std::vector<glm::vec3>> colors; // what the colour buffer holds
+        bool hasColors = false;
+        GLuint vao = 0, vertices = 0, influences = 0, indices = 0, colorBuffer = 0;
         GLsizei indexCount = 0;
         bool used = false;
     };
@@ -137,12 +142,14 @@ struct MeshRenderer::Gl {
 
     GpuMesh& meshFor(const SceneMesh& m);
     void uploadWeights(GpuMesh& gpu, const SceneMesh& m);
+    void uploadColors(GpuMesh& gpu, const SceneMesh& m);
     GLuint texture(const std::string& path, const std::string* image);
     void free(GpuMesh& gpu)
     {
         glDeleteBuffers(1, &gpu.vertices);
         glDeleteBuffers(1, &gpu.influences);
         glDeleteBuffers(1, &gpu.indices);
+        glDeleteBuffers(1, &gpu.colorBuffer);
         glDeleteVertexArrays(1, &gpu.vao);
     }
 };
@@ -272,6 +279,7 @@ MeshRenderer::Gl::GpuMesh& MeshRenderer::Gl::meshFor(const SceneMesh& m)
     glGenBuffers(1, &gpu.vertices);
     glGenBuffers(1, &gpu.influences);
     glGenBuffers(1, &gpu.indices);
+    glGenBuffers(1, &gpu.colorBuffer);
     glBindVertexArray(gpu.vao);
     glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(MeshVertex)), vertices.data(), GL_STATIC_DRAW);
@@ -317,6 +325,22 @@ void MeshRenderer::Gl::uploadWeights(GpuMesh& gpu, const SceneMesh& m)
     } else { // the attributes' constant values: no influence
         glDisableVertexAttribArray(3);
         glDisableVertexAttribArray(4);
+    }
+    glBindVertexArray(0);
+}
+
+void MeshRenderer::Gl::uploadColors(GpuMesh& gpu, const SceneMesh& m)
+{
+    gpu.colors = m.vertexColors;
+    gpu.hasColors = m.vertexColors && m.vertexColors->size() == m.data().vertexCount();
+    glBindVertexArray(gpu.vao);
+    if (gpu.hasColors) {
+        glBindBuffer(GL_ARRAY_BUFFER, gpu.colorBuffer);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m.vertexColors->size() * sizeof(glm::vec3)), m.vertexColors->data(), GL_STATIC_DRAW);
+        glVertexAttribPointer(5, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        glEnableVertexAttribArray(5);
+    } else {
+        glDisableVertexAttribArray(5);
     }
     glBindVertexArray(0);
 }
@@ -369,6 +393,8 @@ void MeshRenderer::prepare(const Scene& scene)
         gpu.used = true;
         if (fresh || gpu.weights != m.weights)
             m_gl->uploadWeights(gpu, m);
+        if (fresh || gpu.colors != m.vertexColors)
+            m_gl->uploadColors(gpu, m);
         m_gl->texture(m.texturePath, m.textureImage.get());
     }
     for (auto& gpu : m_gl->meshes) // a model no longer drawn frees its buffers
@@ -425,7 +451,7 @@ void MeshRenderer::draw(const Scene& scene, const glm::mat4& viewProjection, con
             continue;
         const bool weighted = gpu->hasInfluences;
         glUniform1i(m_gl->skinning, m.skinned && weighted ? (dq ? 2 : 1) : 0);
-        glUniform1i(m_gl->weightDisplay, weighted ? int(scene.weightDisplay) : 0);
+        glUniform1i(m_gl->weightDisplay, gpu->hasColors ? 3 : weighted ? int(scene.weightDisplay) : 0);
         glUniform1i(m_gl->weightBone, scene.weightBone);
         glUniform3fv(m_gl->baseColor, 1, &m.baseColor[0]);
         const GLuint texture = m_gl->texture(m.texturePath, m.textureImage.get());
