@@ -20,8 +20,10 @@ std::string labelOf(const model::GuideDocument& guide, const NodeKey& key)
     if (key.isRoot())
         return "::" + key.tag;
     const model::TemplateInstance* instance = guide.instance(key.instance);
-    const std::string name = instance ? instance->name : "#" + std::to_string(key.instance);
-    return name + (key.branch.empty() ? "" : "." + key.branch) + "::" + key.tag;
+    std::string label = instance ? instance->name : "#" + std::to_string(key.instance);
+    if (!key.branch.empty())
+        label.append(".").append(key.branch);
+    return label.append("::").append(key.tag);
 }
 
 struct Stage {
@@ -86,7 +88,7 @@ struct Stage {
             if (node.kind != model::RigNodeKind::Controller || node.key.isRoot())
                 continue;
             const auto* record = shapeRecordFor(node, applied);
-            if (record && !mirrored.count(node.key.copy()))
+            if (record && restore.restores(model::OverrideKind::Shapes) && !mirrored.count(node.key.copy()))
                 applyShape(node, record->first, *record->second.shape);
         }
     }
@@ -144,8 +146,7 @@ struct Stage {
     void run()
     {
         std::set<NodeKey> applied;
-        if (restore.restores(model::OverrideKind::Shapes))
-            applyShapes(applied);
+        applyShapes(applied); // with the kind off, it only notes which records have a node
         if (afterShapes)
             afterShapes();
         for (const auto& [key, o] : guide.overrides) {

@@ -110,7 +110,7 @@ TEST(Overrides, EveryKindSurvivesARebuildAnUnrelatedOptionARenameAndASaveReopen)
     edit::History history(guide);
     expectEveryKind(guide, "first build");
     expectEveryKind(guide, "rebuild");
-    const model::InstanceId head = guide.instanceNamed("head")->id;
+    const model::InstanceId head = guide.instanceNamed("neck")->id;
     ASSERT_TRUE(test::succeeded(edit::setOption(history, head, "head_space", Value(std::string("world")), Value(std::string("neck")))));
     expectEveryKind(guide, "an unrelated option");
     ASSERT_TRUE(test::succeeded(edit::renameInstance(history, kArm, "limb")));

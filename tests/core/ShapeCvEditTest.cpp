@@ -93,7 +93,7 @@ TEST(ShapeCvEdit, MovingACvMovesItExactlyTheMirroredSideFollowsAndItIsSaved)
 
     // The guide keeps the edit, a line per CV, and reads it back.
     const std::string text = io::writeGuideText(doc);
-    const auto at = text.find("      ctrls.ik:\n        t: [0, 0, 0]\n        cvs:\n          - {curve: 0, cv: 2, offset: [");
+    const auto at = text.find("    node: ctrls.ik\n    shape: {}\n    cvs:\n      - {curve: 0, cv: 2, offset: [");
     EXPECT_NE(at, std::string::npos) << text;
     auto read = io::readGuideText(text, "cvs.yml");
     ASSERT_TRUE(read) << formatAll(read.diagnostics());
