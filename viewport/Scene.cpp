@@ -172,6 +172,8 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
         const bool shown = !posed || pose->isVisible(i);
         if (node.kind == model::RigNodeKind::Controller && shown)
             for (const auto& curve : node.curves) {
+                if (!curve.visible)
+                    continue; // a shape override hides it
                 SceneCurve c;
                 c.node = i;
                 c.color = curve.color;

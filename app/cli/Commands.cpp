@@ -38,8 +38,10 @@ std::string usage()
            "                          [-o OUT.glb|OUT.gltf|OUT.fbx] [--preset gltf|unreal|unity] [--controllers] [--rom]\n"
            "                          [--current-pose] [--names unity|MAP.yml] [--fix-names] [--fix-weights] [--force]\n"
            "                          [--proxy-mesh VERTICES] [--no-meshes] [--reference EXPORT.json]\n"
-           "                          [--fps FPS] [--rom-clips markers|per-control]\n"
-           "       (--posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
+           "                          [--fps FPS] [--rom-clips markers|per-control] [--no-restore KIND]...\n"
+           "       (--no-restore KIND: build without the guide's overrides of that kind (shapes, defaults, limits,\n"
+           "        locks, post, names, pose; repeatable); the records stay in the guide;\n"
+           "        --posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
            "        -o exports for engines: --preset gltf (Y-up metres), unreal (FBX Z-up centimetres, a root\n"
            "        joint at the origin), unity (humanoid names); --controllers adds the controllers as tagged\n"
            "        nodes, --rom a range-of-motion clip from the guide's test pose (keys on whole frames at --fps,\n"
@@ -95,6 +97,7 @@ struct BuildArguments {
     std::string guide, dump;
     bool posed = false;
     bool meshes = true;
+    model::RestoreToggles restore; // --no-restore KIND
     io::ExportRequest exportRequest;
 };
 
@@ -113,6 +116,15 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
         else if (a == "--rom") e.rangeOfMotion = true;
         else if (a == "--current-pose") e.currentPose = true;
         else if (a == "--no-meshes") b.meshes = false;
+        else if (a == "--no-restore" && hasValue) {
+            const auto kind = model::parseOverrideKind(args[++i]);
+            if (!kind) {
+                std::cerr << "rigsmith-cli: --no-restore wants shapes, defaults, limits, locks, post, names or pose, not '"
+                          << args[i] << "'\n";
+                return false;
+            }
+            b.restore.set(*kind, false);
+        }
         else if (a == "--fps" && hasValue) {
             const auto fps = parseInteger(args[++i]);
             if (!fps || *fps < 1 || *fps > 1000) {
@@ -246,7 +258,8 @@ int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, con
     // A rig built --posed already is in the guide's pose: the pose relative to
     // it is the rest, or --current-pose (and the range of motion) would apply it twice.
     const model::PoseValues none;
-    const model::PoseValues& pose = b.posed ? none : guide.pose;
+    const model::PoseValues restored = rigging::restoredPose(guide, b.restore);
+    const model::PoseValues& pose = b.posed ? none : restored;
     const Diagnostics d = io::runExport(rig, pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     status = report(d, status);
@@ -270,16 +283,17 @@ int runBuild(const std::vector<std::string>& args)
     if (!guide)
         return 1;
     const auto start = std::chrono::steady_clock::now();
-    model::Rig rig = rigging::buildRig(*guide, *templates);
+    model::Rig rig = rigging::buildRig(*guide, *templates, rigging::BuilderRegistry::builtin(), {}, nullptr, b.restore);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     print(rig.diagnostics);
     if (b.posed && !hasErrors(rig.diagnostics)) {
-        auto withPose = eval::posedRig(rig, guide->pose);
+        const model::PoseValues pose = rigging::restoredPose(*guide, b.restore);
+        auto withPose = eval::posedRig(rig, pose);
         print(withPose.diagnostics());
         if (!withPose)
             return 1;
         rig = withPose.take();
-        std::cerr << "posed with " << guide->pose.size() << " posed nodes from the guide\n";
+        std::cerr << "posed with " << pose.size() << " posed nodes from the guide\n";
     }
     std::cerr << "built " << rig.nodes.size() << " nodes (" << rig.count(model::RigNodeKind::Controller)
               << " controllers, " << rig.skinJointCount() << " skin joints) in " << ms << " ms\n";

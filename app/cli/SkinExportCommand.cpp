@@ -234,8 +234,8 @@ Status saveChunks(const ExportArguments& e, const std::vector<skin::SkinChunk>& 
 
 std::optional<skin::ChunkExportOptions> exportOptions(const ExportArguments& e, const Character& c, std::optional<model::Rig>& posed)
 {
-    if (!e.bindPose && !c.guide.pose.empty()) {
-        auto withPose = eval::posedRig(c.rig, c.guide.pose);
+    if (const model::PoseValues pose = model::testPose(c.guide.overrides); !e.bindPose && !pose.empty()) {
+        auto withPose = eval::posedRig(c.rig, pose);
         print(withPose.diagnostics());
         if (!withPose)
             return std::nullopt;

@@ -14,10 +14,10 @@ enum class ChangeKind : std::uint32_t {
     Instances = 1u << 1,  // instances added, removed, re-hung or renamed
     Joints = 1u << 2,     // guide joint transforms
     Options = 1u << 3,    // option values (a guide parameter regenerates joints: Joints too)
-    Shapes = 1u << 4,     // controller shape edits
+    Shapes = 1u << 4,     // controller shape overrides
     Names = 1u << 5,      // name overrides
     Pose = 1u << 6,       // the test pose
-    // 1u << 7: free (was the reference model, now one of the models)
+    Overrides = 1u << 7,  // override records other than shapes and the pose (defaults, limits, locks, post, names)
     History = 1u << 8,    // the undo stack or its clean state
     Selection = 1u << 9,  // session: the selection
     Rig = 1u << 10,       // session: the rig was rebuilt (node indices may have moved)

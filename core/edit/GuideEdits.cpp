@@ -140,7 +140,6 @@ public:
         m_change.instances = {m_to.id};
         if (m_from.joints != m_to.joints) m_change.add(ChangeKind::Joints);
         if (m_from.options != m_to.options) m_change.add(ChangeKind::Options);
-        if (m_from.shapes != m_to.shapes) m_change.add(ChangeKind::Shapes);
         if (m_from.names != m_to.names) m_change.add(ChangeKind::Names);
         if (m_from.name != m_to.name || m_from.parent != m_to.parent || m_from.parentJoint != m_to.parentJoint ||
             m_from.structure != m_to.structure || m_from.templateId != m_to.templateId || m_change.empty())
@@ -268,7 +267,7 @@ Status setOption(History& history, InstanceId id, const std::string& option, con
 namespace {
 
 // Sets (or, with nullopt, removes) one entry of a keyed per-instance section
-// (`names`, `shapes`) as one undo step; no step when nothing changes.
+// (`names`) as one undo step; no step when nothing changes.
 template <class Map>
 Status setInstanceEntry(History& history, InstanceId id, Map TemplateInstance::*section, const std::string& key,
                         std::optional<typename Map::mapped_type> value, const std::string& what)
@@ -299,19 +298,6 @@ Status setNameOverride(History& history, InstanceId id, const std::string& token
                             fallback ? std::nullopt : std::optional<std::string>(name), "Name " + token);
 }
 
-Status setShapeEdit(History& history, InstanceId id, const std::string& tag, const model::ShapeEdit& edit,
-                    const std::string& what)
-{
-    if (tag.empty())
-        return refusedFor(id, "a shape edit needs the controller's tag");
-    for (const auto& [at, offset] : edit.cvs)
-        if (at.first < 0 || at.second < 0 || !std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(offset.z))
-            return Status::refused("a CV offset needs indices from 0 and a finite offset", Subject::ofShape({id, {}, tag}));
-    return setInstanceEntry(history, id, &TemplateInstance::shapes, tag,
-                            edit.isIdentity() ? std::nullopt : std::optional<model::ShapeEdit>(edit),
-                            what.empty() ? "Edit shape " + tag : what);
-}
-
 Status replaceInstance(History& history, TemplateInstance instance, const std::string& what)
 {
     const GuideDocument& d = history.document();
@@ -328,15 +314,6 @@ Status replaceInstance(History& history, TemplateInstance instance, const std::s
         if (other.parent == instance.id && !instance.joint(other.parentJoint))
             return refusedFor(other.id, "'" + other.name + "' hangs under a guide joint of '" + current->name + "' that would go away");
     history.push(std::make_unique<ReplaceInstance>(*current, std::move(instance), what));
-    return {};
-}
-
-Status setPose(History& history, model::PoseValues pose, const std::string& what)
-{
-    if (pose == history.document().pose)
-        return Status::refused("the pose did not change");
-    history.push(std::make_unique<SetDocumentField<model::PoseValues>>(&GuideDocument::pose, ChangeKind::Pose, history.document().pose,
-                                                                       std::move(pose), what));
     return {};
 }
 

@@ -7,6 +7,7 @@
 // and is not refused succeeds without pushing a step.
 #include "base/Status.h"
 #include "edit/History.h"
+#include "edit/OverrideEdits.h"
 
 #include <string>
 
@@ -39,21 +40,10 @@ Status setOption(History& history, model::InstanceId id, const std::string& opti
 Status setNameOverride(History& history, model::InstanceId id, const std::string& token, const std::string& name,
                        const std::string& defaultName);
 
-// A controller shape's edit (`tag` as "ctrls.ik") in the controller's space;
-// the identity removes the edit. One undo step named `what` ("Edit shape <tag>" when empty).
-Status setShapeEdit(History& history, model::InstanceId id, const std::string& tag, const model::ShapeEdit& edit,
-                    const std::string& what = {});
-
 // Replaces an instance (same id) as one undo step named `what`: used when its
 // guide joints are regenerated. Refused when a child instance hangs under a
 // joint the new one no longer has, or a joint id belongs to another instance.
 Status replaceInstance(History& history, model::TemplateInstance instance, const std::string& what);
-
-// Replaces the document's test pose (one undo step per pose tool or gizmo drag);
-// `what` names the step ("Rotate c_arm1_L", "Mirror pose"). Refused when
-// nothing changes, so no empty step lands on the stack.
-Status setPose(History& history, model::PoseValues pose, const std::string& what);
-
 
 bool isValidInstanceName(const std::string& name);
 

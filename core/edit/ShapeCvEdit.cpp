@@ -65,8 +65,9 @@ Result<CvDrag> CvDrag::begin(const model::GuideDocument& document, const model::
         return failure("'" + node.name + "' belongs to no template instance of the guide", Subject::ofNode(node.key));
     d.m_instance = instance->id;
     d.m_tag = authored.key.tag;
-    if (const auto edit = instance->shapes.find(d.m_tag); edit != instance->shapes.end())
-        d.m_start = edit->second;
+    if (const auto record = document.overrides.find(NodeKey{instance->id, {}, d.m_tag});
+        record != document.overrides.end() && record->second.shape)
+        d.m_start = record->second.shape->edit;
     d.m_cvs = std::move(cvs);
     d.m_nodeWorld = node.worldMatrix;
     d.m_curves = node.curves;

@@ -42,11 +42,12 @@ ChannelLayout::ChannelLayout(const model::Rig& rig)
                 c.node = n;
                 c.name = model::channelName(i);
                 c.transform = i;
-                c.defaultValue = i >= 6 ? 1.0 : 0.0;
+                c.defaultValue = node.channels.defaults[i];
                 c.limited = node.channels.isLimited(i);
                 c.min = node.channels.minimum[i];
                 c.max = node.channels.maximum[i];
                 c.locked = !animatable || node.channels.isLocked(i);
+                c.keyable = node.channels.isKeyable(i);
                 m_channels.push_back(std::move(c));
             }
             static const std::vector<std::string> kOrders = {"xyz", "yzx", "zxy", "xzy", "yxz", "zyx"};
@@ -70,7 +71,8 @@ ChannelLayout::ChannelLayout(const model::Rig& rig)
             c.limited = true;
             c.min = attribute.min;
             c.max = attribute.max;
-            c.locked = !animatable;
+            c.locked = !animatable || attribute.locked;
+            c.keyable = attribute.keyable;
             c.labels = &attribute.labels;
             m_channels.push_back(std::move(c));
         }

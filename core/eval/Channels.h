@@ -26,6 +26,7 @@ struct Channel {
     double min = 0.0, max = 0.0;    // meaningful when `limited`
     bool limited = false;
     bool locked = false;            // animators cannot change it (tools keep it too)
+    bool keyable = true;            // false: shown, set by hand, never keyed
     const std::vector<std::string>* labels = nullptr; // enum labels (points into the rig)
     bool isEnum() const { return labels && !labels->empty(); }
 };

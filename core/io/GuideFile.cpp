@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/GuidePose.h"
+#include "io/OverrideFile.h"
 #include "io/YamlSupport.h"
 
 #include <algorithm>
@@ -25,56 +26,6 @@ constexpr const char* kFormatKey = "rigsmith_guide";
 std::string vec3Text(const Vec3& v)
 {
     return formatValue(Value(v));
-}
-
-// One moved CV of a shape edit: {curve: 0, cv: 3, offset: [x, y, z]}.
-bool readCvOffset(YamlReader& r, const YAML::Node& node, const std::string& what, model::ShapeEdit& edit)
-{
-    if (!r.expectMap(node, what + " CV"))
-        return false;
-    std::int64_t curve = -1, cv = -1; // -1: missing or not an integer
-    std::optional<Vec3> offset;
-    for (const auto& kv : node) {
-        const std::string key = kv.first.Scalar();
-        if (key == "curve") curve = r.integer(kv.second, what + " CV 'curve'").value_or(-1);
-        else if (key == "cv") cv = r.integer(kv.second, what + " CV 'cv'").value_or(-1);
-        else if (key == "offset") offset = r.vec3(kv.second, what + " CV 'offset'");
-        else r.warning(kv.first, "unknown key '" + key + "' in a CV of the " + what);
-    }
-    if (!offset || curve < 0 || cv < 0) {
-        r.error(node, what + ": a CV needs curve and cv (indices from 0) and an offset [x, y, z]");
-        return false;
-    }
-    if (!edit.cvs.emplace(std::pair{int(curve), int(cv)}, *offset).second) {
-        r.error(node, what + ": CV " + std::to_string(cv) + " of curve " + std::to_string(curve) + " is given twice");
-        return false;
-    }
-    return true;
-}
-
-// shapes: {ctrls.ik: {t: [x, y, z], r: [...], s: [...], cvs: [{curve, cv, offset}...]}}: a controller shape's edit.
-std::optional<model::ShapeEdit> readShapeEdit(YamlReader& r, const YAML::Node& node, const std::string& tag)
-{
-    const std::string what = "shape edit of '" + tag + "'";
-    if (!r.expectMap(node, what))
-        return std::nullopt;
-    model::ShapeEdit edit;
-    Transform& t = edit.transform;
-    for (const auto& kv : node) {
-        const std::string key = kv.first.Scalar();
-        if (key == "cvs") {
-            if (!r.expectSequence(kv.second, what + " 'cvs'"))
-                return std::nullopt;
-            for (const auto& cv : kv.second)
-                if (!readCvOffset(r, cv, what, edit)) return std::nullopt;
-            continue;
-        }
-        Vec3* target = key == "t" ? &t.translate : key == "r" ? &t.rotateDegrees : key == "s" ? &t.scale : nullptr;
-        if (!target) { r.warning(kv.first, "unknown key '" + key + "' in the " + what); continue; }
-        if (auto x = r.vec3(kv.second, what + " '" + key + "'")) *target = *x;
-        else return std::nullopt;
-    }
-    return edit;
 }
 
 void readJoint(YamlReader& r, const YAML::Node& node, TemplateInstance& instance, bool& ok)
@@ -101,13 +52,22 @@ void readJoint(YamlReader& r, const YAML::Node& node, TemplateInstance& instance
     instance.joints.push_back(std::move(joint));
 }
 
-bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std::map<model::InstanceId, YAML::Node>& nodes)
+// What a schema-2 guide kept outside `overrides:`, migrated once every instance is read.
+struct LegacyRecords {
+    std::map<model::InstanceId, std::map<std::string, model::ShapeEdit>> shapes; // instance `shapes:`
+    model::PoseValues pose;                                                       // top-level `pose:`
+    std::optional<SourceLocation> where;                                         // the first, for the note
+};
+
+bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std::map<model::InstanceId, YAML::Node>& nodes,
+                  LegacyRecords& legacy)
 {
     if (!r.expectMap(node, "an instance"))
         return false;
     bool ok = true;
     TemplateInstance instance;
     YAML::Node jointsNode;
+    std::map<std::string, model::ShapeEdit> shapes;
     for (const auto& kv : node) {
         const std::string key = kv.first.Scalar();
         const YAML::Node& v = kv.second;
@@ -127,11 +87,9 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
             for (const auto& o : v)
                 if (auto text = r.string(o.second, key + " " + o.first.Scalar())) target[o.first.Scalar()] = *text;
                 else ok = false;
-        } else if (key == "shapes") {
-            if (!r.expectMap(v, "shapes")) { ok = false; continue; }
-            for (const auto& entry : v)
-                if (auto t = readShapeEdit(r, entry.second, entry.first.Scalar())) instance.shapes[entry.first.Scalar()] = *t;
-                else ok = false;
+        } else if (key == "shapes") { // schema 2: now shape overrides
+            ok = readLegacyShapes(r, v, shapes) && ok;
+            if (!shapes.empty() && !legacy.where) legacy.where = locationOf(kv.first, r.file());
         } else if (key == "joints") jointsNode = v;
         else r.warning(kv.first, "unknown key '" + key + "' in an instance");
     }
@@ -145,6 +103,8 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
     for (const auto& j : jointsNode)
         readJoint(r, j, instance, ok);
     nodes[instance.id] = node;
+    if (!shapes.empty())
+        legacy.shapes[instance.id] = std::move(shapes);
     doc.insertInstance(std::move(instance), doc.instances().size());
     return ok;
 }
@@ -209,28 +169,36 @@ void readNaming(YamlReader& r, const YAML::Node& node, model::NamingRules& rules
     }
 }
 
-// An edit without moved CVs on one line; with them, a line per CV (diffable).
-void writeShapeEdit(std::ostream& out, const std::string& tag, const model::ShapeEdit& edit)
+// A schema-2 guide's shape edits and keyed test pose become override records;
+// a node with a record of its own in `overrides:` as well is an error (which wins is unclear).
+void migrateLegacyRecords(YamlReader& r, LegacyRecords& legacy, GuideDocument& doc)
 {
-    const Transform& t = edit.transform;
-    std::vector<std::string> fields{"t: " + vec3Text(t.translate)};
-    if (t.rotateDegrees != Vec3(0.0))
-        fields.push_back("r: " + vec3Text(t.rotateDegrees));
-    if (t.scale != Vec3(1.0))
-        fields.push_back("s: " + vec3Text(t.scale));
-    out << "      " << quoteIfNeeded(tag) << ":";
-    if (edit.cvs.empty()) {
-        for (std::size_t k = 0; k < fields.size(); ++k)
-            out << (k ? ", " : " {") << fields[k];
-        out << "}\n";
-        return;
+    std::size_t migrated = 0;
+    for (auto& [id, shapes] : legacy.shapes)
+        for (auto& [tag, edit] : shapes) {
+            model::Override& record = doc.overrides[NodeKey{id, {}, tag}];
+            if (record.shape) {
+                r.diagnostics().push_back(makeError(*legacy.where, "instance " + std::to_string(id) + ": the shape of '" + tag +
+                                                                       "' is given both in 'shapes' and in 'overrides'"));
+                continue;
+            }
+            record.shape.emplace().edit = std::move(edit);
+            ++migrated;
+        }
+    for (auto& [key, channels] : legacy.pose) {
+        model::Override& record = doc.overrides[key];
+        if (!record.pose.empty()) {
+            r.diagnostics().push_back(makeError(*legacy.where, "the test pose of node '" + key.tag + "' (instance " +
+                                                                   std::to_string(key.instance) + ") is given both in 'pose' and in 'overrides'"));
+            continue;
+        }
+        record.pose = std::move(channels);
+        ++migrated;
     }
-    out << "\n";
-    for (const std::string& field : fields)
-        out << "        " << field << "\n";
-    out << "        cvs:\n";
-    for (const auto& [at, offset] : edit.cvs)
-        out << "          - {curve: " << at.first << ", cv: " << at.second << ", offset: " << vec3Text(offset) << "}\n";
+    if (migrated > 0)
+        r.diagnostics().push_back({Severity::Note, *legacy.where,
+                                   std::to_string(migrated) + " shape edit and test pose record(s) of an older guide were read as "
+                                   "overrides; the guide is written with one 'overrides' section when saved", {}});
 }
 
 } // namespace
@@ -254,12 +222,17 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
     GuideDocument doc;
     std::map<model::InstanceId, YAML::Node> nodes;
     std::vector<LegacyPoseRecord> legacyPose;
+    LegacyRecords legacy;
     for (const auto& kv : root) {
         const std::string key = kv.first.Scalar();
         if (key == kFormatKey) continue;
         if (key == "name") { if (auto s = r.string(kv.second, "name")) doc.name = *s; }
         else if (key == "naming") readNaming(r, kv.second, doc.naming);
-        else if (key == "pose" || key == "legacy_pose") readPose(r, kv.second, doc.pose, legacyPose);
+        else if (key == "pose" || key == "legacy_pose") {
+            readPose(r, kv.second, legacy.pose, legacyPose);
+            if (!legacy.pose.empty() && !legacy.where) legacy.where = locationOf(kv.first, r.file());
+        }
+        else if (key == "overrides") readOverrides(r, kv.second, doc.overrides);
         else if (key == "reference_model") { // an older guide's one see-through model: now one of its models
             if (auto s = r.string(kv.second, "reference_model"); s && !s->empty() &&
                 std::find(doc.models.begin(), doc.models.end(), *s) == doc.models.end())
@@ -278,11 +251,13 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
             if (kv.second.IsNull()) continue;
             if (!r.expectSequence(kv.second, "instances")) continue;
             for (const auto& node : kv.second)
-                readInstance(r, node, doc, nodes);
+                readInstance(r, node, doc, nodes, legacy);
         } else r.warning(kv.first, "unknown key '" + key + "' (ignored)");
     }
     if (!hasErrors(diagnostics))
         validate(r, doc, nodes);
+    if (!hasErrors(diagnostics))
+        migrateLegacyRecords(r, legacy, doc);
     if (!hasErrors(diagnostics))
         migrateLegacyPose(r, legacyPose, doc);
     if (hasErrors(diagnostics))
@@ -360,11 +335,6 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
             for (const auto& [key, text] : *section)
                 out << "      " << quoteIfNeeded(key) << ": " << quoteIfNeeded(text) << "\n";
         }
-        if (!i.shapes.empty()) {
-            out << "    shapes:\n";
-            for (const auto& [tag, edit] : i.shapes)
-                writeShapeEdit(out, tag, edit);
-        }
         out << "    joints:\n";
         for (const GuideJoint& j : i.joints) {
             out << "      - {id: " << j.id;
@@ -386,7 +356,8 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
             out << "}\n";
         }
     }
-    writePoseSections(out, doc);
+    writeOverrides(out, doc);
+    writeLegacyPose(out, doc);
     return out.str();
 }
 

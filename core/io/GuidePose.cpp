@@ -88,7 +88,7 @@ void migrateLegacyPose(YamlReader& r, std::vector<LegacyPoseRecord>& legacy, mod
         NodeKey key{instance->id, copy.size() > name.size() ? copy.substr(name.size() + 1) : std::string(),
                     record.text.substr(separator + 2)};
         if (migrated++ == 0) first = record.where;
-        auto& channels = doc.pose[key];
+        auto& channels = doc.overrides[key].pose;
         for (auto& [channel, value] : record.channels)
             channels[channel] = value;
     }
@@ -98,7 +98,7 @@ void migrateLegacyPose(YamlReader& r, std::vector<LegacyPoseRecord>& legacy, mod
                                    "ids (renaming an instance keeps them); the guide is written in the new form when saved", {}});
 }
 
-void writePoseSections(std::ostream& out, const model::GuideDocument& doc)
+void writeLegacyPose(std::ostream& out, const model::GuideDocument& doc)
 {
     auto writeChannels = [&out](const std::map<std::string, double>& channels) {
         out << "{";
@@ -109,20 +109,6 @@ void writePoseSections(std::ostream& out, const model::GuideDocument& doc)
         }
         out << "}";
     };
-    if (!doc.pose.empty()) {
-        out << "pose:\n";
-        for (const auto& [key, channels] : doc.pose) {
-            out << "  - {instance: " << key.instance;
-            if (!key.branch.empty())
-                out << ", branch: " << quoteIfNeeded(key.branch);
-            out << ", node: " << quoteIfNeeded(key.tag) << ", values: ";
-            writeChannels(channels);
-            out << "}";
-            if (const auto* instance = doc.instance(key.instance))
-                out << "  # " << instance->name;
-            out << "\n";
-        }
-    }
     if (!doc.legacyPose.empty()) { // an older guide's records that named no instance: kept
         out << "legacy_pose:\n";
         for (const auto& [text, channels] : doc.legacyPose) {

@@ -1,6 +1,7 @@
 #pragma once
-// The guide file's `pose:` section (internal to io/GuideFile): the rigger's
-// test pose, one record per node keyed by instance id, branch and tag:
+// The guide file's `pose:` section of schema 2 (internal to io/GuideFile): the
+// rigger's test pose, one record per node keyed by instance id, branch and tag
+// (read into overrides since schema 3):
 //   - {instance: 4, branch: L, node: ctrls.fk.0, values: {rz: 30}}  # arm
 // Guides of schema 1 keyed it by the instance's name ("arm.L::ctrls.fk.0"):
 // such records are read as legacy records and migrated once every instance is
@@ -26,7 +27,8 @@ struct LegacyPoseRecord {
 void readPose(YamlReader& r, const YAML::Node& node, model::PoseValues& pose, std::vector<LegacyPoseRecord>& legacy);
 // The one place the schema-1 text form of a node is parsed; a note says how many migrated.
 void migrateLegacyPose(YamlReader& r, std::vector<LegacyPoseRecord>& legacy, model::GuideDocument& doc);
-// `pose:` and `legacy_pose:` as the guide file writes them (nothing when empty).
-void writePoseSections(std::ostream& out, const model::GuideDocument& doc);
+// `legacy_pose:` as the guide file writes it (nothing when empty); the keyed
+// test pose is written with the other overrides (io/OverrideFile.h).
+void writeLegacyPose(std::ostream& out, const model::GuideDocument& doc);
 
 } // namespace rs::io

@@ -10,6 +10,7 @@
 #include "base/Math.h"
 #include "model/Mesh.h"
 #include "model/Naming.h"
+#include "model/Override.h"
 #include "model/Value.h"
 
 #include <cstdint>
@@ -26,11 +27,6 @@ using rs::JointId;
 using rs::kNoId;
 using rs::NodeKey;
 
-// The rigger's test pose of the built rig: node key -> channel name -> value,
-// only values that differ from the defaults. Keys are stable across rebuilds
-// and renames, so the pose survives them; values of nodes a rebuild no longer
-// makes are reported by the build and kept until the rigger removes them.
-using PoseValues = std::map<NodeKey, std::map<std::string, double>>;
 // Pose records of an older guide whose instance name matched no instance when
 // they were migrated to keys: kept verbatim ("arm.L::ctrls.fk.0") and written back.
 using LegacyPoseValues = std::map<std::string, std::map<std::string, double>>;
@@ -47,17 +43,6 @@ struct GuideJoint {
     bool operator==(const GuideJoint&) const = default;
 };
 
-// A rigger's edit of one controller's shape: control points (CVs) moved one
-// by one, then the whole shape moved, turned and scaled, both in the
-// controller's space: final CV = transform * (CV as the template places it + offset).
-struct ShapeEdit {
-    Transform transform;
-    std::map<std::pair<int, int>, Vec3> cvs; // (curve index, CV index) -> offset
-
-    bool isIdentity() const { return transform == Transform{} && cvs.empty(); }
-    bool operator==(const ShapeEdit&) const = default;
-};
-
 struct TemplateInstance {
     InstanceId id = kNoId;
     std::string templateId;          // "core.joints"
@@ -66,9 +51,9 @@ struct TemplateInstance {
     JointId parentJoint = kNoId;     // the parent's joint this instance hangs under
     std::map<std::string, Value> options; // only values that differ from the defaults
     std::map<std::string, std::string> structure; // per-instance structure overrides: tag -> address
-    std::map<std::string, std::string> names;     // per-instance name overrides: token -> name
-    // The rigger's edits of controller shapes, by controller tag ("ctrls.ik").
-    std::map<std::string, ShapeEdit> shapes;
+    // Per-instance naming: manifest name token -> name (the names of every node
+    // the token makes). One node's own name is a display-name override (`overrides`).
+    std::map<std::string, std::string> names;
     std::vector<GuideJoint> joints;  // joints[0] is the root; parents come before children
 
     const GuideJoint* joint(JointId id) const;
@@ -79,7 +64,9 @@ struct TemplateInstance {
 
 class GuideDocument {
 public:
-    static constexpr int kSchemaVersion = 2; // 2: the pose is keyed by instance id, branch and tag
+    // 2: the pose is keyed by instance id, branch and tag; 3: one `overrides:` section
+    // (an older guide's instance `shapes:` and `pose:` migrate into it on load).
+    static constexpr int kSchemaVersion = 3;
 
     const std::vector<TemplateInstance>& instances() const { return m_instances; }
     const TemplateInstance* instance(InstanceId id) const;
@@ -108,7 +95,11 @@ public:
 
     std::string name;                // asset name
     NamingRules naming;              // how rig nodes are named (preset "mikan" unless the file says)
-    PoseValues pose;                 // edited through rs::edit::SetPose
+    // Every manual adjustment of the built rig (shapes, default values, limits,
+    // locks, post transform, display names, the test pose), one record per node
+    // (model/Override.h); edited through rs::edit. Records of nodes a build does
+    // not make are kept.
+    Overrides overrides;
     LegacyPoseValues legacyPose;     // unmatched records of an older guide, kept
     // The character's models (any format io::importModel reads), bound to the
     // rig by skin weights kept beside the guide (`<guide>.weights`); drawn

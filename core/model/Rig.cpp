@@ -50,6 +50,14 @@ const char* channelName(int channel)
     return channel >= 0 && channel < ChannelSettings::kCount ? kChannels[channel] : "?";
 }
 
+int channelIndex(const std::string& name)
+{
+    for (int i = 0; i < ChannelSettings::kCount; ++i)
+        if (name == kChannels[i])
+            return i;
+    return -1;
+}
+
 ChannelSettings ChannelSettings::controllerDefaults()
 {
     ChannelSettings c;

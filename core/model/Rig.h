@@ -35,6 +35,8 @@ struct ControllerCurve {
     std::vector<Vec3> cvs;
     int degree = 1;
     bool periodic = false;
+    double lineWidth = 1.0;   // pixels (a shape override)
+    bool visible = true;      // false: not drawn nor picked (a shape override hides the shape)
 
     // Moves the CVs and the polyline by an affine map (which maps the curve
     // exactly); resample() samples the polyline again after CVs moved.
@@ -61,6 +63,8 @@ struct RigAttribute {
     double min = 0.0;
     double max = 1.0;
     std::vector<std::string> labels;    // enum labels; empty for a number
+    bool locked = false;                // a lock override: animators cannot change it
+    bool keyable = true;                // false: shown but not keyed
 };
 
 // Rotate orders as Maya names them: the first letter is applied first
@@ -79,17 +83,23 @@ struct ChannelSettings {
     std::uint16_t limited = 0;          // bit i: channel i is clamped to [minimum[i], maximum[i]]
     std::array<double, kCount> minimum{};
     std::array<double, kCount> maximum{};
+    std::uint16_t unkeyable = 0;        // bit i: channel i is shown but not keyed
+    // What reset returns to (a default-value override): 0, scale 1.
+    std::array<double, kCount> defaults{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0};
 
     // What a new controller gets: every channel free, scale kept in [0.01, 100]
     // (a zero or negative scale would collapse or turn the rig inside out).
     static ChannelSettings controllerDefaults();
     bool isLocked(int channel) const { return (locked >> channel) & 1u; }
     bool isLimited(int channel) const { return (limited >> channel) & 1u; }
+    bool isKeyable(int channel) const { return !((unkeyable >> channel) & 1u); }
     void lock(int first, int count = 1);
     void limit(int channel, double low, double high);
     bool operator==(const ChannelSettings&) const = default;
 };
 const char* channelName(int channel); // "tx" ... "sz"
+// The index of "tx" ... "sz", -1 for any other name.
+int channelIndex(const std::string& name);
 
 struct RigNode {
     NodeKey key;                       // identity: instance copy + tag, stable across renames

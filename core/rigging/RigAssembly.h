@@ -100,8 +100,14 @@ struct SampledShape {
 };
 using ShapeSamples = std::map<const templates::Shape*, SampledShape>;
 
-// Stages run by buildRig after generation.
+// Stages run by buildRig after generation: the template's shapes, then every
+// override of the guide (OverrideStage.cpp: shape edits first, then the
+// mirrored branch copies take their twins' curves, then channels, names and
+// the post transform), reporting orphans.
 void applyShapes(RigAssembly& assembly, ShapeSamples& samples);
+void mirrorBranchShapes(RigAssembly& assembly);
+// `guide` is the authored guide (its overrides, and instance names for messages).
+void applyOverrides(RigAssembly& assembly, const model::GuideDocument& guide, const model::RestoreToggles& restore);
 void buildVirtualHierarchy(RigAssembly& assembly);
 
 // Cross-cutting work after every instance is built (Rigify's generator plugins):

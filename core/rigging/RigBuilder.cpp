@@ -240,40 +240,6 @@ void computeLocalMatrices(model::Rig& rig)
                                                   : glm::inverse(rig.nodes[node.parent].worldMatrix) * node.worldMatrix;
 }
 
-// Per-node records of the guide (test pose, shape edits) whose node this build
-// does not make: reported by name and kept (a rebuild that brings the node back
-// applies them again). The rigger removes them.
-void reportOrphanRecords(const model::GuideDocument& guide, model::Rig& rig)
-{
-    auto label = [&](const NodeKey& key) {
-        const model::TemplateInstance* instance = guide.instance(key.instance);
-        const std::string name = instance ? instance->name : "#" + std::to_string(key.instance);
-        return name + (key.branch.empty() ? "" : "." + key.branch) + "::" + key.tag;
-    };
-    for (const auto& [key, channels] : guide.pose)
-        if (!rig.find(key)) {
-            Diagnostic d = makeWarning({}, "the test pose of '" + label(key) + "' matches no rig node; it is kept in the guide "
-                                           "(and applied again if the node comes back)");
-            d.subject = guide.instance(key.instance) ? Subject::ofInstance(key.instance, key.branch) : Subject{};
-            rig.diagnostics.push_back(std::move(d));
-        }
-    for (const auto& [text, channels] : guide.legacyPose)
-        rig.diagnostics.push_back(makeWarning({}, "the test pose of '" + text + "' (an older guide's record) names no "
-                                                  "instance of this guide; it is kept in the guide"));
-    for (const model::TemplateInstance& instance : guide.instances())
-        for (const auto& shapeEdit : instance.shapes) { // not a structured binding: clang 14 cannot capture one
-            const std::string& tag = shapeEdit.first;
-            if (!rig.find(NodeKey{instance.id, {}, tag}) && !std::any_of(rig.nodes.begin(), rig.nodes.end(), [&](const model::RigNode& n) {
-                    return n.key.instance == instance.id && n.key.tag == tag;
-                })) {
-                Diagnostic d = makeWarning({}, "the shape edit of '" + instance.name + "::" + tag +
-                                                   "' matches no controller; it is kept in the guide");
-                d.subject = Subject::ofInstance(instance.id);
-                rig.diagnostics.push_back(std::move(d));
-            }
-        }
-}
-
 } // namespace
 
 std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& manifest,
@@ -303,6 +269,13 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* buildCache)
+{
+    return buildRig(guide, templates, builders, progress, buildCache, model::RestoreToggles{});
+}
+
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* buildCache,
+                    const model::RestoreToggles& restore)
 {
     BuildCache::Impl* cache = buildCache ? &buildCache->impl() : nullptr;
     if (cache)
@@ -421,16 +394,19 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
         if (a.rig.nodes[i].parent == kNoNode)
             a.rig.nodes[i].parent = 0;
+    ShapeSamples samples; // a build without a cache samples its shapes once
+    applyShapes(a, cache ? cache->shapeSamples : samples);
+    report(0.88, "overrides");
+    applyOverrides(a, guide, restore);
     compensateSegmentScale(a);
-    // The program compiles on another core while shapes, hierarchy and the
-    // checks run here: they write none of what it reads (see compileProgram).
+    // The program compiles on another core while the hierarchy and the checks
+    // run here: they write none of what it reads (see compileProgram). The
+    // overrides (defaults, limits, locks, the post transform) come before it.
     // Isolated: while it waits, this thread runs only its own task, never a
     // piece of unrelated parallel work (a skin job's loop) from the shared pool.
     tbb::this_task_arena::isolate([&] {
         tbb::task_group compiling;
         compiling.run([&a] { compileProgram(a); });
-        ShapeSamples samples; // a build without a cache samples its shapes once
-        applyShapes(a, cache ? cache->shapeSamples : samples);
         buildVirtualHierarchy(a);
         computeLocalMatrices(a.rig);
         for (const auto& plugin : builtinPlugins())
@@ -438,7 +414,6 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
         compiling.wait();
     });
     reportProgram(a);
-    reportOrphanRecords(guide, a.rig);
     if (cache) {
         cache->program = std::move(a.program);
         cache->lastNodeCount = a.rig.nodes.size();

@@ -2,7 +2,7 @@
 // Turns a guide into a rig. Stages: resolve every instance (manifest, builder,
 // typed options) and let builders gather without creating anything; generate
 // root to leaf (an instance that fails is rolled back, never half-built); apply
-// controller shapes; build the virtual hierarchy per domain; check names.
+// controller shapes, then the guide's overrides (one stage: OverrideStage.cpp); build the virtual hierarchy per domain; check names.
 // Deterministic: the same guide gives the same rig, node for node.
 #include "base/Result.h"
 #include "rigging/BuildCache.h"
@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,22 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 // for the next (BuildCache.h). The rig is the same as without a cache.
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* cache);
+// The same, restoring only the override kinds `restore` keeps on (the rest are
+// built as the templates make them; their records stay in the guide). The test
+// pose is not part of the rig: `restoredPose` gives what a build restores.
+model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
+                    const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* cache,
+                    const model::RestoreToggles& restore);
+// The build's override stage on its own, for a rig already built from `guide`
+// without overrides (tools, benchmarks): shape edits skip `mirroredCopies` (the
+// build passes its mirrored branch copies), then `afterShapes` runs (the build
+// mirrors the edited curves onto those copies), then channels, names and the
+// post transform; orphans are reported in rig.diagnostics. Applying it twice
+// applies shape transforms and the post transform twice.
+void applyOverrides(model::Rig& rig, const model::GuideDocument& guide, const model::RestoreToggles& restore,
+                    const std::set<CopyKey>& mirroredCopies = {}, const std::function<void()>& afterShapes = {});
+// The test pose a build with `restore` starts from (empty with the pose kind off).
+model::PoseValues restoredPose(const model::GuideDocument& guide, const model::RestoreToggles& restore);
 
 // Defaults of `guides` and `opts` with the instance's overrides, coerced to the
 // manifest types (an int given for a float is accepted). Mismatches are reported

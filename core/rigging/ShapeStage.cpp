@@ -266,6 +266,8 @@ void cloneCurves(RigAssembly& a, const PendingClone& c)
     }
 }
 
+} // namespace
+
 // Pairs every node of a mirrored branch copy with its twin, and a mirrored
 // branch copy shows its twin's curves reflected (negative scale in the
 // controller's space, which is M * p for W' = M W M) and, on a flipped branch,
@@ -312,44 +314,6 @@ void mirrorBranchShapes(RigAssembly& a)
         }
     }
 }
-
-// The rigger's shape edits (an instance's `shapes`), in the controller's space,
-// before the mirrored branches copy their twins' curves: moved CVs (the curve
-// sampled again), then the whole shape's transform.
-void applyShapeEdits(RigAssembly& a, const std::map<CopyKey, const InstanceRecord*>& records)
-{
-    for (auto& node : a.rig.nodes) {
-        if (node.kind != model::RigNodeKind::Controller)
-            continue;
-        const auto record = records.find(node.key.copy());
-        if (record == records.end())
-            continue;
-        const auto& edits = record->second->instance->shapes;
-        const auto edit = edits.find(tagOf(node));
-        if (edit == edits.end() || a.copyOf(record->second->instance->id).mirror != Mat4(1.0))
-            continue; // a mirrored branch copy takes its twin's edited curves afterwards
-        std::vector<bool> moved(node.curves.size(), false);
-        for (const auto& [at, offset] : edit->second.cvs) {
-            const auto [curve, cv] = at;
-            if (curve < 0 || std::size_t(curve) >= node.curves.size() || cv < 0 ||
-                std::size_t(cv) >= node.curves[curve].cvs.size()) {
-                a.report(Severity::Warning, record->second->instance,
-                         "shapes." + edit->first + ": the shape has no CV " + std::to_string(cv) + " on curve " +
-                             std::to_string(curve) + " (the edit is ignored; was the shape changed?)");
-                continue;
-            }
-            node.curves[curve].cvs[cv] += offset;
-            moved[curve] = true;
-        }
-        for (std::size_t k = 0; k < node.curves.size(); ++k) {
-            if (moved[k])
-                node.curves[k].resample();
-            node.curves[k].transform(edit->second.transform.matrix());
-        }
-    }
-}
-
-} // namespace
 
 void applyShapes(RigAssembly& a, ShapeSamples& sampled)
 {
@@ -411,8 +375,6 @@ void applyShapes(RigAssembly& a, ShapeSamples& sampled)
     }
     for (const PendingClone& c : clones)
         cloneCurves(a, c);
-    applyShapeEdits(a, records);
-    mirrorBranchShapes(a);
 }
 
 } // namespace rs::rigging

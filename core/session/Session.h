@@ -306,7 +306,7 @@ public:
     const edit::GuideDragOptions& guideDragOptions() const { return m_guideDragOptions; }
 
     // --- shapes and CVs (SessionShapes.cpp): the gizmo moves, turns or scales a
-    // controller's shape (an instance `shapes` edit) or its selected CVs; on a
+    // controller's shape (its shape override) or its selected CVs; on a
     // mirrored copy the edit lands on the authored side, reflected.
     std::optional<Mat4> shapeFrame(model::RigNodeIndex node) const;
     void beginShapeDrag(model::RigNodeIndex node);
@@ -319,6 +319,22 @@ public:
     void beginCvDrag();
     void dragCvsTo(const Mat4& world);
     Status endCvDrag(const std::string& verb);
+
+    // --- overrides (SessionOverrides.cpp): every manual adjustment of the built
+    // rig, one undo step each, kept in the guide by node key (model/Override.h).
+    // The channel box's commands take a channel of the compiled rig (as setChannel).
+    Status setOverride(const NodeKey& key, const model::Override& record, const std::string& what = {});
+    Status removeOverride(const NodeKey& key);
+    // "Set as default": the channel's current value becomes what reset returns to.
+    Status setChannelAsDefault(int channel);
+    // "Reset to default": the channel's test pose value goes back to its default.
+    Status resetChannelToDefault(int channel);
+    Status setChannelLocked(int channel, bool locked);
+    // Limits [min, max] (min <= max), or none (nullopt) to drop the override.
+    Status setChannelLimit(int channel, std::optional<model::ChannelLimit> limit);
+    // Which override kinds builds restore (all by default); changing them rebuilds.
+    void setRestore(const model::RestoreToggles& restore);
+    const model::RestoreToggles& restore() const { return m_restore; }
 
     // --- rig mode (SessionPose.cpp)
     void selectControllers(const std::vector<model::RigNodeIndex>& nodes, bool add);
@@ -393,6 +409,7 @@ private:
     Selection m_selection;
     Mode m_mode = Mode::Guide;
     bool m_cvMode = false;
+    model::RestoreToggles m_restore;
 
     std::optional<eval::Pose> m_dragStart;
     std::optional<edit::GuideDrag> m_guideDrag;

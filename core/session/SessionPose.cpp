@@ -19,8 +19,9 @@ void Session::previewPose(eval::Pose pose)
 
 Status Session::commitPose(const eval::Pose& pose, const std::string& what)
 {
-    auto values = eval::valuesFromPose(*m_rig, m_program->channels(), pose, m_document.pose);
-    if (values == m_document.pose) {
+    const model::PoseValues stored = model::testPose(m_document.overrides);
+    auto values = eval::valuesFromPose(*m_rig, m_program->channels(), pose, stored);
+    if (values == stored) {
         poseFromDocument(); // a drag that ended where it began: show the stored pose
         emitChange(Change::of(ChangeKind::Evaluation));
         return {};

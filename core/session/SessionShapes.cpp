@@ -34,6 +34,13 @@ std::optional<ShapeSource> shapeSourceOf(const model::Rig& rig, model::RigNodeIn
     return source;
 }
 
+// The stored edit of an authored controller (its instance's authored side: branch "").
+model::ShapeEdit shapeEditOf(const model::GuideDocument& document, const NodeKey& authored)
+{
+    const auto record = document.overrides.find(NodeKey{authored.instance, {}, authored.tag});
+    return record == document.overrides.end() || !record->second.shape ? model::ShapeEdit{} : record->second.shape->edit;
+}
+
 } // namespace
 
 std::optional<Mat4> Session::shapeFrame(model::RigNodeIndex node) const
@@ -41,9 +48,8 @@ std::optional<Mat4> Session::shapeFrame(model::RigNodeIndex node) const
     const auto source = m_rig ? shapeSourceOf(*m_rig, node) : std::nullopt;
     if (!source || !m_document.instance(source->authored->key.instance))
         return std::nullopt;
-    const model::TemplateInstance* owner = m_document.instance(source->authored->key.instance);
-    const auto edit = owner->shapes.find(source->authored->key.tag);
-    const Mat4 m = edit == owner->shapes.end() ? Mat4(1.0) : edit->second.transform.matrix();
+    const model::ShapeEdit edit = shapeEditOf(m_document, source->authored->key);
+    const Mat4 m = edit.transform.matrix();
     // A mirrored copy shows the edit reflected: m' = R m R in its own space.
     return m_rig->nodes[node].worldMatrix * source->reflection * m * source->reflection;
 }
@@ -55,8 +61,7 @@ void Session::beginShapeDrag(model::RigNodeIndex node)
     const ShapeSource source = *shapeSourceOf(*m_rig, node);
     const model::TemplateInstance* owner = m_document.instance(source.authored->key.instance);
     const std::string& tag = source.authored->key.tag;
-    const auto edit = owner->shapes.find(tag);
-    const model::ShapeEdit start = edit == owner->shapes.end() ? model::ShapeEdit{} : edit->second;
+    const model::ShapeEdit start = shapeEditOf(m_document, source.authored->key);
     // The node's world matrix without the edit's transform: where the gizmo's
     // frame maps from (the rebuilt rig keeps the node where it is).
     m_shapeDrag = ShapeDrag{node, owner->id, tag, start, m_rig->nodes[node].worldMatrix, source.reflection};

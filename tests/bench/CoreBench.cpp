@@ -167,6 +167,50 @@ void BM_BuildBipedRig(benchmark::State& state)
 }
 BENCHMARK(BM_BuildBipedRig)->Unit(benchmark::kMicrosecond);
 
+// Issue 23: 1,000 override entries (a channel's default, limit or lock, a test
+// pose value, a display name, a shape edit with its colour: each one entry)
+// spread over the biped's controllers, applied to the built rig by the build's
+// override stage. The rig is copied outside the timing each iteration.
+void BM_ApplyOverrides1000(benchmark::State& state)
+{
+    model::GuideDocument doc = biped();
+    const auto& templates = registry();
+    const model::Rig plain = rigging::buildRig(doc, templates);
+    std::vector<const model::RigNode*> controllers;
+    for (const auto& node : plain.nodes)
+        if (node.kind == model::RigNodeKind::Controller)
+            controllers.push_back(&node);
+    std::size_t entries = 0;
+    for (std::size_t k = 0; entries < 1000; ++k) {
+        const model::RigNode& node = *controllers[k % controllers.size()];
+        model::Override& o = doc.overrides[node.key];
+        const int channel = int((k / controllers.size()) % 9);
+        const std::string name = model::channelName(channel);
+        switch (k % 6) {
+        case 0: o.defaults[name] = channel >= 6 ? 1.0 : 0.01 * double(k % 7); break;
+        case 1: o.limits[name] = {-100.0, 100.0}; break;
+        case 2: o.locks[name] = {false, (k % 2) == 0}; break;
+        case 3: o.pose[name] = channel >= 6 ? 1.0 : 0.5; break;
+        case 4: o.displayName = node.name + "_ovr"; break;
+        case 5: o.shape.emplace().edit.transform.scale = Vec3(1.1); o.shape->color = Vec3(1.0, 0.0, 0.0); break;
+        }
+        ++entries;
+    }
+    doc.overrides[model::rigRootKey()].post = Transform{Vec3(0.0, 0.0, 1.0), Vec3(0.0), Vec3(1.5)};
+    model::Rig rig = plain;
+    for (auto _ : state) {
+        state.PauseTiming();
+        rig = plain;
+        state.ResumeTiming();
+        rigging::applyOverrides(rig, doc, {});
+        benchmark::DoNotOptimize(rig.nodes.data());
+    }
+    state.counters["override_entries"] = double(entries + 1);
+    state.counters["records"] = double(doc.overrides.size());
+    state.counters["controllers"] = double(controllers.size());
+}
+BENCHMARK(BM_ApplyOverrides1000)->Unit(benchmark::kMicrosecond);
+
 void BM_BuildSampleRig(benchmark::State& state, const std::string& sample)
 {
     const auto doc = io::readGuideFile(kSource + "/resources/samples/" + sample + ".yml").take();

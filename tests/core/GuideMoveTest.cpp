@@ -194,7 +194,7 @@ TEST(GuideMove, AShapeEditMovesTheControllersCurvesOnBothSidesAndIsSaved)
 
     // Saved and read back; a bad value is an error with its line.
     const std::string text = io::writeGuideText(doc);
-    EXPECT_NE(text.find("shapes:\n      ctrls.ik: {t: [0, 0.1, 0], s: [2, 2, 2]}"), std::string::npos) << text;
+    EXPECT_NE(text.find("    node: ctrls.ik\n    shape: {t: [0, 0.1, 0], s: [2, 2, 2]}\n"), std::string::npos) << text;
     auto read = io::readGuideText(text, "edited.yml");
     ASSERT_TRUE(read) << formatAll(read.diagnostics());
     EXPECT_TRUE(*read == doc);

@@ -118,7 +118,7 @@ TEST(IncrementalBuild, EveryKindOfGuideEditGivesTheFullBuildOnEverySample)
             }
             model::ShapeEdit shape;
             shape.transform.scale = Vec3(1.3);
-            guide.instance(id)->shapes["ctrls.fk.0"] = shape;
+            guide.overrides[{id, {}, "ctrls.fk.0"}].shape.emplace().edit = shape;
             buildAndCompare(guide, cache, label + "shape edit");
         }
         // Naming rules, an instance removed with what hangs below it, one put back

@@ -30,7 +30,7 @@ std::map<NodeKey, Seen> seenOf(const model::GuideDocument& guide)
 {
     const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
-    auto posed = eval::posedRig(rig, guide.pose);
+    auto posed = eval::posedRig(rig, model::testPose(guide.overrides));
     EXPECT_TRUE(posed.ok());
     std::map<NodeKey, Seen> out;
     for (const auto& node : posed->nodes)
@@ -59,10 +59,10 @@ model::GuideDocument editedBiped(edit::History& history)
     pose[{arm, "L", "ctrls.fk.0"}]["rz"] = -40.0;
     pose[{arm, "R", "ctrls.fk.1"}]["ry"] = 25.0;
     pose[{arm, "L", "ctrls.switch"}]["ik_blend"] = 0.0;
-    guide.pose = pose;
+    model::setTestPose(guide.overrides, pose);
     model::ShapeEdit shape;
     shape.transform.translate = Vec3(0.0, 0.05, 0.0);
-    guide.instance(arm)->shapes["ctrls.ik"] = shape;
+    guide.overrides[{arm, {}, "ctrls.ik"}].shape.emplace().edit = shape;
     guide.instance(arm)->names["ik"] = "hand";
     history.reset(guide);
     return guide;
@@ -79,7 +79,7 @@ TEST(NodeIdentity, RenamingAnInstanceByCommandKeepsItsPoseShapeEditsAndNameOverr
     const model::InstanceId arm = document.instanceNamed("arm")->id;
     ASSERT_TRUE(test::succeeded(edit::renameInstance(history, arm, "limb")));
     ASSERT_EQ(document.instance(arm)->name, "limb");
-    EXPECT_EQ(document.pose, edited.pose);
+    EXPECT_EQ(document.overrides, edited.overrides);
     expectSameRig(before, seenOf(document));
     // The pose did move the arm, the shape edit and the name override apply.
     const auto& after = seenOf(document);
@@ -102,14 +102,14 @@ TEST(NodeIdentity, RenamingAnInstanceInTheGuideFileKeepsItsRecords)
     edit::History history(document);
     editedBiped(history);
     std::string text = io::writeGuideText(document);
-    EXPECT_NE(text.find("  - {instance: 4, branch: L, node: ctrls.fk.0, values: {rz: -40}}  # arm\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("  - instance: 4  # arm\n    branch: L\n    node: ctrls.fk.0\n    pose: {rz: -40}\n"), std::string::npos) << text;
     const auto at = text.find("    name: arm\n");
     ASSERT_NE(at, std::string::npos);
     text.replace(at, 14, "    name: limb\n"); // what a rigger does in a text editor
     auto reread = io::readGuideText(text, "renamed.yml");
     ASSERT_TRUE(reread.ok()) << formatAll(reread.diagnostics());
     EXPECT_EQ(reread->instance(4)->name, "limb");
-    EXPECT_EQ(reread->pose, document.pose);
+    EXPECT_EQ(reread->overrides, document.overrides);
     expectSameRig(seenOf(document), seenOf(*reread));
 }
 
@@ -118,10 +118,12 @@ TEST(NodeIdentity, AGuideOfSchemaOneMigratesItsPoseWithANoteAndBuildsTheSame)
     model::GuideDocument document;
     edit::History history(document);
     editedBiped(history);
-    // Schema 1 keyed the pose by the instance's name.
-    std::string text = io::writeGuideText(document);
-    text.replace(text.find("rigsmith_guide: 2"), 17, "rigsmith_guide: 1");
-    text = text.substr(0, text.find("pose:\n")) +
+    // Schema 1 keyed the pose by the instance's name (the shape edit is written as an override).
+    model::GuideDocument unposed = document;
+    model::setTestPose(unposed.overrides, {});
+    std::string text = io::writeGuideText(unposed);
+    text.replace(text.find("rigsmith_guide: 3"), 17, "rigsmith_guide: 1");
+    text = text +
            "pose:\n"
            "  \"arm.L::ctrls.fk.0\": {rz: -40}\n"
            "  \"arm.L::ctrls.switch\": {ik_blend: 0}\n"
@@ -129,7 +131,7 @@ TEST(NodeIdentity, AGuideOfSchemaOneMigratesItsPoseWithANoteAndBuildsTheSame)
            "  \"gone.L::ctrls.fk.0\": {rx: 5}\n";
     auto old = io::readGuideText(text, "old.yml");
     ASSERT_TRUE(old.ok()) << formatAll(old.diagnostics());
-    EXPECT_EQ(old->pose, document.pose);
+    EXPECT_EQ(old->overrides, document.overrides);
     const std::string messages = formatAll(old.diagnostics());
     EXPECT_NE(messages.find("old.yml:"), std::string::npos) << messages;
     EXPECT_NE(messages.find("note: 3 pose record(s) keyed by instance name were migrated"), std::string::npos) << messages;
@@ -143,7 +145,7 @@ TEST(NodeIdentity, AGuideOfSchemaOneMigratesItsPoseWithANoteAndBuildsTheSame)
     EXPECT_NE(saved.find("legacy_pose:\n  \"gone.L::ctrls.fk.0\": {rx: 5}\n"), std::string::npos) << saved;
     auto again = io::readGuideText(saved, "again.yml");
     ASSERT_TRUE(again.ok()) << formatAll(again.diagnostics());
-    EXPECT_EQ(again->pose, document.pose);
+    EXPECT_EQ(again->overrides, document.overrides);
     EXPECT_EQ(again->legacyPose, old->legacyPose);
 }
 
@@ -153,7 +155,7 @@ TEST(NodeIdentity, ARecordWhoseNodeIsGoneIsReportedByNameAndKept)
     edit::History history(document);
     editedBiped(history);
     const model::InstanceId arm = document.instanceNamed("arm")->id;
-    model::PoseValues pose = document.pose;
+    model::PoseValues pose = model::testPose(document.overrides);
     pose[{arm, "L", "ctrls.fk.9"}]["rx"] = 10.0; // a control this arm does not make
     ASSERT_TRUE(test::succeeded(edit::setPose(history, pose, "Pose")));
     model::ShapeEdit shape;
@@ -161,9 +163,9 @@ TEST(NodeIdentity, ARecordWhoseNodeIsGoneIsReportedByNameAndKept)
     ASSERT_TRUE(test::succeeded(edit::setShapeEdit(history, arm, "ctrls.nothing", shape)));
     const model::Rig rig = rigging::buildRig(document, test::builtinTemplates());
     const std::string log = formatAll(rig.diagnostics);
-    EXPECT_NE(log.find("warning: the test pose of 'arm.L::ctrls.fk.9' matches no rig node; it is kept in the guide"),
+    EXPECT_NE(log.find("warning: orphan override of 'arm.L::ctrls.fk.9' (pose): the rig has no such node; it is kept in the guide"),
               std::string::npos) << log;
-    EXPECT_NE(log.find("warning: the shape edit of 'arm::ctrls.nothing' matches no controller; it is kept in the guide"),
+    EXPECT_NE(log.find("warning: orphan override of 'arm::ctrls.nothing' (shapes): the rig has no such node; it is kept in the guide"),
               std::string::npos) << log;
     const auto orphan = std::find_if(rig.diagnostics.begin(), rig.diagnostics.end(),
                                      [](const Diagnostic& d) { return d.message.find("ctrls.fk.9") != std::string::npos; });
@@ -172,8 +174,9 @@ TEST(NodeIdentity, ARecordWhoseNodeIsGoneIsReportedByNameAndKept)
     // Saved and read back: both records are still there.
     auto reread = io::readGuideText(io::writeGuideText(document), "orphans.yml");
     ASSERT_TRUE(reread.ok()) << formatAll(reread.diagnostics());
-    EXPECT_EQ(reread->pose, document.pose);
-    EXPECT_TRUE(reread->instance(arm)->shapes.count("ctrls.nothing"));
+    EXPECT_EQ(reread->overrides, document.overrides);
+    ASSERT_TRUE(reread->overrides.count({arm, {}, "ctrls.nothing"}));
+    EXPECT_TRUE(reread->overrides.at({arm, {}, "ctrls.nothing"}).shape);
 }
 
 TEST(NodeIdentity, PoseRecordsWithBadKeysAreErrorsAtTheirLine)

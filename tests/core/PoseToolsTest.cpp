@@ -193,16 +193,16 @@ TEST(PoseTools, PoseEditsAreUndoableAndSavedWithTheGuide)
     Pose pose = r.defaults();
     pose[r.channel("arm.L::ctrls.fk.0", "rz")] = 45.0;
     ASSERT_TRUE(test::succeeded(
-        edit::setPose(history, eval::valuesFromPose(r.rig, r.program->channels(), pose, guide.pose), "Rotate c_arm1_L")));
+        edit::setPose(history, eval::valuesFromPose(r.rig, r.program->channels(), pose, model::testPose(guide.overrides)), "Rotate c_arm1_L")));
     EXPECT_EQ(history.undoText(), "Rotate c_arm1_L");
-    EXPECT_EQ(guide.pose.at(r.rig.nodes[r.index("arm.L::ctrls.fk.0")].key).at("rz"), 45.0);
-    EXPECT_TRUE(edit::setPose(history, guide.pose, "nothing").failed()); // refused: no empty step
+    EXPECT_EQ(model::testPose(guide.overrides).at(r.rig.nodes[r.index("arm.L::ctrls.fk.0")].key).at("rz"), 45.0);
+    EXPECT_TRUE(edit::setPose(history, model::testPose(guide.overrides), "nothing").failed()); // refused: no empty step
     const auto reread = io::readGuideText(io::writeGuideText(guide), "pose.yml");
     ASSERT_TRUE(reread.ok());
-    EXPECT_EQ(reread->pose, guide.pose);
-    EXPECT_EQ(eval::poseFromValues(r.rig, r.program->channels(), reread->pose), pose);
+    EXPECT_EQ(reread->overrides, guide.overrides);
+    EXPECT_EQ(eval::poseFromValues(r.rig, r.program->channels(), model::testPose(reread->overrides)), pose);
     history.undo();
-    EXPECT_TRUE(guide.pose.empty());
+    EXPECT_TRUE(model::testPose(guide.overrides).empty());
 }
 
 TEST(PoseTools, PosedRigCarriesTheGuidePoseForDumpsAndExports)

@@ -169,7 +169,7 @@ TEST(Session, PoseEditsEvaluateWithoutRebuildingAndRebuildsKeepThePose)
     EXPECT_TRUE(events.last().has(ChangeKind::Rig));
     const auto handAfter = *s.rig()->findPath("arm.L::skin.limb.2");
     const model::Rig expected = rigging::buildRig(s.document(), s.templates());
-    const auto posed = eval::posedRig(expected, s.document().pose);
+    const auto posed = eval::posedRig(expected, model::testPose(s.document().overrides));
     ASSERT_TRUE(posed.ok());
     EXPECT_LT(maxAbsDifference(s.evaluation()->worldMatrix(handAfter), posed->nodes[*expected.findPath("arm.L::skin.limb.2")].worldMatrix),
               1e-9) << "the live rig equals a fresh build, posed";
@@ -188,7 +188,9 @@ TEST(Session, ShapeAndCvDragsAreTransactionsOnTheAuthoredSide)
     const Mat4 frame = *s.shapeFrame(right);
     s.beginShapeDrag(right);
     s.dragShapeTo(glm::translate(Mat4(1.0), Vec3(0.0, 0.1, 0.0)) * frame);
-    EXPECT_TRUE(s.document().instanceNamed("arm")->shapes.count("ctrls.ik")) << "the L side (authored) holds the edit";
+    const model::InstanceId arm = s.document().instanceNamed("arm")->id;
+    ASSERT_TRUE(s.document().overrides.count({arm, {}, "ctrls.ik"})) << "the L side (authored) holds the edit";
+    EXPECT_TRUE(s.document().overrides.at({arm, {}, "ctrls.ik"}).shape) << "the L side (authored) holds the edit";
     const auto previewed = *s.rig()->findPath("arm.R::ctrls.ik");
     EXPECT_GT(glm::length(s.rig()->nodes[previewed].curves.front().points.front() - rightBefore), 0.05) << "rebuilt live";
     EXPECT_EQ(s.history().size(), 0u);
@@ -226,7 +228,7 @@ void expectLiveRigIsAFullBuild(session::Session& s, const std::string& what)
     ASSERT_NE(s.rig(), nullptr) << what;
     const model::Rig fresh = rigging::buildRig(s.document(), s.templates());
     EXPECT_EQ(io::writeRigDump(*s.rig()), io::writeRigDump(fresh)) << what;
-    const auto posed = eval::posedRig(fresh, s.document().pose);
+    const auto posed = eval::posedRig(fresh, model::testPose(s.document().overrides));
     ASSERT_TRUE(posed.ok()) << what;
     ASSERT_EQ(s.evaluation()->world.size(), posed->nodes.size()) << what;
     for (model::RigNodeIndex i = 0; i < posed->nodes.size(); ++i)
@@ -295,7 +297,7 @@ TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
         const auto fk = std::find_if(s.rig()->nodes.begin(), s.rig()->nodes.end(), [](const model::RigNode& n) {
             return n.kind == model::RigNodeKind::Controller;
         });
-        model::PoseValues pose = s.document().pose;
+        model::PoseValues pose = model::testPose(s.document().overrides);
         pose[fk->key]["rx"] = 20.0;
         ASSERT_TRUE(test::succeeded(edit::setPose(s.history(), pose, "Pose")));
         expectLiveRigIsAFullBuild(s, label + "pose");

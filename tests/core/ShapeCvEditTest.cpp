@@ -93,7 +93,7 @@ TEST(ShapeCvEdit, MovingACvMovesItExactlyTheMirroredSideFollowsAndItIsSaved)
 
     // The guide keeps the edit, a line per CV, and reads it back.
     const std::string text = io::writeGuideText(doc);
-    const auto at = text.find("      ctrls.ik:\n        t: [0, 0, 0]\n        cvs:\n          - {curve: 0, cv: 2, offset: [");
+    const auto at = text.find("    node: ctrls.ik\n    shape: {}\n    cvs:\n      - {curve: 0, cv: 2, offset: [");
     EXPECT_NE(at, std::string::npos) << text;
     auto read = io::readGuideText(text, "cvs.yml");
     ASSERT_TRUE(read) << formatAll(read.diagnostics());
@@ -133,7 +133,7 @@ TEST(ShapeCvEdit, CvsOfTheMirroredCopyAndOfATransformedShapeAreEditedExactly)
     ASSERT_EQ(preview.size(), 2u) << "the dragged side and its twin preview";
     ASSERT_TRUE(test::succeeded(drag->commit(history, change, "Rotate")));
     EXPECT_EQ(history.undoText(), "Rotate 3 CVs of ctrls.ik of leg");
-    EXPECT_EQ(doc.instance(leg)->shapes.at("ctrls.ik").transform, whole.transform) << "the whole-shape edit is kept";
+    EXPECT_EQ(doc.overrides.at({leg, {}, "ctrls.ik"}).shape->edit.transform, whole.transform) << "the whole-shape edit is kept";
     const model::Rig after = buildBiped(doc);
 
     std::vector<Vec3> expected = worldCvs(before, right);
@@ -170,7 +170,7 @@ TEST(ShapeCvEdit, RefusesCvsOfSeveralControllersOrOutOfRangeAndWarnsOfEditsTheSh
     const model::Rig warned = rigging::buildRig(doc, test::builtinTemplates());
     EXPECT_FALSE(hasErrors(warned.diagnostics));
     const std::string all = formatAll(warned.diagnostics);
-    const std::string warning = "shapes.ctrls.ik: the shape has no CV 999 on curve 0";
+    const std::string warning = "override of 'arm::ctrls.ik': the shape has no CV 999 on curve 0";
     const auto first = all.find(warning);
     EXPECT_NE(first, std::string::npos) << all;
     EXPECT_EQ(all.find(warning, first + 1), std::string::npos) << "once, not again for the mirrored copy: " << all;

@@ -1,0 +1,60 @@
+// `rigsmith-cli build --no-restore KIND`: the guide's overrides of that kind
+// are left out of the build (the records stay in the guide); a bad kind is
+// refused with the list of kinds.
+#include "CliSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using rs::clitest::freshFolder;
+using rs::clitest::readText;
+using rs::clitest::runCli;
+
+namespace {
+
+fs::path overriddenBiped(const fs::path& folder)
+{
+    const fs::path guide = folder / "overridden.yml";
+    std::ofstream out(guide);
+    out << readText(RIGSMITH_SOURCE_DIR "/resources/samples/biped.yml")
+        << "overrides:\n"
+           "  - instance: 4\n"
+           "    branch: L\n"
+           "    node: ctrls.fk.0\n"
+           "    name: upperarm_ctl_L\n"
+           "    pose: {rz: 30}\n";
+    return guide;
+}
+
+} // namespace
+
+TEST(Cli, NoRestoreLeavesOneKindOfOverrideOut)
+{
+    const fs::path folder = freshFolder("no-restore");
+    const fs::path guide = overriddenBiped(folder);
+    const auto all = runCli({"build", guide.string(), "--posed", "--dump", (folder / "all.yml").string()}, folder);
+    ASSERT_EQ(all.exitCode, 0) << all.errors;
+    EXPECT_NE(readText(folder / "all.yml").find("upperarm_ctl_L"), std::string::npos);
+    EXPECT_NE(all.errors.find("posed with 1 posed nodes"), std::string::npos) << all.errors;
+
+    const auto noNames = runCli({"build", guide.string(), "--posed", "--no-restore", "names", "--dump", (folder / "names.yml").string()},
+                                folder);
+    ASSERT_EQ(noNames.exitCode, 0) << noNames.errors;
+    EXPECT_EQ(readText(folder / "names.yml").find("upperarm_ctl_L"), std::string::npos);
+    EXPECT_NE(noNames.errors.find("posed with 1 posed nodes"), std::string::npos) << noNames.errors;
+
+    const auto neither = runCli({"build", guide.string(), "--posed", "--no-restore", "names", "--no-restore", "pose", "--dump",
+                                 (folder / "neither.yml").string()},
+                                folder);
+    ASSERT_EQ(neither.exitCode, 0) << neither.errors;
+    EXPECT_NE(neither.errors.find("posed with 0 posed nodes"), std::string::npos) << neither.errors;
+    EXPECT_EQ(readText(folder / "neither.yml").find("upperarm_ctl_L"), std::string::npos);
+
+    const auto bad = runCli({"build", guide.string(), "--no-restore", "colours"}, folder);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.errors.find("--no-restore wants shapes, defaults, limits, locks, post, names or pose, not 'colours'"),
+              std::string::npos) << bad.errors;
+}
