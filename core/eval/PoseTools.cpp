@@ -16,12 +16,13 @@ const model::RigConstraint* limbIk(const model::Rig& rig, const CopyKey& instanc
     return nullptr;
 }
 
-// The FK/IK blends of a limb, parents first (as the builder lists them).
+// The FK/IK blends of a limb (blend joints), parents first (as the builder lists them).
 std::vector<const model::RigConstraint*> limbBlends(const model::Rig& rig, const CopyKey& instance)
 {
     std::vector<const model::RigConstraint*> out;
     for (const auto& c : rig.constraints)
-        if (c.kind() == model::ConstraintKind::Blend && c.key.copy() == instance && c.targets.size() == 2)
+        if (c.kind() == model::ConstraintKind::Blend && c.key.copy() == instance && c.targets.size() == 2 &&
+            rig.nodes[c.driven.front()].kind == model::RigNodeKind::Joint) // not the auto-clavicle's groups
             out.push_back(&c);
     return out;
 }
@@ -187,7 +188,7 @@ Result<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node)
     const CopyKey instance = m_rig.nodes[node].key.copy();
     const auto* ik = limbIk(m_rig, instance);
     const auto blends = limbBlends(m_rig, instance);
-    if (!ik || blends.empty() || ik->targets.size() != 2)
+    if (!ik || blends.empty() || ik->targets.size() < 2)
         return refusedAt(m_rig.nodes[node], "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match");
     const auto fkRoot = fkFor(blends, ik->driven.front()), fkMid = fkFor(blends, ik->driven[1]),
                fkEnd = fkFor(blends, ik->driven.back());

@@ -104,7 +104,7 @@ TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
         EXPECT_EQ(n.name.substr(0, n.name.rfind("_R")), left.name.substr(0, left.name.rfind("_L"))) << n.path;
         ++pairs;
     }
-    EXPECT_EQ(pairs, 134u) << "arms and legs (with their IK and pole space groups) and ten fingers";
+    EXPECT_EQ(pairs, 143u) << "arms and legs (with their IK and pole space groups, pins and auto-clavicle groups) and ten fingers";
     // Constraints come in pairs too.
     for (const auto& c : rig.constraints)
         if (auto r = c.path.find(".R::"); r != std::string::npos)
@@ -167,7 +167,7 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     ASSERT_NE(space, nullptr);
     EXPECT_EQ(rig.nodes[space->targets[2]].path, "spine::ctrls.cog");
     EXPECT_EQ(node(rig, "leg.L::ctrls.ik").attribute("space")->labels,
-              (std::vector<std::string>{"world", "root", "cog", "hips"}));
+              (std::vector<std::string>{"world", "root", "cog", "hips", "chest"}));
 }
 
 TEST(Templates, TheOptionsChangeWhatTheLimbBuilds)
