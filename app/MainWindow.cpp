@@ -128,6 +128,11 @@ void MainWindow::createDocks()
     m_channelBox = new widgets::ChannelBox(this);
     m_channelBox->setObjectName("channelBox");
     QDockWidget* channelDock = addDock(m_channelBox, tr("Channel box"), "channelBoxDock", Qt::RightDockWidgetArea);
+    // Right-click in the channel box: match the selected limb's FK and IK (the Pose menu's actions).
+    for (const char* name : {"ikToFk", "fkToIk"})
+        if (auto* match = findChild<QAction*>(name))
+            m_channelBox->addAction(match);
+    m_channelBox->setContextMenuPolicy(Qt::ActionsContextMenu);
     m_transformPanel = new widgets::TransformPanel(this);
     tabifyDockWidget(channelDock, addDock(m_transformPanel, tr("Transform"), "transformDock", Qt::RightDockWidgetArea));
     m_options = new widgets::OptionsEditor(this);

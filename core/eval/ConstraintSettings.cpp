@@ -36,6 +36,8 @@ public:
     {
         m_c.stretchChannel = optionalChannel(s.stretch, "stretch");
         m_c.softChannel = optionalChannel(s.soft, "soft");
+        m_c.volumeChannel = optionalChannel(s.volume, "volume");
+        m_c.pinChannel = optionalChannel(s.pin, "pin");
     }
     void operator()(const model::TwistConstraint& s)
     {

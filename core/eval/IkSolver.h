@@ -6,7 +6,8 @@
 // Three segments (quadruped hind legs): the two-bone solution on a virtual
 // bone from joint 1 to the end, joint 2 kept in that bone's rest frame, so
 // the end still lands on the effector. The last joint takes the effector's
-// rotation (rest offset kept).
+// rotation (rest offset kept). A pin pulls the middle joint onto a third
+// target; volume scales stretched bones across (model::IkConstraint).
 #include "eval/Solvers.h"
 
 namespace rs::eval {

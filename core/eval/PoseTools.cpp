@@ -16,12 +16,13 @@ const model::RigConstraint* limbIk(const model::Rig& rig, const CopyKey& instanc
     return nullptr;
 }
 
-// The FK/IK blends of a limb, parents first (as the builder lists them).
+// The FK/IK blends of a limb (blend joints), parents first (as the builder lists them).
 std::vector<const model::RigConstraint*> limbBlends(const model::Rig& rig, const CopyKey& instance)
 {
     std::vector<const model::RigConstraint*> out;
     for (const auto& c : rig.constraints)
-        if (c.kind() == model::ConstraintKind::Blend && c.key.copy() == instance && c.targets.size() == 2)
+        if (c.kind() == model::ConstraintKind::Blend && c.key.copy() == instance && c.targets.size() == 2 &&
+            rig.nodes[c.driven.front()].kind == model::RigNodeKind::Joint) // not the auto-clavicle's groups
             out.push_back(&c);
     return out;
 }
@@ -33,6 +34,17 @@ model::RigNodeIndex fkFor(const std::vector<const model::RigConstraint*>& blends
         if (b->targets[1] == ik)
             return b->targets[0];
     return model::kNoNode;
+}
+
+// The limb's own root control (clavicle, pelvis) above its IK chain, kNoNode
+// when the chain hangs under another instance's control: a match keeps it in
+// place although the switch changes what it follows (the auto-clavicle).
+model::RigNodeIndex limbRootControl(const model::Rig& rig, const model::RigConstraint& ik)
+{
+    model::RigNodeIndex n = rig.nodes[ik.driven.front()].parent;
+    while (n != model::kNoNode && rig.nodes[n].kind != model::RigNodeKind::Controller)
+        n = rig.nodes[n].parent;
+    return n != model::kNoNode && rig.nodes[n].key.copy() == ik.key.copy() ? n : model::kNoNode;
 }
 
 // A pose tool refused on `node` (a match on a node that is no limb's).
@@ -146,10 +158,13 @@ Result<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node)
         return noSuchNode(node);
     const CopyKey instance = m_rig.nodes[node].key.copy();
     const auto blends = limbBlends(m_rig, instance);
-    if (!limbIk(m_rig, instance) || blends.empty())
+    const auto* ik = limbIk(m_rig, instance);
+    if (!ik || blends.empty())
         return refusedAt(m_rig.nodes[node], "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match");
     // Where the IK chain is now (it does not depend on the FK controls).
     evaluate(pose);
+    const auto root = limbRootControl(m_rig, *ik);
+    const Mat4 rootWorld = root != model::kNoNode ? m_state.world[root].matrix() : Mat4(1.0);
     std::vector<std::pair<model::RigNodeIndex, Mat4>> targets;
     for (const auto* b : blends) {
         const auto fk = b->targets[0], ik = b->targets[1];
@@ -157,10 +172,12 @@ Result<Pose> Posing::ikToFk(const Pose& pose, model::RigNodeIndex node)
             targets.push_back({fk, (m_state.world[ik] * m_program.restWorld(ik).inverse() * m_program.restWorld(fk)).matrix()});
     }
     Pose out = pose;
-    for (const auto& [fk, world] : targets) // parents first: each placement sees its parent's new place
-        out = placeAt(out, fk, world);
     if (auto weight = m_program.channels().find(std::get<model::BlendConstraint>(blends.front()->settings).weight))
         out[*weight] = 0.0;
+    if (root != model::kNoNode)
+        out = placeAt(out, root, rootWorld);
+    for (const auto& [fk, world] : targets) // parents first: each placement sees its parent's new place
+        out = placeAt(out, fk, world);
     return out;
 }
 
@@ -171,7 +188,7 @@ Result<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node)
     const CopyKey instance = m_rig.nodes[node].key.copy();
     const auto* ik = limbIk(m_rig, instance);
     const auto blends = limbBlends(m_rig, instance);
-    if (!ik || blends.empty() || ik->targets.size() != 2)
+    if (!ik || blends.empty() || ik->targets.size() < 2)
         return refusedAt(m_rig.nodes[node], "'" + m_rig.nodes[node].path + "' is not on an FK/IK limb to match");
     const auto fkRoot = fkFor(blends, ik->driven.front()), fkMid = fkFor(blends, ik->driven[1]),
                fkEnd = fkFor(blends, ik->driven.back());
@@ -193,15 +210,50 @@ Result<Pose> Posing::fkToIk(const Pose& pose, model::RigNodeIndex node)
     const Vec3 polePosition = glm::length(out) > 1e-6
                                   ? elbow + glm::normalize(out) * distance
                                   : (w[fkMid] * m_program.restWorld(fkMid).inverse()).apply(m_program.restWorld(pole).translation);
-    Pose result = placeAt(pose, control, controlWorld.matrix());
-    if (m_rig.nodes[pole].kind == model::RigNodeKind::Controller) {
-        evaluate(result);
-        Mat4 poleWorld = m_state.world[pole].matrix();
-        poleWorld[3] = Vec4(polePosition, 1.0);
-        result = placeAt(result, pole, poleWorld);
-    }
+    const auto rootControl = limbRootControl(m_rig, *ik);
+    const Mat4 rootWorld = rootControl != model::kNoNode ? w[rootControl].matrix() : Mat4(1.0);
+    const model::RigNodeIndex pin = ik->targets.size() == 3 ? ik->targets[2] : model::kNoNode;
+    Pose result = pose;
     if (auto weight = m_program.channels().find(std::get<model::BlendConstraint>(blends.front()->settings).weight))
         result[*weight] = 1.0;
+    result = placeAt(result, control, controlWorld.matrix());
+    auto placePosition = [&](model::RigNodeIndex n, const Vec3& position) {
+        if (n == model::kNoNode || m_rig.nodes[n].kind != model::RigNodeKind::Controller)
+            return;
+        evaluate(result);
+        Mat4 world = m_state.world[n].matrix();
+        world[3] = Vec4(position, 1.0);
+        result = placeAt(result, n, world);
+    };
+    // Soft IK eases the reach, and a pin or an auto-clavicle moves with the
+    // control: correct the control until the IK end sits on the FK end, along
+    // the chain by the secant method (soft IK flattens the reach near its end)
+    // and across it directly.
+    double lastX = 0.0, lastReached = 0.0;
+    for (int pass = 0; pass < 24; ++pass) {
+        if (rootControl != model::kNoNode)
+            result = placeAt(result, rootControl, rootWorld);
+        placePosition(pole, polePosition);
+        placePosition(pin, elbow);
+        evaluate(result);
+        const Vec3 start = m_state.world[ik->driven.front()].translation;
+        const Vec3 reachedEnd = m_state.world[ik->driven.back()].translation;
+        const Vec3 miss = end - reachedEnd;
+        if (glm::length(miss) < 1e-10 || glm::length(end - start) < 1e-9)
+            break;
+        const Vec3 dir = glm::normalize(end - start);
+        const double x = glm::dot(m_state.world[ik->targets[0]].translation - start, dir);
+        const double reached = glm::dot(reachedEnd - start, dir), along = glm::dot(miss, dir);
+        double step = along;
+        if (pass > 0 && std::abs(reached - lastReached) > 1e-12 && std::abs(x - lastX) > 1e-12)
+            step = along * (x - lastX) / (reached - lastReached);
+        step = std::clamp(step, -0.5, 0.5);
+        lastX = x;
+        lastReached = reached;
+        Affine moved = m_state.world[control];
+        moved.translation += dir * step + (miss - dir * along);
+        result = placeAt(result, control, moved.matrix());
+    }
     return result;
 }
 

@@ -21,7 +21,7 @@ struct CompiledConstraint {
     std::vector<Affine> offsets;       // per target: inverse(target rest) * driven rest
     std::vector<bool> identityOffset;  // per target: the offset is the identity (skipped)
     int weightChannel = -1, stretchChannel = -1, softChannel = -1, valueChannel = -1, breakChannel = -1,
-        spaceChannel = -1;             // -1: none
+        spaceChannel = -1, volumeChannel = -1, pinChannel = -1; // -1: none
     double fraction = 0;               // twist
     bool nonRolling = false;           // twist: the start's roll relative to targets[2]
     bool showAbove = false;            // visibility: shown while value > threshold, else while value < threshold
@@ -43,6 +43,7 @@ struct CompiledConstraint {
     Vec3 restPole{0.0};
     Mat3 restEffectorRotation{1.0};
     std::vector<Mat3> restBoneFrames;  // per bone: (bone dir, plane normal) frames at rest
+    std::vector<int> boneAxes;         // per bone: the joint's local axis along it (volume scales the others)
     Vec3 midOffset{0.0};               // 3-segment IK: joint 2 in the rest virtual-bone frame
 
     // Twist: rest relative rotation of targets[1] to targets[0], twist axis in targets[0]'s frame.

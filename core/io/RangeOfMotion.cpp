@@ -347,6 +347,8 @@ struct Planner {
                     continue;
                 }
             }
+            if (found.empty())
+                continue; // moves no deform joint (a pin while unpinned): left out
             appendPeaks(keys, std::move(found), base, channel);
         }
         if (keys.empty())

@@ -94,6 +94,8 @@ public:
     {
         field("stretch", attributeText(m_rig, s.stretch));
         field("soft", attributeText(m_rig, s.soft));
+        field("volume", attributeText(m_rig, s.volume));
+        field("pin", attributeText(m_rig, s.pin));
     }
     void operator()(const model::TwistConstraint& s)
     {

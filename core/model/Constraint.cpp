@@ -67,6 +67,8 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
             } else if constexpr (std::is_same_v<T, IkConstraint>) {
                 optionalRef(settings.stretch);
                 optionalRef(settings.soft);
+                optionalRef(settings.volume);
+                optionalRef(settings.pin);
             } else if constexpr (std::is_same_v<T, SplineConstraint>) {
                 optionalRef(settings.stretch);
             } else if constexpr (std::is_same_v<T, SpaceConstraint>) {

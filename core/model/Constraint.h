@@ -87,14 +87,24 @@ struct BlendConstraint {
 // leg: joint 2 keeps its place in the frame of a virtual bone from joint 1 to
 // the end). targets = [effector, pole]: the end reaches for the effector's
 // position and takes its rotation (rest offset kept); the pole sets the bend
-// plane. Both attributes are clamped to [0, 1].
+// plane; an optional third target is the pin the middle joint (elbow, knee;
+// joint 1) locks to. Every attribute is clamped to [0, 1].
 struct IkConstraint {
     // 0: the chain stops at full reach; 1: the bones lengthen to reach the
     // effector; in between, part of the way. None: 0.
     std::optional<AttributeRef> stretch{};
-    // The share of the full reach (sum of bone lengths) over which the reach
-    // eases out instead of snapping straight. None: 0 (hard IK).
+    // The soft zone in metres (at the rig's rest scale) before full reach,
+    // over which the reach eases out instead of snapping straight. None: 0
+    // (hard IK).
     std::optional<AttributeRef> soft{};
+    // Volume: a bone stretched by s (its length over its rest length) is
+    // scaled across (its local Y and Z) by s^(-volume / 2), so a fully
+    // volume-preserving limb keeps its volume: 1 / sqrt(s). None: 0.
+    std::optional<AttributeRef> volume{};
+    // Pin: the middle joint moves to targets[2] by this share (1: locked on
+    // the pin, both bones then reaching from it); needs the third target.
+    // None: 0.
+    std::optional<AttributeRef> pin{};
     bool operator==(const IkConstraint&) const = default;
 };
 

@@ -1,6 +1,7 @@
 // Rig mode, driven through the real widgets: Build switches to it, a click on a
 // controller's curve selects it, the channel box edits it, the W gizmo drags
-// it, the arrow keys pickwalk, pose tools run from the menu, and undo takes
+// it, the arrow keys pickwalk, pose tools run from the menu and the channel box's
+// context menu (FK/IK match), and undo takes
 // every pose change back.
 #include "EditorTestSupport.h"
 
@@ -10,6 +11,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QDoubleSpinBox>
+
+#include <algorithm>
 
 using namespace rs;
 using namespace rs::test;
@@ -111,6 +114,18 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
     w.action("build")->trigger();
     EXPECT_EQ(w.session().selection().nodes, (std::vector<model::RigNodeIndex>{elbow, settings}));
     EXPECT_NEAR(posedPosition(w, "arm.R::skin.limb.2").y, left.y, 1e-6);
+
+    // Right-click in the channel box: match IK to the FK arm, one undo step, the hand stays.
+    const auto menu = w.channelBox()->actions();
+    EXPECT_NE(std::find(menu.begin(), menu.end(), w.action("fkToIk")), menu.end());
+    EXPECT_NE(std::find(menu.begin(), menu.end(), w.action("ikToFk")), menu.end());
+    EXPECT_EQ(w.channelBox()->contextMenuPolicy(), Qt::ActionsContextMenu);
+    const Vec3 hand = posedPosition(w, "arm.L::skin.limb.2");
+    w.session().selectControllers({elbow}, false);
+    w.action("fkToIk")->trigger();
+    EXPECT_EQ(w.session().history().undoText(), "Match IK to FK");
+    EXPECT_LT(glm::length(posedPosition(w, "arm.L::skin.limb.2") - hand), 1e-5);
+    EXPECT_TRUE(w.session().evaluation()->isVisible(ik)) << "in IK now: the IK control shows";
     while (w.session().history().index() > undoStart)
         w.action("undo")->trigger();
     EXPECT_TRUE(w.session().document().pose.empty());

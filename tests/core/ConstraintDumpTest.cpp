@@ -51,7 +51,8 @@ private:
         if (kind == "point") return weighted<model::PointConstraint>();
         if (kind == "scale") return weighted<model::ScaleConstraint>();
         if (kind == "blend") return model::BlendConstraint{attribute("weight"), flag("keep_offset")};
-        if (kind == "ik") return model::IkConstraint{optionalAttribute("stretch"), optionalAttribute("soft")};
+        if (kind == "ik") return model::IkConstraint{optionalAttribute("stretch"), optionalAttribute("soft"),
+                                                         optionalAttribute("volume"), optionalAttribute("pin")};
         if (kind == "twist") return model::TwistConstraint{number("fraction"), flag("non_rolling")};
         if (kind == "visibility") return visibility();
         if (kind == "spline") return model::SplineConstraint{optionalAttribute("stretch")};

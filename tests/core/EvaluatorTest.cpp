@@ -70,7 +70,7 @@ TEST(Evaluator, IkReachesEveryReachableTarget)
         const std::string id(limb);
         Pose pose = r.defaults();
         pose[r.channel(id + "::ctrls.switch", "ik_blend")] = 1.0;
-        pose[r.channel(id + "::ctrls.switch", "stretch")] = 0.0;
+        pose[r.channel(id + "::ctrls.ik", "stretch")] = 0.0;
         const auto [root, end, reach] = reachOf(r, id);
         std::mt19937 random(7);
         std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -95,7 +95,7 @@ TEST(Evaluator, QuadrupedHindLegIkReachesWithItsFourJointChain)
     for (const std::string limb : {"hind_leg.L", "hind_leg.R"}) {
         Pose pose = r.defaults();
         pose[r.channel(limb + "::ctrls.switch", "ik_blend")] = 1.0;
-        pose[r.channel(limb + "::ctrls.switch", "stretch")] = 0.0;
+        pose[r.channel(limb + "::ctrls.ik", "stretch")] = 0.0;
         const Vec3 end = r.restPosition(limb + "::ik.3");
         std::vector<double> lengths;
         for (int i = 0; i < 3; ++i)
@@ -152,10 +152,10 @@ TEST(Evaluator, IkStretchesBeyondReachOnlyWhenStretchIsOn)
     const auto [root, wrist, reach] = reachOf(r, "arm.L");
     const Vec3 target = root + glm::normalize(wrist - root) * reach * 1.3;
     pose = r.moveTo(pose, "arm.L::ctrls.ik", target, "arm.L::ik.2");
-    pose[r.channel("arm.L::ctrls.switch", "stretch")] = 1.0;
+    pose[r.channel("arm.L::ctrls.ik", "stretch")] = 1.0;
     r.evaluate(pose);
     EXPECT_LT(glm::length(r.position("arm.L::ik.2") - target), 1e-5);
-    pose[r.channel("arm.L::ctrls.switch", "stretch")] = 0.0;
+    pose[r.channel("arm.L::ctrls.ik", "stretch")] = 0.0;
     r.evaluate(pose);
     EXPECT_NEAR(glm::length(r.position("arm.L::ik.2") - root), reach, 1e-9); // fully extended, short of the target
 }
@@ -165,15 +165,15 @@ TEST(Evaluator, SoftIkEasesTheLastPartOfTheReach)
     PosedRig r("biped");
     Pose pose = r.defaults();
     pose[r.channel("arm.L::ctrls.switch", "ik_blend")] = 1.0;
-    pose[r.channel("arm.L::ctrls.switch", "stretch")] = 0.0;
-    pose[r.channel("arm.L::ctrls.switch", "soft_ik")] = 0.1;
+    pose[r.channel("arm.L::ctrls.ik", "stretch")] = 0.0;
+    pose[r.channel("arm.L::ctrls.ik", "soft_ik")] = 0.05; // a 5 cm soft zone
     const auto [root, wrist, reach] = reachOf(r, "arm.L");
     pose = r.moveTo(pose, "arm.L::ctrls.ik", root + glm::normalize(wrist - root) * reach, "arm.L::ik.2");
     r.evaluate(pose);
     const double reached = glm::length(r.position("arm.L::ik.2") - root);
     EXPECT_LT(reached, reach - 1e-4);                    // never snaps straight
-    EXPECT_GT(reached, reach - 0.1 * reach);             // but gets most of the way
-    EXPECT_NEAR(reached, eval::softReach(reach, reach, 0.1 * reach), 1e-9);
+    EXPECT_GT(reached, reach - 0.05);                    // but gets most of the way
+    EXPECT_NEAR(reached, eval::softReach(reach, reach, 0.05), 1e-9);
 }
 
 TEST(Evaluator, FkBlendFollowsTheFkControlsAndSegmentScaleKeepsChildrenUnscaled)

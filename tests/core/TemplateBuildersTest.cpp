@@ -104,7 +104,7 @@ TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
         EXPECT_EQ(n.name.substr(0, n.name.rfind("_R")), left.name.substr(0, left.name.rfind("_L"))) << n.path;
         ++pairs;
     }
-    EXPECT_EQ(pairs, 134u) << "arms and legs (with their IK and pole space groups) and ten fingers";
+    EXPECT_EQ(pairs, 143u) << "arms and legs (with their IK and pole space groups, pins and auto-clavicle groups) and ten fingers";
     // Constraints come in pairs too.
     for (const auto& c : rig.constraints)
         if (auto r = c.path.find(".R::"); r != std::string::npos)
@@ -130,15 +130,19 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     const auto& settings = node(rig, "arm.L::ctrls.switch");
     ASSERT_NE(settings.attribute("ik_blend"), nullptr);
     EXPECT_EQ(settings.attribute("ik_blend")->value, 1.0);
-    EXPECT_EQ(settings.attribute("stretch")->value, 1.0) << "stretch is on by default";
-    EXPECT_EQ(settings.attribute("soft_ik")->value, 0.0);
+    const auto& ikControl = node(rig, "arm.L::ctrls.ik"); // what only the IK does is on the IK control
+    EXPECT_EQ(ikControl.attribute("stretch")->value, 1.0) << "stretch is on by default";
+    EXPECT_EQ(ikControl.attribute("soft_ik")->value, 0.0);
+    EXPECT_EQ(ikControl.attribute("volume")->value, 0.0) << "volume is off by default";
+    EXPECT_EQ(ikControl.attribute("pin")->value, 0.0);
+    EXPECT_EQ(settings.attribute("stretch"), nullptr);
     const auto* ik = constraint(rig, "arm.L::cns.ik");
     ASSERT_NE(ik, nullptr);
     ASSERT_EQ(ik->kind(), ConstraintKind::Ik);
     EXPECT_EQ(ik->driven.size(), 3u);
     EXPECT_EQ(rig.nodes[ik->targets[1]].path, "arm.L::ctrls.pole");
     EXPECT_EQ(std::get<model::IkConstraint>(ik->settings).stretch,
-              (model::AttributeRef{*rig.findPath("arm.L::ctrls.switch"), "stretch"}));
+              (model::AttributeRef{*rig.findPath("arm.L::ctrls.ik"), "stretch"}));
     const auto* blend = constraint(rig, "arm.L::cns.blend.1");
     ASSERT_NE(blend, nullptr);
     EXPECT_EQ(rig.nodes[blend->targets[0]].path, "arm.L::ctrls.fk.1");
@@ -163,7 +167,7 @@ TEST(Templates, TheLimbBlendsFkAndIkAndSpreadsTwistJoints)
     ASSERT_NE(space, nullptr);
     EXPECT_EQ(rig.nodes[space->targets[2]].path, "spine::ctrls.cog");
     EXPECT_EQ(node(rig, "leg.L::ctrls.ik").attribute("space")->labels,
-              (std::vector<std::string>{"world", "root", "cog", "hips"}));
+              (std::vector<std::string>{"world", "root", "cog", "hips", "chest"}));
 }
 
 TEST(Templates, TheOptionsChangeWhatTheLimbBuilds)
@@ -182,7 +186,7 @@ TEST(Templates, TheOptionsChangeWhatTheLimbBuilds)
     EXPECT_EQ(countTagged(rig, "arm.R::skin.mid."), 0u);
     EXPECT_FALSE(rig.findPath("arm.L::ctrls.clavicle"));
     EXPECT_EQ(rig.nodes[node(rig, "arm.L::grps.limb").parent].path, "spine::blend.4") << "hangs on the chest hook";
-    EXPECT_EQ(node(rig, "arm.L::ctrls.switch").attribute("stretch")->value, 0.0);
+    EXPECT_EQ(node(rig, "arm.L::ctrls.ik").attribute("stretch")->value, 0.0);
 }
 
 TEST(Templates, TheLegHasAReverseFootFromTaggedPivots)

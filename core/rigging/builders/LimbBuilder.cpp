@@ -153,7 +153,8 @@ void LimbBuilder::bendOf(const BuildContext& ctx, const LimbGuide& g, Vec3& norm
 
 // Spaces an IK control can follow: the world first, then the rig's named spaces.
 const std::vector<std::string> kArmSpaces = {"world", "root", "cog", "chest", "head"};
-const std::vector<std::string> kLegSpaces = {"world", "root", "cog", "hips"};
+// A front leg on a quadruped's chest follows the chest.
+const std::vector<std::string> kLegSpaces = {"world", "root", "cog", "hips", "chest"};
 
 void LimbBuilder::configure(BuildContext& ctx) const
 {
@@ -175,12 +176,19 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const RigNodeIndex world = ctx.space("world") != model::kNoNode ? ctx.space("world") : ctx.hookNode();
 
     // Clavicle / pelvis.
-    RigNodeIndex attach = ctx.hookNode();
+    RigNodeIndex attach = ctx.hookNode(), rootCtrl = model::kNoNode;
+    limb::AutoClavicle autoClavicle;
     const Vec3 rootPosition = ctx.guidePosition(g.root);
     if (ctx.optionBool(rootOption())) {
         const Vec3 aim = g.points[0] - rootPosition;
         const Mat4 frame = kit::aimFrame(rootPosition, glm::length(aim) > 1e-9 ? aim : frames[0][0], normal);
+        if (!legLike()) { // the clavicle hangs under the auto-clavicle's follow group
+            autoClavicle = limb::addAutoClavicleGroups(ctx, attach, rootPosition, g.points[0], g.points[k - 1], g.root);
+            if (autoClavicle.follow != model::kNoNode)
+                attach = autoClavicle.follow;
+        }
         attach = kit::addControl(ctx, rootOption(), rootOption(), {}, attach, frame, g.root).ctrl;
+        rootCtrl = attach;
         kit::addSkin(ctx, rootOption(), rootOption(), {}, attach, frame, g.root);
     }
     ctx.setHook(g.root, attach);
@@ -210,6 +218,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const auto poleCtrl = kit::addControl(ctx, "pole", "pole", {}, poleSpace, poleFrame, g.limb[1]).ctrl;
     if (ctx.node(poleCtrl).kind == model::RigNodeKind::Controller)
         ctx.channels(poleCtrl).lock(3, 6); // only its position matters
+    const auto pinCtrl = limb::addPinControl(ctx, poleSpace, g.points[1], g.limb[1]);
     RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
     if (legLike())
         buildReverseFoot(ctx, g, ikCtrl, normal, effector, toeTap);
@@ -224,17 +233,27 @@ void LimbBuilder::generate(BuildContext& ctx) const
         blendParent = kit::addSetup(ctx, RigNodeKind::Joint, "blend." + index, "blend", int(i) + 1, blendParent, frames[i], g.limb[i]);
         blend.push_back(blendParent);
     }
-    // Settings: FK/IK blend, stretch and soft IK live on one switch controller,
-    // which rides on the limb's end (wrist or ankle), off the side away from the pole.
+    // The FK/IK blend lives on one switch controller, which rides on the limb's end (wrist or ankle), off the side away from the pole.
     Mat4 switchFrame = frames[k - 1];
     switchFrame[3] = Vec4(g.points[k - 1] - poleDirection * 0.12, 1.0);
     const auto settings = kit::addControl(ctx, "switch", "switch", {}, blend.back(), switchFrame, g.limb[k - 1]).ctrl;
     if (ctx.node(settings).kind == model::RigNodeKind::Controller)
         ctx.channels(settings).lock(0, model::ChannelSettings::kCount); // a settings holder: custom channels only
     const AttributeRef weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
-    const AttributeRef stretch = ctx.addAttribute(settings, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
-    const AttributeRef soft = ctx.addAttribute(settings, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
-    ctx.addConstraint("cns.ik", ik, {effector, poleCtrl}, model::IkConstraint{.stretch = stretch, .soft = soft});
+    // What only the IK does lives on the IK control: stretch, soft IK, volume and the pin.
+    const AttributeRef stretch = ctx.addAttribute(ikCtrl, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+    const AttributeRef soft = ctx.addAttribute(ikCtrl, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
+    const AttributeRef volume = ctx.addAttribute(ikCtrl, "volume", ctx.optionBool("volume") ? 1.0 : 0.0, 0.0, 1.0);
+    model::IkConstraint solver{.stretch = stretch, .soft = soft, .volume = volume};
+    std::vector<RigNodeIndex> ikTargets = {effector, poleCtrl};
+    std::vector<RigNodeIndex> ikShown = {ikCtrl, poleCtrl};
+    if (pinCtrl != model::kNoNode) {
+        solver.pin = ctx.addAttribute(ikCtrl, "pin", 0.0, 0.0, 1.0);
+        ikTargets.push_back(pinCtrl);
+        ikShown.push_back(pinCtrl);
+    }
+    ctx.addConstraint("cns.ik", ik, ikTargets, solver);
+    limb::connectAutoClavicle(ctx, autoClavicle, rootCtrl, ikCtrl, weight);
     for (std::size_t i = 0; i < k; ++i)
         ctx.addConstraint("cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]}, model::BlendConstraint{.weight = weight});
     std::vector<RigNodeIndex> fkShown = fk;
@@ -255,7 +274,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
         skin.push_back(kit::addSkin(ctx, "limb." + std::to_string(i), "", int(i) + 1, blend[i], frames[i], g.limb[i]));
     if (legLike())
         kit::addSkin(ctx, "ball", "toe", {}, end, frames[k], g.end);
-    limb::addBlendVisibility(ctx, weight, fkShown, {ikCtrl, poleCtrl});
+    limb::addBlendVisibility(ctx, weight, fkShown, ikShown);
     if (ctx.optionBool("do_skin")) {
         limb::addTwistJoints(ctx, g.points, frames, g.limb, blend, skin, limbGroup);
         if (ctx.optionBool("blend_joints"))

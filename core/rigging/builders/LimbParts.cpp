@@ -3,6 +3,7 @@
 #include "rigging/builders/BuilderKit.h"
 #include "rigging/builders/Builders.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 
 namespace rs::rigging::limb {
@@ -94,6 +95,63 @@ void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const st
             ctx.addConstraint("cns." + key, {joint}, targets, model::TwistConstraint{.fraction = fraction, .nonRolling = upper});
         }
     }
+}
+
+AutoClavicle addAutoClavicleGroups(BuildContext& ctx, RigNodeIndex hook, const Vec3& clavicle, const Vec3& shoulder,
+                                   const Vec3& hand, model::JointId source)
+{
+    AutoClavicle g;
+    if (!ctx.optionBool("do_ctrl") || !ctx.optionBool("clavicle"))
+        return g;
+    // X from the clavicle to the hand, Z forward (across the raise), so the aim
+    // keeps its up in every raise and only a hand straight behind is ambiguous.
+    Vec3 along = hand - clavicle;
+    if (glm::length(along) < 1e-9)
+        along = shoulder - clavicle;
+    Vec3 forward = glm::cross(along, Vec3(0.0, 1.0, 0.0));
+    if (glm::length(forward) < 1e-9)
+        forward = Vec3(0.0, 0.0, 1.0);
+    forward = glm::normalize(forward);
+    if (forward.z < 0.0)
+        forward = -forward;
+    const Mat4 frame = kit::aimFrame(clavicle, along, forward);
+    auto group = [&](const std::string& key) {
+        return kit::addSetup(ctx, RigNodeKind::Group, "auto_clavicle." + key, "auto_clavicle_" + key, {}, hook, frame, source);
+    };
+    g.rest = group("rest");
+    g.aim = group("aim");
+    g.share = group("share");
+    g.follow = group("follow");
+    return g;
+}
+
+void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& g, RigNodeIndex clavicle, RigNodeIndex ikControl,
+                         const model::AttributeRef& ikBlend)
+{
+    if (g.follow == model::kNoNode)
+        return;
+    const model::AttributeRef share =
+        ctx.addAttribute(clavicle, "auto_clavicle", std::clamp(ctx.optionFloat("auto_clavicle"), 0.0, 1.0), 0.0, 1.0);
+    // The up target: behind the clavicle, so raising the arm up, down or
+    // forward never lines the aim up with it.
+    Mat4 upFrame = ctx.nodeWorld(g.rest);
+    upFrame[3] = Vec4(kit::positionOf(upFrame) - Vec3(upFrame[2]) * 0.5, 1.0);
+    const auto up = kit::addSetup(ctx, RigNodeKind::Group, "auto_clavicle.up", "auto_clavicle_up", {}, g.rest, upFrame,
+                                  ctx.node(g.rest).guide);
+    ctx.addConstraint("cns.auto_clavicle.aim", {g.aim}, {ikControl, up},
+                      model::AimConstraint{.aim = model::Axis::X, .up = model::Axis::Z});
+    ctx.addConstraint("cns.auto_clavicle.share", {g.share}, {g.rest, g.aim}, model::BlendConstraint{.weight = share});
+    ctx.addConstraint("cns.auto_clavicle.follow", {g.follow}, {g.rest, g.share}, model::BlendConstraint{.weight = ikBlend});
+}
+
+RigNodeIndex addPinControl(BuildContext& ctx, RigNodeIndex poleSpace, const Vec3& mid, model::JointId source)
+{
+    if (!ctx.optionBool("pin"))
+        return model::kNoNode;
+    const auto pin = kit::addControl(ctx, "pin", "pin", {}, poleSpace, kit::uprightFrame(mid), source).ctrl;
+    if (ctx.node(pin).kind == RigNodeKind::Controller)
+        ctx.channels(pin).lock(3, 6); // a position: rotation and scale mean nothing
+    return pin;
 }
 
 } // namespace rs::rigging::limb

@@ -46,4 +46,25 @@ void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const st
                     const std::vector<model::JointId>& guides, const std::vector<model::RigNodeIndex>& blend,
                     const std::vector<model::RigNodeIndex>& skin, model::RigNodeIndex limbRoot);
 
+// Auto-clavicle (arms): hidden groups under `hook` at the clavicle's frame.
+// `follow` (what the clavicle control hangs under) turns towards `aim` (aimed
+// at the IK control) by the clavicle's `auto_clavicle` share times the
+// limb's ik_blend, so it follows the IK arm's raise and stays put in FK.
+struct AutoClavicle {
+    model::RigNodeIndex rest = model::kNoNode, aim = model::kNoNode, share = model::kNoNode, follow = model::kNoNode;
+};
+// Made before the clavicle control: the groups (none when the option
+// `auto_clavicle` is absent or the instance has no controllers).
+AutoClavicle addAutoClavicleGroups(BuildContext& ctx, model::RigNodeIndex hook, const Vec3& clavicle, const Vec3& shoulder,
+                                   const Vec3& hand, model::JointId source);
+// Made once the IK control and the blend exist: the `auto_clavicle` channel on
+// `clavicle` and the aim and blends.
+void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& groups, model::RigNodeIndex clavicle, model::RigNodeIndex ikControl,
+                         const model::AttributeRef& ikBlend);
+
+// Pin (option `pin`): a control at the middle joint (elbow, knee) in the
+// pole's space; the IK's pin channel (on `settings`, 0 by default) locks the
+// middle joint to it. Returns kNoNode when the option is off.
+model::RigNodeIndex addPinControl(BuildContext& ctx, model::RigNodeIndex poleSpace, const Vec3& mid, model::JointId source);
+
 } // namespace rs::rigging::limb
