@@ -1,0 +1,95 @@
+# The same rig and clip as .glb and .fbx, played by Blender (issue 21 item 2):
+# both files are imported into one scene (Blender's glTF and FBX importers),
+# each armature plays its file's action, and every bone head's world position
+# is sampled with scene.frame_set at sub-frames: each interval between two of
+# the action's keys cut in four (4x the key rate). The two armatures must
+# agree within TOLERANCE metres at every sample. Both importers bring the
+# files to Blender's Z-up metres (the FBX through its unit scale), so the
+# positions compare as they are.
+# Each file's clip starts at its action's first frame (the glTF importer starts
+# at frame 0, the FBX importer at frame 1), on the scene's frame rate at import.
+# usage: blender -b --factory-startup --python blender-compare.py -- FILE.glb FILE.fbx [TOLERANCE=1e-4]
+import sys
+
+import numpy
+numpy.bool = bool  # Debian 12's numpy 1.24 removed the alias Blender 3.4's importer uses
+
+import bpy
+
+args = sys.argv[sys.argv.index('--') + 1:]
+glb_path, fbx_path = args[0], args[1]
+tolerance = float(args[2]) if len(args) > 2 else 1e-4
+failures = []
+scene = bpy.context.scene
+
+
+def import_armature(path):
+    before = set(bpy.data.objects)
+    fps_before = scene.render.fps / scene.render.fps_base
+    if path.endswith('.fbx'):
+        bpy.ops.import_scene.fbx(filepath=path)
+    else:
+        bpy.ops.import_scene.gltf(filepath=path)
+    fps = scene.render.fps / scene.render.fps_base
+    arms = [o for o in set(bpy.data.objects) - before if o.type == 'ARMATURE']
+    if len(arms) != 1:
+        raise SystemExit(f'ERROR {path}: expected one armature, found {len(arms)}')
+    arm = arms[0]
+    action = arm.animation_data.action if arm.animation_data else None
+    if action is None:
+        raise SystemExit(f'ERROR {path}: the armature plays no action')
+    # The glTF importer converts seconds to frames at the rate it found; the FBX importer may set its own.
+    return arm, action, (fps_before if not path.endswith('.fbx') else fps)
+
+
+gltf_arm, gltf_action, gltf_fps = import_armature(glb_path)
+fbx_arm, fbx_action, fbx_fps = import_armature(fbx_path)
+gltf_start, fbx_start = gltf_action.frame_range[0], fbx_action.frame_range[0]
+
+# The key times of the glTF action, in seconds from its start.
+frames = set()
+for fc in gltf_action.fcurves:
+    for k in fc.keyframe_points:
+        frames.add(round(k.co[0], 4))
+times = sorted((f - gltf_start) / gltf_fps for f in frames)
+samples = []
+for a, b in zip(times, times[1:]):
+    samples += [a + (b - a) * q / 4 for q in range(4)]
+samples.append(times[-1])
+
+names = [b.name for b in gltf_arm.pose.bones]
+missing = [n for n in names if n not in fbx_arm.pose.bones]
+if missing:
+    raise SystemExit(f'ERROR bones missing from the FBX armature: {missing[:10]}')
+
+
+def frame_set(frame):
+    whole = int(frame // 1)
+    scene.frame_set(whole, subframe=frame - whole)
+
+
+def heads(arm):
+    evaluated = arm.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    return [evaluated.matrix_world @ evaluated.pose.bones[n].head for n in names]
+
+
+worst, where, travel = 0.0, '', 0.0
+rest = None
+for time in samples:
+    frame_set(gltf_start + time * gltf_fps)
+    gltf_heads = heads(gltf_arm)
+    rest = rest or gltf_heads
+    travel = max(travel, max((h - r).length for h, r in zip(gltf_heads, rest)))
+    frame_set(fbx_start + time * fbx_fps)
+    for n, head, fbx_head in zip(names, gltf_heads, heads(fbx_arm)):
+        d = (fbx_head - head).length
+        if d > worst:
+            worst, where = d, f'{n} at {time:.4f} s'
+print(f'CHECK blender {gltf_action.name} / {fbx_action.name}: {len(times)} key times, {len(samples)} samples, '
+      f'{len(names)} bones travelling up to {travel:.3f} m, fps {gltf_fps:g} / {fbx_fps:g}, worst {worst:.2e} m ({where})')
+if travel < 1e-3:
+    print('ERROR the glTF armature does not move')
+    sys.exit(1)
+if worst > tolerance:
+    print(f'ERROR glTF and FBX differ by {worst:.3e} m at {where} (tolerance {tolerance})')
+    sys.exit(1)
