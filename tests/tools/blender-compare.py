@@ -6,9 +6,13 @@
 # agree within TOLERANCE metres at every sample. Both importers bring the
 # files to Blender's Z-up metres (the FBX through its unit scale), so the
 # positions compare as they are.
-# Each file's clip starts at its action's first frame (the glTF importer starts
-# at frame 0, the FBX importer at frame 1), on the scene's frame rate at import.
-# usage: blender -b --factory-startup --python blender-compare.py -- FILE.glb FILE.fbx [TOLERANCE=1e-4]
+# The FBX is imported first (its importer sets the scene's frame rate to the
+# file's), the glTF then converts seconds at that rate; the glTF action is
+# moved to start where the FBX importer starts (frame 1, the glTF importer's is
+# frame 0), so one frame_set plays both files at one time.
+# --part K/N: only the K-th of N equal runs of samples (a long clip is checked
+# by several processes, each under a minute).
+# usage: blender -b --factory-startup --python blender-compare.py -- FILE.glb FILE.fbx [TOLERANCE=1e-4] [--part K/N]
 import sys
 
 import numpy
@@ -17,6 +21,11 @@ numpy.bool = bool  # Debian 12's numpy 1.24 removed the alias Blender 3.4's impo
 import bpy
 
 args = sys.argv[sys.argv.index('--') + 1:]
+part, parts = 1, 1
+if '--part' in args:
+    at = args.index('--part')
+    part, parts = (int(v) for v in args[at + 1].split('/'))
+    del args[at:at + 2]
 glb_path, fbx_path = args[0], args[1]
 tolerance = float(args[2]) if len(args) > 2 else 1e-4
 failures = []
@@ -25,7 +34,6 @@ scene = bpy.context.scene
 
 def import_armature(path):
     before = set(bpy.data.objects)
-    fps_before = scene.render.fps / scene.render.fps_base
     if path.endswith('.fbx'):
         bpy.ops.import_scene.fbx(filepath=path)
     else:
@@ -38,24 +46,36 @@ def import_armature(path):
     action = arm.animation_data.action if arm.animation_data else None
     if action is None:
         raise SystemExit(f'ERROR {path}: the armature plays no action')
-    # The glTF importer converts seconds to frames at the rate it found; the FBX importer may set its own.
-    return arm, action, (fps_before if not path.endswith('.fbx') else fps)
+    return arm, action, fps
 
 
+fbx_arm, fbx_action, fps = import_armature(fbx_path)
 gltf_arm, gltf_action, gltf_fps = import_armature(glb_path)
-fbx_arm, fbx_action, fbx_fps = import_armature(fbx_path)
-gltf_start, fbx_start = gltf_action.frame_range[0], fbx_action.frame_range[0]
+if abs(gltf_fps - fps) > 1e-9:
+    raise SystemExit(f'ERROR the glTF importer changed the frame rate ({fps} -> {gltf_fps})')
+shift = fbx_action.frame_range[0] - gltf_action.frame_range[0]
+for fc in gltf_action.fcurves:
+    for k in fc.keyframe_points:
+        k.co.x += shift
+        k.handle_left.x += shift
+        k.handle_right.x += shift
+    fc.update()
+start = fbx_action.frame_range[0]
+if abs(gltf_action.frame_range[0] - start) > 1e-6:
+    raise SystemExit(f'ERROR the actions start at frames {gltf_action.frame_range[0]} and {start}')
 
 # The key times of the glTF action, in seconds from its start.
 frames = set()
 for fc in gltf_action.fcurves:
     for k in fc.keyframe_points:
         frames.add(round(k.co[0], 4))
-times = sorted((f - gltf_start) / gltf_fps for f in frames)
+times = sorted((f - start) / fps for f in frames)
 samples = []
 for a, b in zip(times, times[1:]):
     samples += [a + (b - a) * q / 4 for q in range(4)]
 samples.append(times[-1])
+count = len(samples)
+samples = samples[(part - 1) * count // parts:part * count // parts]
 
 names = [b.name for b in gltf_arm.pose.bones]
 missing = [n for n in names if n not in fbx_arm.pose.bones]
@@ -107,17 +127,16 @@ def heads(arm):
 worst, where, travel = 0.0, '', 0.0
 rest = None
 for time in samples:
-    frame_set(gltf_start + time * gltf_fps)
+    frame_set(start + time * fps)
     gltf_heads = heads(gltf_arm)
     rest = rest or gltf_heads
     travel = max(travel, max((h - r).length for h, r in zip(gltf_heads, rest)))
-    frame_set(fbx_start + time * fbx_fps)
     for n, head, fbx_head in zip(names, gltf_heads, heads(fbx_arm)):
         d = (fbx_head - head).length
         if d > worst:
             worst, where = d, f'{n} at {time:.4f} s'
-print(f'CHECK blender {gltf_action.name} / {fbx_action.name}: {len(times)} key times, {len(samples)} samples, '
-      f'{len(names)} bones travelling up to {travel:.3f} m, fps {gltf_fps:g} / {fbx_fps:g}, worst {worst:.2e} m ({where})')
+print(f'CHECK blender {gltf_action.name} / {fbx_action.name}: {len(times)} key times, part {part}/{parts}: '
+      f'{len(samples)} of {count} samples, {len(names)} bones travelling up to {travel:.3f} m, fps {fps:g}, worst {worst:.2e} m ({where})')
 if travel < 1e-3:
     print('ERROR the glTF armature does not move')
     sys.exit(1)
