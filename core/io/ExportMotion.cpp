@@ -143,7 +143,11 @@ void refineInto(std::vector<Sample>& out, Sample a, Sample b, double fractionA, 
                 const Sampler& sampler, eval::EvalState& state, int depth)
 {
     if (depth < 8 && leastRotationDot(a, b) < kMostTurnDot) {
-        const double midFrame = std::floor(0.5 * (a.frame + b.frame));
+        // An even frame when there is one (keys stay on the grid at half the
+        // rate, where Godot resamples: io/RangeOfMotion.h's framesPerKey), else any.
+        double midFrame = 2.0 * std::floor(0.25 * (a.frame + b.frame));
+        if (!(midFrame > a.frame && midFrame < b.frame))
+            midFrame = std::floor(0.5 * (a.frame + b.frame));
         if (midFrame > a.frame && midFrame < b.frame) {
             const double fraction = fractionA + (fractionB - fractionA) * (midFrame - a.frame) / (b.frame - a.frame);
             Sample mid = sampleAt(midFrame, poseBetween(program.channels(), keyA, keyB, fraction), program, sampler, state);
@@ -181,11 +185,7 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
         refineInto(samples, samples.back(), std::move(next), 0.0, 1.0, plan.keys[k], plan.keys[k + 1], program, sampler, state, 0);
     }
     for (const Sample& sample : samples) {
-        // In seconds as glTF stores them (float): the FBX keys (ticks) sit at
-        // the very same times, so a fast turn between two keys is played over
-        // the same interval from either file (at 250 s a float is 15 us off
-        // the frame, which is 1.4 mm at a tail tip turning half a turn a frame).
-        clip.times.push_back(double(float(sample.frame / framesPerSecond)));
+        clip.times.push_back(sample.frame / framesPerSecond);
         for (std::size_t n = 0; n < clip.tracks.size(); ++n) {
             ExportTrack& track = clip.tracks[n];
             Quat r = sample.rotations[n];
