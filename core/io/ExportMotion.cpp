@@ -4,6 +4,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace rs::io {
@@ -37,18 +39,6 @@ struct Sampler {
     }
 };
 
-void appendSample(ExportTrack& track, const Mat4& local)
-{
-    Vec3 t, s;
-    Quat r;
-    decompose(local, t, r, s);
-    if (!track.rotations.empty() && glm::dot(track.rotations.back(), r) < 0.0)
-        r = -r;
-    track.translations.push_back(t);
-    track.rotations.push_back(r);
-    track.scales.push_back(s);
-}
-
 bool sameVec(const Vec3& a, const Vec3& b, double tolerance)
 {
     return std::abs(a.x - b.x) <= tolerance && std::abs(a.y - b.y) <= tolerance && std::abs(a.z - b.z) <= tolerance;
@@ -77,7 +67,104 @@ void markChannels(ExportTrack& track, const Mat4& written)
     mark(kScaleChannel, track.scales, [](const Vec3& a, const Vec3& b) { return sameVec(a, b, kSameScale); }, s);
 }
 
-// A clip of `keys` [first, last] of the plan, times from 0 on the frame grid.
+// One sampled time of a clip: every scene node's local transform (joints, then controllers).
+struct Sample {
+    double frame = 0.0;
+    std::vector<Vec3> translations, scales;
+    std::vector<Quat> rotations;
+};
+
+Sample sampleAt(double frame, const eval::Pose& pose, const eval::RigProgram& program, const Sampler& sampler,
+                eval::EvalState& state)
+{
+    program.evaluate(pose, state);
+    Sample out;
+    out.frame = frame;
+    const std::size_t joints = sampler.scene.joints.size(), controllers = sampler.scene.controllers.size();
+    for (std::size_t n = 0; n < joints + controllers; ++n) {
+        Vec3 t, s;
+        Quat r;
+        decompose(n < joints ? sampler.jointLocal(n, state) : sampler.controllerLocal(n - joints, state), t, r, s);
+        out.translations.push_back(t);
+        out.rotations.push_back(r);
+        out.scales.push_back(s);
+    }
+    return out;
+}
+
+// The largest turn of any node from `a` to `b`, as the smallest |cos(angle / 2)|.
+double leastRotationDot(const Sample& a, const Sample& b)
+{
+    double least = 1.0;
+    for (std::size_t n = 0; n < a.rotations.size(); ++n)
+        least = std::min(least, std::abs(glm::dot(a.rotations[n], b.rotations[n])));
+    return least;
+}
+
+// The pose a fraction of the way from key `a` to key `b`: continuous channels
+// linearly, rotate orders and enums held at `a`'s value.
+eval::Pose poseBetween(const eval::ChannelLayout& layout, const eval::Pose& a, const eval::Pose& b, double fraction)
+{
+    eval::Pose out = a;
+    for (std::size_t c = 0; c < out.size(); ++c)
+        if (layout[c].transform != eval::kRotateOrderChannel && !layout[c].isEnum())
+            out[c] = a[c] + (b[c] - a[c]) * fraction;
+    return out;
+}
+
+// What every player plays half way between two samples (translations and
+// scales linearly, rotations by slerp on the shorter arc).
+Sample halfWay(const Sample& a, const Sample& b)
+{
+    Sample out;
+    out.frame = 0.5 * (a.frame + b.frame);
+    for (std::size_t n = 0; n < a.rotations.size(); ++n) {
+        out.translations.push_back(0.5 * (a.translations[n] + b.translations[n]));
+        out.scales.push_back(0.5 * (a.scales[n] + b.scales[n]));
+        const Quat end = glm::dot(a.rotations[n], b.rotations[n]) < 0.0 ? -b.rotations[n] : b.rotations[n];
+        out.rotations.push_back(glm::normalize(glm::slerp(a.rotations[n], end, 0.5)));
+    }
+    return out;
+}
+
+// A node turning more than this between two samples (cos of half of 120
+// degrees) is sampled again in between: interpolators disagree on a half turn
+// (slerp, nlerp and Euler curves each pick their own way round) and Euler
+// curves near it step by 180 degrees, which three.js's FBXLoader mishandles.
+constexpr double kMostTurnDot = 0.5;
+
+// Appends the samples strictly after `a` up to and including `b` (frames of
+// plan keys `keyA` and `keyA + 1`, `fractionA`/`fractionB` of the way between
+// them): where a node turns too far, the rig is evaluated again at the whole
+// frame half way; within one frame (a flip of the rig) the players' own
+// half-way transform is written, so every consumer turns the same way.
+void refineInto(std::vector<Sample>& out, Sample a, Sample b, double fractionA, double fractionB,
+                const eval::Pose& keyA, const eval::Pose& keyB, const eval::RigProgram& program,
+                const Sampler& sampler, eval::EvalState& state, int depth)
+{
+    if (depth < 8 && leastRotationDot(a, b) < kMostTurnDot) {
+        // An even frame when there is one (keys stay on the grid at half the
+        // rate, where Godot resamples: io/RangeOfMotion.h's framesPerKey), else any.
+        double midFrame = 2.0 * std::floor(0.25 * (a.frame + b.frame));
+        if (!(midFrame > a.frame && midFrame < b.frame))
+            midFrame = std::floor(0.5 * (a.frame + b.frame));
+        if (midFrame > a.frame && midFrame < b.frame) {
+            const double fraction = fractionA + (fractionB - fractionA) * (midFrame - a.frame) / (b.frame - a.frame);
+            Sample mid = sampleAt(midFrame, poseBetween(program.channels(), keyA, keyB, fraction), program, sampler, state);
+            refineInto(out, std::move(a), mid, fractionA, fraction, keyA, keyB, program, sampler, state, depth + 1);
+            refineInto(out, out.back(), std::move(b), fraction, fractionB, keyA, keyB, program, sampler, state, depth + 1);
+            return;
+        }
+        Sample mid = halfWay(a, b);
+        refineInto(out, std::move(a), mid, fractionA, fractionA, keyA, keyB, program, sampler, state, depth + 1);
+        refineInto(out, out.back(), std::move(b), fractionA, fractionB, keyA, keyB, program, sampler, state, depth + 1);
+        return;
+    }
+    out.push_back(std::move(b));
+}
+
+// A clip of `keys` [first, last] of the plan, times from 0 on the frame grid
+// (and half way between two frames where the rig flips within one).
 ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, std::size_t first, std::size_t last,
                       const eval::RigProgram& program, const Sampler& sampler, double framesPerSecond)
 {
@@ -91,12 +178,23 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
         clip.tracks.push_back({int(c), true, {}, {}, {}});
     const int step = framesPerKey(framesPerSecond);
     eval::EvalState state = program.makeState();
-    for (std::size_t k = first; k <= last; ++k) {
-        program.evaluate(plan.keys[k], state);
-        clip.times.push_back(double((k - first) * std::size_t(step)) / framesPerSecond);
-        for (auto& track : clip.tracks)
-            appendSample(track, track.controller ? sampler.controllerLocal(std::size_t(track.node), state)
-                                                 : sampler.jointLocal(std::size_t(track.node), state));
+    std::vector<Sample> samples;
+    samples.push_back(sampleAt(0.0, plan.keys[first], program, sampler, state));
+    for (std::size_t k = first; k < last; ++k) {
+        Sample next = sampleAt(double((k + 1 - first) * std::size_t(step)), plan.keys[k + 1], program, sampler, state);
+        refineInto(samples, samples.back(), std::move(next), 0.0, 1.0, plan.keys[k], plan.keys[k + 1], program, sampler, state, 0);
+    }
+    for (const Sample& sample : samples) {
+        clip.times.push_back(sample.frame / framesPerSecond);
+        for (std::size_t n = 0; n < clip.tracks.size(); ++n) {
+            ExportTrack& track = clip.tracks[n];
+            Quat r = sample.rotations[n];
+            if (!track.rotations.empty() && glm::dot(track.rotations.back(), r) < 0.0)
+                r = -r;
+            track.translations.push_back(sample.translations[n]);
+            track.rotations.push_back(r);
+            track.scales.push_back(sample.scales[n]);
+        }
     }
     std::vector<ExportTrack> kept;
     for (auto& track : clip.tracks) {

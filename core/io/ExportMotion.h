@@ -3,7 +3,10 @@
 // pose on the scene's nodes and the range-of-motion clip(s), sampled from the
 // evaluator at the keys io/RangeOfMotion.h plans. Tracks say which channels
 // change (ExportTrack::animated / held); tracks that change nothing are left
-// out of the clip.
+// out of the clip. Where a node turns more than 120 degrees between two keys
+// the rig is sampled again in between (on even frames), so that slerp, nlerp
+// and Euler-curve players (three.js, Blender, Assimp, FBX importers) all play
+// the same motion between keys.
 #include "eval/RigProgram.h"
 #include "io/ExportScene.h"
 

@@ -2,9 +2,10 @@
 // per animated node and transform property (Lcl Translation / Lcl Rotation /
 // Lcl Scaling) an AnimationCurveNode "T" / "R" / "S" whose channels d|X, d|Y,
 // d|Z each get an AnimationCurve. Keys are the clip's samples (baked), so
-// they are declared linear. A channel whose keys all equal the node's own
-// value is omitted (importers fall back to that value); a node property with
-// no channel left gets no curve node. One Take per clip.
+// they are declared linear. The clip's flags (ExportTrack::animated / held)
+// say which properties get a curve node, as they say which channels glTF
+// gets; within one, a component whose keys all equal the node's own value is
+// omitted (importers fall back to that value). One Take per clip.
 #include "io/FbxAnimation.h"
 #include "io/FbxDocument.h"
 
@@ -62,14 +63,27 @@ void addCurve(Document& doc, std::int64_t curveNode, int channel, const std::vec
     doc.connect(id, curveNode, kChannels[channel]);
 }
 
+// `property` as the clip's flags say (ExportTrack::animated / held, the same
+// channels glTF writes): an animated property gets a curve node whose
+// components carry every key (a component that never moves gets one key, or
+// none when it keeps the node's own value); a held one gets one key per
+// component that differs from the node's value; any other property nothing.
 void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const std::vector<std::int64_t>& times,
-                 const Property& property)
+                 Property property, unsigned bit, const ExportTrack& track)
 {
-    bool moves[3] = {false, false, false};
-    for (const Vec3& key : property.keys)
-        for (int c = 0; c < 3; ++c)
-            moves[c] = moves[c] || std::abs(key[c] - property.nodeValue[c]) > kConstantTolerance;
-    if (!moves[0] && !moves[1] && !moves[2])
+    const bool animated = (track.animated & bit) != 0, held = (track.held & bit) != 0;
+    if (!animated && !held)
+        return;
+    std::vector<std::int64_t> keyTimes = times;
+    if (!animated) { // held: the first key is the value
+        property.keys.resize(1);
+        keyTimes.resize(1);
+    }
+    bool writes[3] = {false, false, false};
+    for (int c = 0; c < 3; ++c)
+        for (const Vec3& key : property.keys)
+            writes[c] = writes[c] || std::abs(key[c] - property.nodeValue[c]) > kConstantTolerance;
+    if (!writes[0] && !writes[1] && !writes[2]) // held within float resolution of the node's value
         return;
     const std::int64_t id = doc.newId();
     Node& node = doc.addObject("AnimationCurveNode", id, property.curveNode, "AnimCurveNode", "");
@@ -81,8 +95,8 @@ void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const st
     doc.connect(id, layer);
     doc.connect(id, model, property.name);
     for (int c = 0; c < 3; ++c)
-        if (moves[c])
-            addCurve(doc, id, c, times, property);
+        if (writes[c])
+            addCurve(doc, id, c, keyTimes, property);
 }
 
 void addTrack(Document& doc, std::int64_t layer, std::int64_t model, const Mat4& nodeLocal,
@@ -92,9 +106,10 @@ void addTrack(Document& doc, std::int64_t layer, std::int64_t model, const Mat4&
     Quat r;
     decompose(nodeLocal, t, r, s);
     const Vec3 euler = eulerXyzDegrees(r);
-    addProperty(doc, layer, model, times, {"Lcl Translation", "T", t, track.translations});
-    addProperty(doc, layer, model, times, {"Lcl Rotation", "R", euler, continuousEulerDegrees(track.rotations, euler)});
-    addProperty(doc, layer, model, times, {"Lcl Scaling", "S", s, track.scales});
+    addProperty(doc, layer, model, times, {"Lcl Translation", "T", t, track.translations}, kTranslationChannel, track);
+    addProperty(doc, layer, model, times, {"Lcl Rotation", "R", euler, continuousEulerDegrees(track.rotations, euler)},
+                kRotationChannel, track);
+    addProperty(doc, layer, model, times, {"Lcl Scaling", "S", s, track.scales}, kScaleChannel, track);
 }
 
 } // namespace

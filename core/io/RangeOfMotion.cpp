@@ -23,6 +23,8 @@ constexpr double kMovesJoint = 1e-4;       // metres a motion must move some def
 constexpr double kKeptShare = 0.1;         // a translation cut below this share of its nominal is left out
 constexpr int kBisections = 12;
 constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
+constexpr int kPathSteps = 8;              // samples of the way to a peak, looking for a flip
+constexpr double kFlipDegrees = 90.0;      // a deform joint turning more than this in one step flips
 
 // An FK/IK switch: the blend constraints that share one weight channel.
 struct Switch {
@@ -194,13 +196,51 @@ struct Planner {
         return base;
     }
 
-    // The share (0..1) of `offset` on `channel` from `base` that stretches nothing more than allowed.
+    // The deform joints' world rotations (columns normalised).
+    std::vector<Mat3> deformRotations(const eval::Pose& pose)
+    {
+        const auto& state = posing.evaluate(pose);
+        std::vector<Mat3> out;
+        for (auto node : deform) {
+            Mat3 m = state.world[node].linear;
+            for (int c = 0; c < 3; ++c)
+                m[c] = glm::length(m[c]) > 1e-12 ? glm::normalize(m[c]) : m[c];
+            out.push_back(m);
+        }
+        return out;
+    }
+
+    // Whether some deform joint flips on the way from `base` to `base` with
+    // `value` on `channel` (turns more than kFlipDegrees in one of kPathSteps
+    // steps: a solver's twist or up vector giving way, not a motion to keep:
+    // no interpolation between keys can follow it).
+    bool flipsOnTheWay(const eval::Pose& base, int channel, double value)
+    {
+        const double from = base[std::size_t(channel)];
+        const double cosFlip = std::cos(glm::radians(kFlipDegrees));
+        eval::Pose p = base;
+        std::vector<Mat3> previous = deformRotations(p);
+        for (int step = 1; step <= kPathSteps; ++step) {
+            p[std::size_t(channel)] = from + (value - from) * double(step) / double(kPathSteps);
+            std::vector<Mat3> current = deformRotations(p);
+            for (std::size_t j = 0; j < current.size(); ++j) {
+                const Mat3 turn = glm::transpose(previous[j]) * current[j];
+                if (0.5 * (turn[0][0] + turn[1][1] + turn[2][2] - 1.0) < cosFlip)
+                    return true;
+            }
+            previous = std::move(current);
+        }
+        return false;
+    }
+
+    // The share (0..1) of `offset` on `channel` from `base` that stretches
+    // nothing more than allowed and flips no joint on the way.
     double allowedShare(const eval::Pose& base, int channel, double offset, double limit)
     {
         auto fits = [&](double share) {
             eval::Pose p = base;
             p[std::size_t(channel)] = program.channels().clamp(channel, base[std::size_t(channel)] + share * offset);
-            return stretch(p) <= limit;
+            return stretch(p) <= limit && !flipsOnTheWay(base, channel, p[std::size_t(channel)]);
         };
         if (fits(1.0))
             return 1.0;

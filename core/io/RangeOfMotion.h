@@ -24,6 +24,9 @@
 //    exercised with the chain switched to FK (FK snapped onto the IK pose
 //    first, so the switch moves nothing) and switched back after; IK controls
 //    (the nodes an IK or spline constraint reads) with the chain in IK;
+//  - a peak is also cut back until no deform joint flips on the way to it
+//    (turns more than 90 degrees in an eighth of the way: a solver's twist or
+//    up vector giving way, e.g. the quadruped's spline tail half turned);
 //  - a motion that moves no deform joint is left out (no dead segments).
 // Keys sit `framesPerKey` frames apart on a grid of `framesPerSecond`; every
 // peak is a key (peak, opposite peak, start), and a channel that would turn

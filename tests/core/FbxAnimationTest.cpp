@@ -172,6 +172,7 @@ TEST(FbxExport, APosedScaleClipReachesAssimp)
     const std::string name = scene.joints[std::size_t(track.node)].name;
     for (std::size_t k = 0; k < track.scales.size(); ++k)
         track.scales[k] = Vec3(1.0 + 0.5 * std::sin(3.14159265358979 * double(k) / double(track.scales.size() - 1)));
+    track.animated |= io::kScaleChannel; // the writers write the channels the flags name
     scene.joints[2].poseLocal = scene.joints[2].bindLocal * rotationMatrix(Vec3(0, 0, 1), 0.5);
     const char* dir = std::getenv("RIGSMITH_SCALE_CLIP_DIR");
     if (dir)
@@ -217,4 +218,71 @@ TEST(FbxExport, APosedScaleClipReachesAssimp)
         }
     }
     EXPECT_NEAR(largest, 1.5, 1e-3) << name << "'s scale keys";
+}
+
+// The FBX carries the channels the clip's flags name, as glTF does
+// (ExportTrack::animated / held): a channel whose samples move but whose flag
+// is clear gets no curve node, a held channel one key, an animated one every key.
+TEST(FbxExport, CurveNodesAreTheClipsAnimatedAndHeldChannels)
+{
+    io::ExportOptions options;
+    options.rangeOfMotion = true;
+    auto prepared = io::prepareExport(biped(), options);
+    ASSERT_TRUE(prepared.scene);
+    io::ExportScene scene = std::move(*prepared.scene);
+    io::ExportClip& clip = scene.clips[0];
+    // Every animated rotation but the first is cleared; the first track's
+    // translation is held at an offset instead of whatever it did.
+    io::ExportTrack* first = nullptr;
+    std::set<std::string> expected;
+    for (auto& track : clip.tracks) {
+        if (!(track.animated & io::kRotationChannel))
+            continue;
+        if (!first) {
+            first = &track;
+            expected.insert(scene.joints[std::size_t(track.node)].name + " Lcl Rotation");
+            continue;
+        }
+        track.animated &= ~unsigned(io::kRotationChannel);
+    }
+    ASSERT_NE(first, nullptr);
+    const Vec3 offset = translationOf(scene.joints[std::size_t(first->node)].poseLocal) + Vec3(0.0, 0.1, 0.0);
+    for (Vec3& t : first->translations)
+        t = offset;
+    first->animated &= ~unsigned(io::kTranslationChannel);
+    first->held |= io::kTranslationChannel;
+    expected.insert(scene.joints[std::size_t(first->node)].name + " Lcl Translation");
+    for (auto& track : clip.tracks)
+        for (unsigned bit : {io::kTranslationChannel, io::kScaleChannel})
+            if (&track != first && (track.animated | track.held) & bit)
+                expected.insert((track.controller ? scene.controllers[std::size_t(track.node)].name
+                                                  : scene.joints[std::size_t(track.node)].name) +
+                                (bit == io::kTranslationChannel ? " Lcl Translation" : " Lcl Scaling"));
+
+    const auto bytes = io::fbxBytes(scene, io::conventionFor(io::ExportPreset::Gltf, true));
+    ASSERT_TRUE(bytes);
+    const test::FbxFile file = test::readFbx(*bytes);
+    ASSERT_TRUE(file.error.empty()) << file.error;
+    const test::FbxObjects objects(file);
+    std::set<std::string> written;
+    std::map<std::string, std::size_t> keys; // by "model property", the most keys of its curves
+    for (const auto& [child, link] : objects.parents) {
+        const auto* object = objects.byId.at(child);
+        if (object->name == "AnimationCurveNode" && !link.second.empty())
+            written.insert(test::fbxObjectName(*objects.byId.at(link.first)) + " " + link.second);
+    }
+    for (const auto& [child, link] : objects.parents) {
+        const auto* object = objects.byId.at(child);
+        if (object->name != "AnimationCurve")
+            continue;
+        for (const auto& [node, nodeLink] : objects.parents)
+            if (node == link.first && !nodeLink.second.empty()) {
+                const std::string key = test::fbxObjectName(*objects.byId.at(nodeLink.first)) + " " + nodeLink.second;
+                keys[key] = std::max(keys[key], object->find("KeyTime")->properties[0].array.size());
+            }
+    }
+    EXPECT_EQ(written, expected);
+    const std::string name = scene.joints[std::size_t(first->node)].name;
+    EXPECT_EQ(keys[name + " Lcl Translation"], 1u) << "held: one key";
+    EXPECT_EQ(keys[name + " Lcl Rotation"], clip.times.size()) << "animated: every key";
 }
