@@ -128,7 +128,7 @@ TEST(RigMode, ClickChannelBoxGizmoPickwalkAndUndoBackToTheRestPose)
     EXPECT_TRUE(w.session().evaluation()->isVisible(ik)) << "in IK now: the IK control shows";
     while (w.session().history().index() > undoStart)
         w.action("undo")->trigger();
-    EXPECT_TRUE(w.session().document().pose.empty());
+    EXPECT_TRUE(model::testPose(w.session().document().overrides).empty());
     EXPECT_LT(glm::length(posedPosition(w, "arm.L::skin.limb.2") - restHand), 1e-9);
     EXPECT_FALSE(w.session().isRigStale()); // posing never ages the rig
 }

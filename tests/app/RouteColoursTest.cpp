@@ -121,6 +121,10 @@ TEST(RouteColours, TheViewportColoursEachVertexByTheStepThatPlacedItsWeights)
     EXPECT_TRUE(steps->isChecked());
     EXPECT_TRUE(e.window.isShowingRoutes());
 
+    // Only the meshes: a controller drawn over a sampled point (the elbow's pin,
+    // the right side's hue-turned colours) is no vertex colour.
+    e.window.action("display:controllers")->setChecked(false);
+    e.window.action("display:skinJoints")->setChecked(false);
     viewport::ViewportWidget* view = e.window.viewportWidget();
     view->frameAll();
     QApplication::processEvents();
