@@ -97,7 +97,7 @@ std::optional<RigNodeIndex> Rig::find(const NodeKey& key) const
 
 std::optional<RigNodeIndex> Rig::findPath(std::string_view path) const
 {
-    auto it = byPath.find(path);
+    auto it = byPath.find(std::string(path));
     if (it == byPath.end())
         return std::nullopt;
     return it->second;

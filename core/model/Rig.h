@@ -145,7 +145,7 @@ struct Rig {
     std::vector<RigConstraint> constraints; // in build order; the evaluator orders them by dependency
     std::map<std::string, std::vector<RigNodeIndex>> sets; // "controllers": every animatable controller
     std::unordered_map<NodeKey, RigNodeIndex> byKey;
-    std::map<std::string, RigNodeIndex, std::less<>> byPath;
+    std::unordered_map<std::string, RigNodeIndex> byPath;
     Diagnostics diagnostics;
 
     std::optional<RigNodeIndex> find(const NodeKey& key) const;

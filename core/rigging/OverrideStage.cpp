@@ -1,8 +1,10 @@
 // The one build stage that applies the rigger's overrides (model/Override.h)
-// to a generated rig. It runs after the template shapes exist and before the
-// virtual hierarchy, local matrices and the generator plugins (so a display
-// name override is checked for clashes, and the evaluation check sees the
-// final channels). A kind switched off by the build's restore toggles is
+// to a generated rig, in two halves. Channels, display names and the post
+// transform come first, before the evaluation program compiles and before the
+// generator plugins (so a display name override is checked for clashes, and the
+// evaluation check sees the final channels). Shape edits (after the template
+// shapes) and the mirrored copies' curves come second, beside the compile,
+// which reads no curve. A kind switched off by the build's restore toggles is
 // left as the templates make it; its records stay in the guide.
 #include "rigging/RigAssembly.h"
 #include "rigging/RigBuilder.h"
@@ -31,7 +33,7 @@ struct Stage {
     const model::GuideDocument& guide; // the authored guide: its overrides and names
     const model::RestoreToggles& restore;
     const std::set<CopyKey>& mirrored; // copies that take their twin's curves
-    const std::function<void()>& afterShapes;
+    std::set<NodeKey>& applied;        // records that found their node
 
     void warn(const NodeKey& key, const std::string& message)
     {
@@ -70,7 +72,7 @@ struct Stage {
     }
 
     // The node's own record, else its instance's authored side's (branch "").
-    const std::pair<const NodeKey, model::Override>* shapeRecordFor(const model::RigNode& node, std::set<NodeKey>& applied)
+    const std::pair<const NodeKey, model::Override>* shapeRecordFor(const model::RigNode& node)
     {
         for (const NodeKey& key : {node.key, NodeKey{node.key.instance, {}, node.key.tag}}) {
             auto it = guide.overrides.find(key);
@@ -82,12 +84,12 @@ struct Stage {
         return nullptr;
     }
 
-    void applyShapes(std::set<NodeKey>& applied)
+    void applyShapes()
     {
         for (auto& node : rig.nodes) {
             if (node.kind != model::RigNodeKind::Controller || node.key.isRoot())
                 continue;
-            const auto* record = shapeRecordFor(node, applied);
+            const auto* record = shapeRecordFor(node);
             if (record && restore.restores(model::OverrideKind::Shapes) && !mirrored.count(node.key.copy()))
                 applyShape(node, record->first, *record->second.shape);
         }
@@ -143,12 +145,10 @@ struct Stage {
             node.worldMatrix = m * node.worldMatrix;
     }
 
-    void run()
+    // Channels (defaults, limits, locks), display names and the post transform:
+    // what the evaluation program reads.
+    void applyRig(Mat4* post)
     {
-        std::set<NodeKey> applied;
-        applyShapes(applied); // with the kind off, it only notes which records have a node
-        if (afterShapes)
-            afterShapes();
         for (const auto& [key, o] : guide.overrides) {
             const auto index = rig.find(key);
             if (!index)
@@ -158,15 +158,17 @@ struct Stage {
             applyChannels(node, key, o);
             if (o.displayName && restore.restores(model::OverrideKind::Names))
                 node.name = *o.displayName;
-            if (o.post && key.isRoot() && restore.restores(model::OverrideKind::Post))
+            if (o.post && key.isRoot() && restore.restores(model::OverrideKind::Post)) {
                 applyPost(*o.post);
+                if (post)
+                    *post = o.post->matrix() * *post;
+            }
         }
-        reportOrphans(applied);
     }
 
     // Records whose node this build does not make: reported and kept (a
     // rebuild that brings the node back applies them again).
-    void reportOrphans(const std::set<NodeKey>& applied)
+    void reportOrphans()
     {
         for (const auto& [key, o] : guide.overrides) {
             if (applied.count(key) || o.isEmpty())
@@ -196,16 +198,30 @@ model::PoseValues restoredPose(const model::GuideDocument& guide, const model::R
 void applyOverrides(model::Rig& rig, const model::GuideDocument& guide, const model::RestoreToggles& restore,
                     const std::set<CopyKey>& mirroredCopies, const std::function<void()>& afterShapes)
 {
-    Stage{rig, guide, restore, mirroredCopies, afterShapes}.run();
+    std::set<NodeKey> applied;
+    Stage stage{rig, guide, restore, mirroredCopies, applied};
+    stage.applyShapes(); // with the kind off, it only notes which records have a node
+    if (afterShapes)
+        afterShapes();
+    stage.applyRig(nullptr);
+    stage.reportOrphans();
 }
 
-void applyOverrides(RigAssembly& a, const model::GuideDocument& guide, const model::RestoreToggles& restore)
+void applyRigOverrides(RigAssembly& a, const model::GuideDocument& guide, const model::RestoreToggles& restore)
 {
-    std::set<CopyKey> mirrored;
+    a.mirroredCopies.clear();
     for (const InstanceRecord& r : a.records)
         if (const BranchCopy& copy = a.copyOf(r.instance->id); copy.mirror != Mat4(1.0))
-            mirrored.insert(CopyKey{copy.original, copy.branch()});
-    applyOverrides(a.rig, guide, restore, mirrored, [&a] { mirrorBranchShapes(a); });
+            a.mirroredCopies.insert(CopyKey{copy.original, copy.branch()});
+    Stage{a.rig, guide, restore, a.mirroredCopies, a.appliedOverrides}.applyRig(&a.post);
+}
+
+void applyShapeOverrides(RigAssembly& a, const model::GuideDocument& guide, const model::RestoreToggles& restore)
+{
+    Stage stage{a.rig, guide, restore, a.mirroredCopies, a.appliedOverrides};
+    stage.applyShapes();
+    mirrorBranchShapes(a);
+    stage.reportOrphans();
 }
 
 } // namespace rs::rigging

@@ -53,28 +53,40 @@ public:
     const char* name() const override { return "naming checks"; }
     void finalize(RigAssembly& a) const override
     {
-        // Node indices by name (then by index): a clash is a run of equal names.
-        // Sorting indices is cheaper than a map of names (this runs on every live rebuild).
-        std::vector<model::RigNodeIndex> byName(a.rig.nodes.size());
-        for (model::RigNodeIndex i = 0; i < byName.size(); ++i) {
-            byName[i] = i;
-            const auto& n = a.rig.nodes[i];
-            if (i != 0 && !portable(n.name))
-                a.report(Severity::Warning, nullptr, "node name '" + n.name + "' (" + n.path +
+        // Clashes by name hash first (integer compares; this runs on every live
+        // rebuild), then by the names within one hash; reported in name order.
+        const auto& nodes = a.rig.nodes;
+        std::vector<std::pair<std::size_t, model::RigNodeIndex>> byHash(nodes.size());
+        for (model::RigNodeIndex i = 0; i < nodes.size(); ++i) {
+            byHash[i] = {std::hash<std::string>{}(nodes[i].name), i};
+            if (i != 0 && !portable(nodes[i].name))
+                a.report(Severity::Warning, nullptr, "node name '" + nodes[i].name + "' (" + nodes[i].path +
                                                          ") is not portable: use letters, digits and '_', not starting with a digit");
         }
-        const auto& nodes = a.rig.nodes;
-        std::stable_sort(byName.begin(), byName.end(),
-                         [&](model::RigNodeIndex x, model::RigNodeIndex y) { return nodes[x].name < nodes[y].name; });
-        for (std::size_t first = 0, last = 0; first < byName.size(); first = last) {
-            for (last = first + 1; last < byName.size() && nodes[byName[last]].name == nodes[byName[first]].name;)
+        std::sort(byHash.begin(), byHash.end());
+        std::vector<std::vector<model::RigNodeIndex>> clashes;
+        for (std::size_t first = 0, last = 0; first < byHash.size(); first = last) {
+            for (last = first + 1; last < byHash.size() && byHash[last].first == byHash[first].first;)
                 ++last;
             if (last - first < 2)
                 continue;
-            std::string list;
+            std::vector<model::RigNodeIndex> same; // one hash: group by name, nodes in index order
             for (std::size_t k = first; k < last; ++k)
-                list += (list.empty() ? "" : ", ") + nodes[byName[k]].path;
-            a.report(Severity::Error, nullptr, "name clash: '" + nodes[byName[first]].name + "' is used by " + list);
+                same.push_back(byHash[k].second);
+            std::stable_sort(same.begin(), same.end(), [&](auto x, auto y) { return nodes[x].name < nodes[y].name; });
+            for (std::size_t s = 0, e = 0; s < same.size(); s = e) {
+                for (e = s + 1; e < same.size() && nodes[same[e]].name == nodes[same[s]].name;)
+                    ++e;
+                if (e - s >= 2)
+                    clashes.emplace_back(same.begin() + std::ptrdiff_t(s), same.begin() + std::ptrdiff_t(e));
+            }
+        }
+        std::sort(clashes.begin(), clashes.end(), [&](const auto& x, const auto& y) { return nodes[x[0]].name < nodes[y[0]].name; });
+        for (const auto& clash : clashes) {
+            std::string list;
+            for (model::RigNodeIndex n : clash)
+                list += (list.empty() ? "" : ", ") + nodes[n].path;
+            a.report(Severity::Error, nullptr, "name clash: '" + nodes[clash[0]].name + "' is used by " + list);
         }
     }
 

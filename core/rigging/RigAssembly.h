@@ -8,6 +8,7 @@
 #include "templates/TemplateRegistry.h"
 
 #include <map>
+#include <set>
 #include <optional>
 #include <memory>
 #include <vector>
@@ -54,6 +55,12 @@ struct RigAssembly {
     // The finished rig compiled by the evaluation check (a session takes it
     // through its BuildCache instead of compiling the rig a second time).
     std::optional<Result<eval::RigProgram>> program;
+    // Set by the override stage's first half for its second: the post transform
+    // it applied to every node (the shapes are placed in the guide's frame, so
+    // they undo it), the mirrored branch copies, the records that found a node.
+    Mat4 post{1.0};
+    std::set<CopyKey> mirroredCopies;
+    std::set<NodeKey> appliedOverrides;
     const Resolved& structureTag(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
                                  const std::string& tag)
     {
@@ -100,14 +107,16 @@ struct SampledShape {
 };
 using ShapeSamples = std::map<const templates::Shape*, SampledShape>;
 
-// Stages run by buildRig after generation: the template's shapes, then every
-// override of the guide (OverrideStage.cpp: shape edits first, then the
-// mirrored branch copies take their twins' curves, then channels, names and
-// the post transform), reporting orphans.
+// Stages run by buildRig after generation. The override stage comes in two
+// halves (OverrideStage.cpp): `applyRigOverrides` sets channels, display names
+// and the post transform, which the program compiles from; then, beside the
+// compile, `applyShapes` gives the template shapes, `applyShapeOverrides` the
+// rigger's shape edits and the mirrored branch copies' curves (their twins',
+// reflected), and reports the records that found no node (kept in the guide).
+void applyRigOverrides(RigAssembly& assembly, const model::GuideDocument& guide, const model::RestoreToggles& restore);
 void applyShapes(RigAssembly& assembly, ShapeSamples& samples);
+void applyShapeOverrides(RigAssembly& assembly, const model::GuideDocument& guide, const model::RestoreToggles& restore);
 void mirrorBranchShapes(RigAssembly& assembly);
-// `guide` is the authored guide (its overrides, and instance names for messages).
-void applyOverrides(RigAssembly& assembly, const model::GuideDocument& guide, const model::RestoreToggles& restore);
 void buildVirtualHierarchy(RigAssembly& assembly);
 
 // Cross-cutting work after every instance is built (Rigify's generator plugins):

@@ -394,19 +394,19 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
         if (a.rig.nodes[i].parent == kNoNode)
             a.rig.nodes[i].parent = 0;
-    ShapeSamples samples; // a build without a cache samples its shapes once
-    applyShapes(a, cache ? cache->shapeSamples : samples);
     report(0.88, "overrides");
-    applyOverrides(a, guide, restore);
+    applyRigOverrides(a, guide, restore);
     compensateSegmentScale(a);
-    // The program compiles on another core while the hierarchy and the checks
-    // run here: they write none of what it reads (see compileProgram). The
-    // overrides (defaults, limits, locks, the post transform) come before it.
+    // The program compiles on another core while the shapes, the hierarchy and
+    // the checks run here: they write none of what it reads (see compileProgram).
     // Isolated: while it waits, this thread runs only its own task, never a
     // piece of unrelated parallel work (a skin job's loop) from the shared pool.
+    ShapeSamples samples; // a build without a cache samples its shapes once
     tbb::this_task_arena::isolate([&] {
         tbb::task_group compiling;
         compiling.run([&a] { compileProgram(a); });
+        applyShapes(a, cache ? cache->shapeSamples : samples);
+        applyShapeOverrides(a, guide, restore);
         buildVirtualHierarchy(a);
         computeLocalMatrices(a.rig);
         for (const auto& plugin : builtinPlugins())

@@ -321,6 +321,8 @@ void applyShapes(RigAssembly& a, ShapeSamples& sampled)
     std::vector<PendingClone> clones;
     for (const auto& r : a.records)
         records[a.copyOf(r.instance->id).key()] = &r;
+    const bool moved = a.post != Mat4(1.0);
+    const Mat4 unpost = moved ? glm::inverse(a.post) : Mat4(1.0);
     for (model::RigNodeIndex n = 0; n < a.rig.nodes.size(); ++n) {
         auto& node = a.rig.nodes[n];
         if (node.kind != model::RigNodeKind::Controller)
@@ -353,7 +355,9 @@ void applyShapes(RigAssembly& a, ShapeSamples& sampled)
         Mat4 toController(1.0);
         if (spec) {
             Placer placer(a, r);
-            toController = glm::inverse(node.worldMatrix) * placer.frame(*spec, match.index, node.worldMatrix);
+            // The guide's frame: without the post transform the overrides gave every node.
+            const Mat4 world = moved ? unpost * node.worldMatrix : node.worldMatrix;
+            toController = glm::inverse(world) * placer.frame(*spec, match.index, world);
             if (!spec->axis.empty())
                 toController = toController * Mat4(rotationBetween(Vec3(0, 1, 0), *templates::parseAxis(spec->axis)));
         }
