@@ -36,6 +36,8 @@ void MainWindow::connectOptions()
                 if (set.failed())
                     refreshOptions(); // show the stored value again
             });
+    connect(m_options, &widgets::OptionsEditor::helpRequested, this,
+            [this](const std::string& templateId) { showTemplateHelp(templateId); });
     connect(m_options, &widgets::OptionsEditor::nameEdited, this,
             [this](model::InstanceId id, const std::string& token, const QString& name) {
                 logStatus(m_session.setNameOverride(id, token, name.toStdString()));

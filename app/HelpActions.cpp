@@ -1,8 +1,10 @@
 // MainWindow's Help menu: About, the README and the selected template's help
-// (its description, link and options), shown in one non-modal help window.
+// page (TemplateHelp.h), shown in one non-modal help window; the Options
+// dock's help button opens the same page.
 #include "MainWindow.h"
 
 #include "ActionKit.h"
+#include "TemplateHelp.h"
 #include "base/Paths.h"
 
 #include <QDialog>
@@ -10,6 +12,8 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QTextBrowser>
+#include <QTextDocument>
+#include <QUrl>
 #include <QVBoxLayout>
 
 namespace rs::app {
@@ -18,40 +22,22 @@ namespace {
 
 QString text(const std::string& s) { return QString::fromStdString(s); }
 
-QString parameterRows(const std::vector<templates::Parameter>& parameters)
-{
-    QString rows;
-    for (const templates::Parameter& p : parameters) {
-        QString values = text(formatValue(p.value));
-        if (p.isEnum()) {
-            QStringList labels;
-            for (const auto& [index, label] : p.enumLabels)
-                labels << text(label);
-            values += " (" + labels.join(", ") + ")";
-        } else if (p.min || p.max) {
-            values += QString(" (%1 to %2)").arg(p.min ? QString::number(*p.min) : "-inf", p.max ? QString::number(*p.max) : "inf");
-        }
-        rows += QString("| `%1` | %2 | %3 |\n").arg(text(p.name), values, text(p.help).replace('|', '/'));
-    }
-    return rows;
-}
-
-QString templateHelp(const templates::TemplateManifest& m)
-{
-    QString md = QString("# %1\n\n%2\n\n").arg(text(m.id), text(m.desc));
-    if (!m.help.empty())
-        md += QString("More: <%1>\n\n").arg(text(m.help));
-    for (const auto& [title, parameters] : {std::pair{QObject::tr("Guide parameters"), &m.guides},
-                                             std::pair{QObject::tr("Options"), &m.opts}})
-        if (!parameters->empty())
-            md += QString("## %1\n\n| name | default | help |\n|---|---|---|\n%2\n").arg(title, parameterRows(*parameters));
-    md += QString("\nManifest: `%1`\n").arg(text(m.file));
-    return md;
-}
-
 } // namespace
 
-void MainWindow::showHelpText(const QString& title, const QString& markdown)
+void MainWindow::showTemplateHelp(const std::string& templateId)
+{
+    const auto* manifest = m_session.templates().find(templateId);
+    if (!manifest) {
+        showHelpText(tr("Template help"), tr("Template %1 is not loaded.").arg(text(templateId)));
+        return;
+    }
+    QFile file(text(dataDirectory()) + "/templates/README.md");
+    const QString readme = file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+    const TemplateHelpPage page = templateHelpPage(*manifest, m_session.templates(), readme);
+    showHelpText(tr("Template %1").arg(text(manifest->id)), page.markdown, page.picture);
+}
+
+void MainWindow::showHelpText(const QString& title, const QString& markdown, const QImage& picture)
 {
     auto* dialog = findChild<QDialog*>("helpDialog");
     if (!dialog) { // non-modal: it never blocks the editor (or a test)
@@ -65,7 +51,12 @@ void MainWindow::showHelpText(const QString& title, const QString& markdown)
         layout->addWidget(browser);
     }
     dialog->setWindowTitle(title);
-    dialog->findChild<QTextBrowser*>("helpText")->setMarkdown(markdown);
+    auto* browser = dialog->findChild<QTextBrowser*>("helpText");
+    browser->setMarkdown(markdown); // clears the document's resources: the picture goes in after
+    if (!picture.isNull()) {
+        browser->document()->addResource(QTextDocument::ImageResource, QUrl(kTemplatePictureUrl), picture);
+        browser->document()->markContentsDirty(0, browser->document()->characterCount());
+    }
     dialog->show();
     dialog->raise();
 }
@@ -78,13 +69,12 @@ void MainWindow::createHelpActions()
     templateHelpAction->setToolTip(tr("The selected template's description and options (F1)"));
     connect(templateHelpAction, &QAction::triggered, this, [this] {
         const auto* instance = m_session.document().instance(m_session.selection().instance);
-        const auto* manifest = instance ? m_session.templates().find(instance->templateId) : nullptr;
-        if (!manifest) {
+        if (!instance) {
             showHelpText(tr("Template help"), tr("Select a template instance (in the outliner or the viewport) to read "
                                                  "its template's help."));
             return;
         }
-        showHelpText(tr("Template %1").arg(text(manifest->id)), templateHelp(*manifest));
+        showTemplateHelp(instance->templateId);
     });
     QAction* readme = makeAction(this, "helpReadme", tr("&README"), {});
     connect(readme, &QAction::triggered, this, [this] {

@@ -6,6 +6,7 @@
 #include "SceneCharacter.h"
 
 #include <QElapsedTimer>
+#include <QImage>
 #include <QMainWindow>
 
 #include <functional>
@@ -143,7 +144,9 @@ private:
     void finishRefit();
     void connectTransformPanel(); // TransformWiring.cpp
     void refreshTransformPanel();
-    void showHelpText(const QString& title, const QString& markdown);
+    void showHelpText(const QString& title, const QString& markdown, const QImage& picture = {});
+    // The template's help page (TemplateHelp.h) in the help window.
+    void showTemplateHelp(const std::string& templateId);
     void showError(const QString& title, const QString& text);
     void createDocks();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area);

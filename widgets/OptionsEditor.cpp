@@ -97,7 +97,19 @@ OptionsEditor::OptionsEditor(QWidget* parent) : QWidget(parent)
     auto* layout = new QVBoxLayout(this);
     m_title = new QLabel(tr("Select a template instance to edit its options"), this);
     m_title->setWordWrap(true);
-    layout->addWidget(m_title);
+    auto* header = new QHBoxLayout;
+    header->addWidget(m_title, 1);
+    m_help = new QToolButton(this);
+    m_help->setObjectName("templateHelp");
+    m_help->setText("?");
+    m_help->setToolTip(tr("The template's help page: what it builds, a picture, its hooks and options (F1)"));
+    m_help->setEnabled(false);
+    connect(m_help, &QToolButton::clicked, this, [this] {
+        if (!m_templateId.empty())
+            emit helpRequested(m_templateId);
+    });
+    header->addWidget(m_help, 0, Qt::AlignTop);
+    layout->addLayout(header);
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
     m_scroll->setFrameShape(QFrame::NoFrame);
@@ -113,6 +125,8 @@ QWidget* OptionsEditor::editorFor(const std::string& name) const
 void OptionsEditor::setInstance(const model::TemplateInstance* instance, const templates::TemplateManifest* manifest)
 {
     m_instance = instance ? instance->id : model::kNoId;
+    m_templateId = manifest ? manifest->id : std::string();
+    m_help->setEnabled(manifest != nullptr);
     m_editors.clear();
     m_marks.clear();
     m_body = new QWidget; // a fresh page; setWidget below deletes the previous one

@@ -9,7 +9,8 @@
 // turns the field red with the error in place of the range. `help` is the tooltip;
 // values that differ from the default are shown bold with a reset button.
 // A "Names" group lists the manifest's name tokens with the instance's
-// overrides (placeholder: the default name). Edits are not applied here:
+// overrides (placeholder: the default name). The "?" button asks for the
+// template's help page. Edits are not applied here:
 // optionEdited / nameEdited go to the owner, which makes each one undo step.
 #include "model/GuideDocument.h"
 #include "templates/Manifest.h"
@@ -21,6 +22,7 @@ class QFormLayout;
 class QHBoxLayout;
 class QLabel;
 class QScrollArea;
+class QToolButton;
 class QVBoxLayout;
 
 namespace rs::widgets {
@@ -45,6 +47,8 @@ signals:
     void optionEdited(rs::model::InstanceId instance, const std::string& name, const rs::Value& value);
     // An empty name removes the override.
     void nameEdited(rs::model::InstanceId instance, const std::string& token, const QString& name);
+    // The header's "?" button: the shown template's help page is wanted.
+    void helpRequested(const std::string& templateId);
 
 private:
     void addParameter(QFormLayout* form, const templates::Parameter& parameter, const Value& value);
@@ -55,6 +59,8 @@ private:
 
     model::InstanceId m_instance = model::kNoId;
     QLabel* m_title = nullptr;
+    QToolButton* m_help = nullptr;
+    std::string m_templateId;
     QScrollArea* m_scroll = nullptr;
     QWidget* m_body = nullptr;
     std::map<std::string, QWidget*> m_editors;
