@@ -42,6 +42,7 @@ const BuilderRegistry& BuilderRegistry::builtin()
         r.add("world.character", makeWorldBuilder());
         r.add("world.prop", makeWorldBuilder());
         r.add("core.xform", makeXformBuilder());
+        r.add("core.bones", makeBoneChainBuilder());
         r.add("spine.torso", makeSpineBuilder());
         r.add("neck.head", makeNeckBuilder());
         r.add("arm.limb", makeLimbBuilder(LimbKind::Arm));

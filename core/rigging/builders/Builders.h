@@ -10,6 +10,9 @@ std::unique_ptr<TemplateBuilder> makeWorldBuilder();
 // core.joints (and the fallback for modules without a builder): an FK chain,
 // one offset group, controller and skin joint per guide joint.
 std::unique_ptr<TemplateBuilder> makeJointChainBuilder();
+// core.bones: a bone per segment aimed at the next guide joint, the last guide
+// joint a tip hook without a controller.
+std::unique_ptr<TemplateBuilder> makeBoneChainBuilder();
 // core.xform: one controller (or locator) with an optional skin joint, for props.
 std::unique_ptr<TemplateBuilder> makeXformBuilder();
 // spine.torso: COG, hips, FK spine, IK-style torso (hips, chest) blended per joint.

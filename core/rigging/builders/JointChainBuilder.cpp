@@ -85,8 +85,84 @@ public:
     }
 };
 
+// core.bones: one bone per segment (chain[:-1]): each controller and skin
+// joint sits on its guide joint with +Y aimed at the next guide joint (the
+// guide's own Z kept as the up direction where it can be), as a bone is drawn
+// and exported; the last guide joint is the tip, a hook without a controller.
+class BoneChainBuilder final : public TemplateBuilder {
+public:
+    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest& manifest,
+                                            const std::map<std::string, Value>& guides) const override
+    {
+        return JointChainBuilder().createGuide(manifest, guides);
+    }
+
+    bool gather(const BuildContext& ctx) const override
+    {
+        auto chain = chainOf(ctx);
+        if (!chain)
+            return false;
+        if (chain->size() < 2) {
+            ctx.error("core.bones needs at least two guide joints (a bone goes from one to the next)");
+            return false;
+        }
+        return JointChainBuilder().gather(ctx);
+    }
+
+    void generate(BuildContext& ctx) const override
+    {
+        const auto chain = *chainOf(ctx);
+        const bool controllers = ctx.optionBool("do_ctrl");
+        const bool skin = ctx.optionBool("do_skin");
+        model::RigNodeIndex parent = ctx.hookNode();
+        for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+            const std::string index = std::to_string(i);
+            const int number = static_cast<int>(i) + 1;
+            const Mat4 frame = boneFrame(ctx.guideWorldMatrix(chain[i]), translationOf(ctx.guideWorldMatrix(chain[i + 1])));
+            const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, ctx.nodeName(model::NameRole::Offset, "", number), parent, frame);
+            model::RigNodeIndex driver = offset;
+            if (controllers)
+                driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
+            if (skin)
+                ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
+            ctx.setHook(chain[i], driver);
+            parent = driver;
+        }
+        const Mat4 tipFrame = rigidFrame(ctx.guideWorldMatrix(chain.back()));
+        const auto tip = ctx.createNode(model::RigNodeKind::Group, "hooks.tip", ctx.nodeName(model::NameRole::Offset, "tip"), parent,
+                                        translationMatrix(translationOf(tipFrame)) * Mat4(Mat3(ctx.node(parent).worldMatrix)));
+        ctx.setHook(chain.back(), tip);
+    }
+
+private:
+    // +Y from `from`'s position to `to`; X and Z turned from the guide's own
+    // axes (the smallest turn), so a chain's twist follows its guides.
+    static Mat4 boneFrame(const Mat4& from, const Vec3& to)
+    {
+        const Mat4 rigid = rigidFrame(from);
+        const Vec3 origin = translationOf(rigid);
+        const Vec3 direction = to - origin;
+        if (glm::length(direction) < 1e-9)
+            return rigid;
+        const Vec3 y = glm::normalize(direction);
+        const Vec3 guideY = glm::normalize(Vec3(rigid[1]));
+        const double d = glm::dot(guideY, y);
+        Mat3 turn(1.0);
+        if (d < -1.0 + 1e-12) {
+            turn = glm::mat3_cast(glm::angleAxis(glm::pi<double>(), glm::normalize(Vec3(rigid[2]))));
+        } else {
+            turn = glm::mat3_cast(Quat(guideY, y));
+        }
+        const Mat3 axes = turn * Mat3(rigid);
+        Mat4 out(axes);
+        out[3] = Vec4(origin, 1.0);
+        return out;
+    }
+};
+
 } // namespace
 
 std::unique_ptr<TemplateBuilder> makeJointChainBuilder() { return std::make_unique<JointChainBuilder>(); }
+std::unique_ptr<TemplateBuilder> makeBoneChainBuilder() { return std::make_unique<BoneChainBuilder>(); }
 
 } // namespace rs::rigging
