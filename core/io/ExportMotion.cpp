@@ -233,7 +233,20 @@ bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::
                ExportScene& scene)
 {
     const Sampler sampler{scene, nodes};
-    if (options.pose) {
+    if (!options.pose) {
+        // The rig's default values (what reset returns to, the rigger's "set as
+        // default" overrides included) are the pose the file's nodes rest in.
+        // The bind stays the build's rest; nodes the defaults leave in place
+        // keep their bind transform exactly.
+        eval::EvalState state = program.makeState();
+        program.evaluate(program.channels().defaults(), state);
+        for (std::size_t j = 0; j < scene.joints.size(); ++j)
+            if (const Mat4 local = sampler.jointLocal(j, state); maxAbsDifference(local, scene.joints[j].poseLocal) > 1e-9)
+                scene.joints[j].poseLocal = local;
+        for (std::size_t c = 0; c < scene.controllers.size(); ++c)
+            if (const Mat4 local = sampler.controllerLocal(c, state); maxAbsDifference(local, scene.controllers[c].poseLocal) > 1e-9)
+                scene.controllers[c].poseLocal = local;
+    } else {
         eval::EvalState state = program.makeState();
         program.evaluate(eval::poseFromValues(rig, program.channels(), *options.pose), state);
         for (std::size_t j = 0; j < scene.joints.size(); ++j)

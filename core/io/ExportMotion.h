@@ -19,7 +19,8 @@ struct SceneNodes {
     std::vector<model::RigNodeIndex> joints, controllers;
 };
 
-// Applies options.pose and adds the range of motion (options.rangeOfMotion);
+// Puts the rig's default values (or options.pose) on the nodes and adds the
+// range of motion (options.rangeOfMotion);
 // false when cancelled through options.progress.
 bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::RigProgram& program, const SceneNodes& nodes,
                ExportScene& scene);

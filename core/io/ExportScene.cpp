@@ -189,13 +189,16 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
         nodes.joints.push_back(joint.node);
     if (options.controllers)
         addControllers(rig, scene, nodes.controllers);
-    if (options.pose || options.rangeOfMotion) {
-        auto program = eval::RigProgram::compile(rig);
-        if (!program) {
-            Diagnostics d = program.takeDiagnostics();
-            out.report.insert(out.report.end(), d.begin(), d.end());
-            return out;
-        }
+    // Compiled for the pose, the range of motion and the default values the
+    // nodes rest in; a rig that does not evaluate exports its build rest unless
+    // a pose or a clip was asked for.
+    auto program = eval::RigProgram::compile(rig);
+    if (!program && (options.pose || options.rangeOfMotion)) {
+        Diagnostics d = program.takeDiagnostics();
+        out.report.insert(out.report.end(), d.begin(), d.end());
+        return out;
+    }
+    if (program) {
         if (!addMotion(rig, options, *program, nodes, scene)) {
             out.cancelled = true;
             return out;

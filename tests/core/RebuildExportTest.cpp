@@ -3,6 +3,7 @@
 // edits that were undone (the incremental build replays cached fragments).
 #include "core/FbxReader.h"
 #include "core/TestSupport.h"
+#include "io/ExportScene.h"
 #include "io/GuideFile.h"
 #include "io/RigExport.h"
 #include "model/Override.h"
@@ -66,6 +67,42 @@ TEST(RebuildExport, AFreshBuildAndASessionRebuildExportByteIdenticalGlbAndFbx)
         ASSERT_GT(a.size(), 10000u);
         EXPECT_TRUE(a == b) << "the session's rebuild exports other bytes than a fresh build";
     }
+}
+
+
+// The seed's "controller default values": what the rig resets to is what the
+// exported nodes rest in; the bind (inverse bind matrices) stays the build's rest.
+TEST(RebuildExport, DefaultValuesAreThePoseTheExportedNodesRestIn)
+{
+    model::GuideDocument doc = io::readGuideFile(test::samplePath("biped")).take();
+    io::ExportOptions options;
+    options.controllers = true;
+    const model::Rig plain = rigging::buildRig(doc, test::builtinTemplates());
+    const io::PreparedExport before = io::prepareExport(plain, options);
+    ASSERT_TRUE(before.scene) << formatAll(before.report);
+    for (const io::ExportJoint& joint : before.scene->joints)
+        EXPECT_TRUE(joint.poseLocal == joint.bindLocal) << joint.name << ": no default moves it, so it rests at its bind exactly";
+
+    const NodeKey move{doc.instanceNamed("world")->id, "", "ctrls.move"};
+    doc.overrides[move].defaults["ty"] = 0.3;
+    const model::Rig rig = rigging::buildRig(doc, test::builtinTemplates());
+    const io::PreparedExport after = io::prepareExport(rig, options);
+    ASSERT_TRUE(after.scene) << formatAll(after.report);
+    ASSERT_EQ(after.scene->joints.size(), before.scene->joints.size());
+    const io::ExportJoint& root = after.scene->joints.front();
+    EXPECT_TRUE(root.bindWorld == before.scene->joints.front().bindWorld) << "the bind is the build's rest";
+    EXPECT_NEAR(translationOf(root.poseLocal).y - translationOf(root.bindLocal).y, 0.3, 1e-9) << root.name;
+    for (std::size_t j = 1; j < after.scene->joints.size(); ++j)
+        EXPECT_LT(maxAbsDifference(after.scene->joints[j].poseLocal, before.scene->joints[j].poseLocal), 1e-9)
+            << after.scene->joints[j].name << ": below the root, nothing else moved";
+    const std::string moveName = rig.nodes[*rig.find(move)].name;
+    bool found = false;
+    for (const io::ExportController& c : after.scene->controllers)
+        if (c.name == moveName) {
+            found = true;
+            EXPECT_NEAR(translationOf(c.poseLocal).y, 0.3, 1e-9) << "the move controller rests at its default";
+        }
+    EXPECT_TRUE(found) << moveName;
 }
 
 } // namespace
