@@ -5,7 +5,9 @@
 // files must agree within TOLERANCE metres at every sample (issue 21 item 2).
 // FBX positions are brought to metres with the file's UnitScaleFactor (cm);
 // the loader itself turns a Z-up file to Y-up.
-// usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE=1e-4]
+// --fbx-keys: the FBX clip's key times are merged in too (a cubic glTF clip
+// has few keys; its FBX is keyed densely: each of those intervals is cut in four).
+// usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE=1e-4] [--fbx-keys]
 // Prints one line per clip and "CHECK three <worst>" on success; exits 1 on any
 // disagreement or a missing clip, joint or track.
 import { readFileSync } from 'node:fs';
@@ -19,7 +21,8 @@ const THREE = await import('three');
 const { GLTFLoader } = await import('three/examples/jsm/loaders/GLTFLoader.js');
 const { FBXLoader } = await import('three/examples/jsm/loaders/FBXLoader.js');
 
-const [glbPath, fbxPath, toleranceArg] = process.argv.slice(2);
+const fbxKeys = process.argv.includes('--fbx-keys');
+const [glbPath, fbxPath, toleranceArg] = process.argv.slice(2).filter((a) => a !== '--fbx-keys');
 if (!glbPath || !fbxPath) {
   console.error('usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE]');
   process.exit(2);
@@ -51,9 +54,10 @@ gltf.scene.traverse((o) => {
 });
 
 // The clip's key times: every track's times, merged.
-function keyTimes(clip) {
+function keyTimes(clip, other) {
   const all = new Set();
-  for (const track of clip.tracks) for (const t of track.times) all.add(Math.round(t * 1e6) / 1e6);
+  for (const c of other ? [clip, other] : [clip])
+    for (const track of c.tracks) for (const t of track.times) all.add(Math.round(t * 1e6) / 1e6);
   return [...all].sort((a, b) => a - b);
 }
 
@@ -82,7 +86,7 @@ for (const clip of gltf.animations) {
     failed = true;
     continue;
   }
-  const times = keyTimes(clip);
+  const times = keyTimes(clip, fbxKeys ? fbxClip : null);
   const playGltf = player(gltf.scene, clip), playFbx = player(fbxRoot, fbxClip);
   let clipWorst = 0, where = '', travel = 0;
   const rest = new Map();
