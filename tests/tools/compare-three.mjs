@@ -7,7 +7,9 @@
 // the loader itself turns a Z-up file to Y-up.
 // --fbx-keys: the FBX clip's key times are merged in too (a cubic glTF clip
 // has few keys; its FBX is keyed densely: each of those intervals is cut in four).
-// usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE=1e-4] [--fbx-keys]
+// --reference REF.json (rigsmith-cli build --reference): both files hold
+// exactly the reference's clips, by name, each as long as it says.
+// usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE=1e-4] [--fbx-keys] [--reference REF.json]
 // Prints one line per clip and "CHECK three <worst>" on success; exits 1 on any
 // disagreement or a missing clip, joint or track.
 import { readFileSync } from 'node:fs';
@@ -21,8 +23,11 @@ const THREE = await import('three');
 const { GLTFLoader } = await import('three/examples/jsm/loaders/GLTFLoader.js');
 const { FBXLoader } = await import('three/examples/jsm/loaders/FBXLoader.js');
 
-const fbxKeys = process.argv.includes('--fbx-keys');
-const [glbPath, fbxPath, toleranceArg] = process.argv.slice(2).filter((a) => a !== '--fbx-keys');
+const argv = process.argv.slice(2);
+const fbxKeys = argv.includes('--fbx-keys');
+const referenceAt = argv.indexOf('--reference');
+const referencePath = referenceAt >= 0 ? argv[referenceAt + 1] : null;
+const [glbPath, fbxPath, toleranceArg] = argv.filter((a, i) => a !== '--fbx-keys' && (referenceAt < 0 || (i !== referenceAt && i !== referenceAt + 1)));
 if (!glbPath || !fbxPath) {
   console.error('usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE]');
   process.exit(2);
@@ -126,5 +131,25 @@ for (const clip of fbxRoot.animations)
     console.error(`ERROR clip ${clip.name} is only in the FBX`);
     failed = true;
   }
+if (referencePath) {
+  const clips = JSON.parse(readFileSync(referencePath, 'utf8')).clips;
+  for (const [kind, animations] of [['glTF', gltf.animations], ['FBX', fbxRoot.animations]]) {
+    if (animations.length !== clips.length) {
+      console.error(`ERROR the ${kind} has ${animations.length} clips, the reference ${clips.length}`);
+      failed = true;
+    }
+    for (const clip of clips) {
+      const found = animations.find((c) => c.name === clip.name);
+      if (!found) {
+        console.error(`ERROR clip ${clip.name} is missing from the ${kind}`);
+        failed = true;
+      } else if (Math.abs(found.duration - clip.seconds) > 1e-3) {
+        console.error(`ERROR the ${kind}'s clip ${clip.name} lasts ${found.duration} s, the reference ${clip.seconds} s`);
+        failed = true;
+      }
+    }
+  }
+  if (!failed) console.log(`clips named and timed as the reference: ${clips.map((c) => `${c.name} ${c.seconds.toFixed(3)} s`).join(', ')}`);
+}
 if (failed) process.exit(1);
 console.log(`CHECK three ${gltf.animations.length} clips, ${samples} samples, worst ${worst.toExponential(2)} m`);
