@@ -8,6 +8,8 @@
 #include "core/FbxReader.h"
 #include "core/TestSupport.h"
 #include "eval/RigProgram.h"
+#include "io/ClipFile.h"
+#include "io/ExportRequest.h"
 #include "io/FbxAnimation.h"
 #include "io/FbxDocument.h"
 #include "io/FbxExport.h"
@@ -334,4 +336,54 @@ TEST(FbxExport, KeyedClipsAreCubicKeysWithUserSlopesOnTheHalfFrameGrid)
     }
     EXPECT_GT(checked, 180u);
     EXPECT_LT(worst, 1e-3) << "degrees between FBX keys";
+}
+
+TEST(ClipFile, ReadsKeyedPosesAsTheGuidesPoseRecords)
+{
+    auto read = io::readClipFile(std::string(RIGSMITH_TEST_DATA) + "/Export/keyed-clip/wave.yml");
+    ASSERT_TRUE(read) << formatAll(read.diagnostics());
+    const io::KeyedClip clip = read.take();
+    const io::KeyedClip expected = armWave().front();
+    EXPECT_EQ(clip.name, expected.name);
+    EXPECT_EQ(clip.times, expected.times);
+    EXPECT_EQ(clip.poses, expected.poses);
+}
+
+TEST(ClipFile, ReportsKeysOutOfOrderAtTheirLine)
+{
+    const std::string path = std::string(RIGSMITH_TEST_DATA) + "/Export/keyed-clip/backwards.yml";
+    auto read = io::readClipFile(path);
+    ASSERT_FALSE(read);
+    EXPECT_NE(formatAll(read.diagnostics()).find("backwards.yml:6:"), std::string::npos) << formatAll(read.diagnostics());
+    EXPECT_NE(formatAll(read.diagnostics()).find("key times must increase"), std::string::npos);
+    auto empty = io::readClipText("rigsmith_clip: 1\nname: x\nkeys: [{time: 0}]\n", "one.yml");
+    ASSERT_FALSE(empty);
+    EXPECT_NE(formatAll(empty.diagnostics()).find("at least two keys"), std::string::npos);
+}
+
+// What `rigsmith-cli build GUIDE --rom --clip wave.yml -o OUT.glb` runs: the
+// range of motion baked and linear, the keyed clip cubic.
+TEST(RigExport, AClipFileExportsBesideTheRangeOfMotionWithCubicKeys)
+{
+    io::ExportRequest request;
+    request.path = test::temporaryPath("clip-file.glb");
+    request.rangeOfMotion = true;
+    request.clips = {std::string(RIGSMITH_TEST_DATA) + "/Export/keyed-clip/wave.yml"};
+    const Diagnostics report = io::runExport(biped(), {}, request);
+    ASSERT_FALSE(hasErrors(report)) << formatAll(report);
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, request.path)) << err;
+    ASSERT_EQ(m.animations.size(), 2u);
+    EXPECT_EQ(m.animations[0].name, "range_of_motion");
+    EXPECT_EQ(m.animations[0].samplers[0].interpolation, "LINEAR");
+    EXPECT_EQ(m.animations[1].name, "wave");
+    for (const auto& sampler : m.animations[1].samplers)
+        EXPECT_EQ(sampler.interpolation, "CUBICSPLINE");
+
+    request.clips = {std::string(RIGSMITH_TEST_DATA) + "/Export/keyed-clip/backwards.yml"};
+    request.path = test::temporaryPath("clip-file-refused.glb");
+    EXPECT_TRUE(hasErrors(io::runExport(biped(), {}, request)));
+    EXPECT_FALSE(std::filesystem::exists(request.path)) << "a bad clip writes nothing";
 }
