@@ -387,3 +387,34 @@ TEST(RigExport, AClipFileExportsBesideTheRangeOfMotionWithCubicKeys)
     EXPECT_TRUE(hasErrors(io::runExport(biped(), {}, request)));
     EXPECT_FALSE(std::filesystem::exists(request.path)) << "a bad clip writes nothing";
 }
+
+// Unreal's FBX is Z-up centimetres: the slopes turn and scale with their
+// values, so the converted curves are the converted clip between keys too.
+TEST(KeyedClip, ConvertedSlopesKeepTheCurveBetweenKeys)
+{
+    const auto clips = armWave();
+    io::ExportScene scene = keyedScene(clips);
+    io::ExportTrack& track = scene.clips.front().tracks.front();
+    for (std::size_t k = 0; k < track.scales.size(); ++k) { // a scale curve too (the arm keeps its scale)
+        track.scales[k] = Vec3(1.0 + 0.1 * double(k), 1.0, 1.0 + 0.2 * double(k * k));
+    }
+    track.scaleSlopes = io::splineSlopes(track.scales, scene.clips.front().times);
+    track.animated |= io::kScaleChannel;
+    track.cubic |= io::kScaleChannel;
+    const io::ExportScene out = io::converted(scene, io::conventionFor(io::ExportPreset::Unreal, true));
+    const Mat4 basis = rotationMatrix(Vec3(1, 0, 0), glm::radians(90.0));
+    const Quat q = glm::quat_cast(Mat3(basis));
+    const auto& times = scene.clips.front().times;
+    for (std::size_t n = 0; n < out.clips.front().tracks.size(); ++n) {
+        const auto& before = scene.clips.front().tracks[n];
+        const auto& after = out.clips.front().tracks[n];
+        for (double time : {0.1, 0.3, 0.55, 0.9}) {
+            const Vec3 t = Mat3(basis) * io::trackTranslationAt(before, times, time) * 100.0;
+            EXPECT_LT(glm::length(io::trackTranslationAt(after, times, time) - t), 1e-9);
+            const Quat r = q * io::trackRotationAt(before, times, time) * glm::conjugate(q);
+            EXPECT_GT(std::abs(glm::dot(io::trackRotationAt(after, times, time), r)), 1.0 - 1e-12);
+            const Vec3 s = glm::abs(Mat3(basis) * io::trackScaleAt(before, times, time));
+            EXPECT_LT(glm::length(io::trackScaleAt(after, times, time) - s), 1e-9) << time;
+        }
+    }
+}
