@@ -38,7 +38,7 @@ std::string usage()
            "                          [-o OUT.glb|OUT.gltf|OUT.fbx] [--preset gltf|unreal|unity] [--controllers] [--rom]\n"
            "                          [--current-pose] [--names unity|MAP.yml] [--fix-names] [--fix-weights] [--force]\n"
            "                          [--proxy-mesh VERTICES] [--no-meshes] [--reference EXPORT.json]\n"
-           "                          [--fps FPS] [--rom-clips markers|per-control] [--no-restore KIND]...\n"
+           "                          [--fps FPS] [--rom-clips markers|per-control] [--clip CLIP.yml]... [--no-restore KIND]...\n"
            "       (--no-restore KIND: build without the guide's overrides of that kind (shapes, defaults, limits,\n"
            "        locks, post, names, pose; repeatable); the records stay in the guide;\n"
            "        --posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
@@ -155,6 +155,12 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
                 return false;
             }
             e.proxyVertices = std::size_t(*n);
+        } else if (a == "--clip" && hasValue) {
+            if (args[i + 1].empty()) {
+                std::cerr << "rigsmith-cli: --clip wants a clip file, not an empty path\n";
+                return false;
+            }
+            e.clips.push_back(args[++i]);
         } else if ((a == "--dump" || a == "-o" || a == "--reference" || a == "--names") && hasValue) {
             if (args[i + 1].empty()) { // an empty path would write nothing and still succeed
                 std::cerr << "rigsmith-cli: " << a << " wants a file path, not an empty one\n";

@@ -227,7 +227,88 @@ void addRangeOfMotion(const model::Rig& rig, const ExportOptions& options, const
     }
 }
 
+// A keyed clip: the rig evaluated at each key, every changing channel cubic
+// with spline slopes (io::KeyedClip).
+ExportClip keyedClip(const model::Rig& rig, const KeyedClip& keyed, const eval::RigProgram& program,
+                     const Sampler& sampler, double framesPerSecond)
+{
+    ExportClip clip;
+    clip.name = keyed.name;
+    clip.framesPerSecond = framesPerSecond; // where the FBX keys its cubic curves
+    clip.times = keyed.times;
+    const ExportScene& scene = sampler.scene;
+    for (std::size_t j = 0; j < scene.joints.size(); ++j)
+        clip.tracks.push_back({int(j), false, {}, {}, {}});
+    for (std::size_t c = 0; c < scene.controllers.size(); ++c)
+        clip.tracks.push_back({int(c), true, {}, {}, {}});
+    eval::EvalState state = program.makeState();
+    for (std::size_t k = 0; k < keyed.poses.size(); ++k) {
+        const Sample sample = sampleAt(keyed.times[k], eval::poseFromValues(rig, program.channels(), keyed.poses[k]),
+                                       program, sampler, state);
+        for (std::size_t n = 0; n < clip.tracks.size(); ++n) {
+            ExportTrack& track = clip.tracks[n];
+            Quat r = sample.rotations[n];
+            if (!track.rotations.empty() && glm::dot(track.rotations.back(), r) < 0.0)
+                r = -r;
+            track.translations.push_back(sample.translations[n]);
+            track.rotations.push_back(r);
+            track.scales.push_back(sample.scales[n]);
+        }
+    }
+    std::vector<ExportTrack> kept;
+    for (auto& track : clip.tracks) {
+        markChannels(track, track.controller ? scene.controllers[std::size_t(track.node)].poseLocal
+                                             : scene.joints[std::size_t(track.node)].poseLocal);
+        if (!(track.animated | track.held))
+            continue;
+        track.cubic = track.animated;
+        track.translationSlopes = splineSlopes(track.translations, clip.times);
+        track.rotationSlopes = splineSlopes(track.rotations, clip.times);
+        track.scaleSlopes = splineSlopes(track.scales, clip.times);
+        kept.push_back(std::move(track));
+    }
+    clip.tracks = std::move(kept);
+    return clip;
+}
+
+// The key interval of `times` holding `time` (clamped to the clip) and how far in it is.
+std::size_t intervalOf(const std::vector<double>& times, double time)
+{
+    const auto after = std::upper_bound(times.begin(), times.end(), time);
+    const std::size_t k = after == times.begin() ? 0 : std::size_t(after - times.begin()) - 1;
+    return std::min(k, times.size() < 2 ? 0 : times.size() - 2);
+}
+
+template <typename T, typename Linear>
+T valueAt(const std::vector<T>& values, const std::vector<T>& slopes, bool cubic, const std::vector<double>& times,
+          double time, Linear linear)
+{
+    if (values.size() < 2 || times.size() < 2)
+        return values.front();
+    const std::size_t k = intervalOf(times, time);
+    const double t = std::clamp(time, times[k], times[k + 1]);
+    if (cubic)
+        return hermite(values[k], slopes[k], values[k + 1], slopes[k + 1], times[k], times[k + 1], t);
+    return linear(values[k], values[k + 1], (t - times[k]) / (times[k + 1] - times[k]));
+}
+
 } // namespace
+
+Quat trackRotationAt(const ExportTrack& track, const std::vector<double>& times, double time)
+{
+    return glm::normalize(valueAt(track.rotations, track.rotationSlopes, (track.cubic & kRotationChannel) != 0, times,
+                                  time, [](const Quat& a, const Quat& b, double f) { return glm::slerp(a, b, f); }));
+}
+Vec3 trackTranslationAt(const ExportTrack& track, const std::vector<double>& times, double time)
+{
+    return valueAt(track.translations, track.translationSlopes, (track.cubic & kTranslationChannel) != 0, times, time,
+                   [](const Vec3& a, const Vec3& b, double f) { return a + (b - a) * f; });
+}
+Vec3 trackScaleAt(const ExportTrack& track, const std::vector<double>& times, double time)
+{
+    return valueAt(track.scales, track.scaleSlopes, (track.cubic & kScaleChannel) != 0, times, time,
+                   [](const Vec3& a, const Vec3& b, double f) { return a + (b - a) * f; });
+}
 
 bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::RigProgram& program, const SceneNodes& nodes,
                ExportScene& scene)
@@ -254,14 +335,23 @@ bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::
         for (std::size_t c = 0; c < scene.controllers.size(); ++c)
             scene.controllers[c].poseLocal = sampler.controllerLocal(c, state);
     }
-    if (!options.rangeOfMotion)
+    auto addKeyed = [&] {
+        if (options.keyedClips)
+            for (const KeyedClip& keyed : *options.keyedClips)
+                scene.clips.push_back(keyedClip(rig, keyed, program, sampler,
+                                                options.framesPerSecond > 0.0 ? options.framesPerSecond : 30.0));
+    };
+    if (!options.rangeOfMotion) {
+        addKeyed();
         return true;
+    }
     const eval::Pose start = options.testPose ? eval::poseFromValues(rig, program.channels(), *options.testPose)
                                               : program.channels().defaults();
     const RangeOfMotionPlan plan = planRangeOfMotion(rig, program, start, options.progress);
     if (plan.keys.empty())
         return false; // cancelled
     addRangeOfMotion(rig, options, program, sampler, scene, plan);
+    addKeyed();
     return !options.progress || options.progress(0.6);
 }
 

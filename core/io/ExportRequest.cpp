@@ -1,6 +1,7 @@
 #include "io/ExportRequest.h"
 
 #include "io/AtomicFile.h"
+#include "io/ClipFile.h"
 #include "io/NameMap.h"
 #include "io/RigExport.h"
 #include "model/Skeleton.h"
@@ -70,6 +71,18 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
     }
     if (!request.names.empty())
         options.names = &names;
+
+    std::vector<KeyedClip> keyed;
+    for (const std::string& path : request.clips) {
+        auto read = readClipFile(path);
+        Diagnostics d = read.diagnostics();
+        report.insert(report.end(), d.begin(), d.end());
+        if (!read)
+            return report;
+        keyed.push_back(read.take());
+    }
+    if (!keyed.empty())
+        options.keyedClips = &keyed;
 
     std::vector<SkinnedMesh> meshes;
     std::vector<ExportMaterial> materials;

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace rs::io {
 
@@ -33,6 +34,7 @@ struct ExportRequest {
     std::string referencePath;      // when set, also writes exportReferenceJson there
     double framesPerSecond = 30.0;  // the range of motion's frame grid (ExportOptions::framesPerSecond)
     bool clipPerControl = false;    // the range of motion as one clip per controller (ExportOptions::clipPerControl)
+    std::vector<std::string> clips; // keyed clip files (io/ClipFile.h), exported with cubic keys
 };
 
 // The character an export carries: the guide's weight records and its models

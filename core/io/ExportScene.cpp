@@ -168,6 +168,17 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
         addUnrealRoot(skeleton, meshes);
 
     out.report = validate(rig, skeleton, meshes, options);
+    if (options.keyedClips)
+        for (const KeyedClip& keyed : *options.keyedClips) {
+            bool increasing = keyed.times.size() >= 2 && keyed.times.size() == keyed.poses.size();
+            for (std::size_t k = 1; increasing && k < keyed.times.size(); ++k)
+                increasing = keyed.times[k] > keyed.times[k - 1];
+            if (!increasing || !(keyed.times.front() >= 0.0)) {
+                out.report.push_back(makeError({}, "clip '" + keyed.name +
+                                                   "' needs at least two keys, one pose per key, at increasing times from 0 s"));
+                return out; // not forceable: there is no clip to write
+            }
+        }
     if (options.preset == ExportPreset::Unity && !options.names) {
         Diagnostics unmapped = checkUnityMap(rig, skeleton);
         out.report.insert(out.report.end(), unmapped.begin(), unmapped.end());
@@ -189,11 +200,12 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
         nodes.joints.push_back(joint.node);
     if (options.controllers)
         addControllers(rig, scene, nodes.controllers);
-    // Compiled for the pose, the range of motion and the default values the
-    // nodes rest in; a rig that does not evaluate exports its build rest unless
-    // a pose or a clip was asked for.
+    // Compiled for the pose, the clips and the default values the nodes rest
+    // in; a rig that does not evaluate exports its build rest unless a pose or
+    // a clip was asked for.
     auto program = eval::RigProgram::compile(rig);
-    if (!program && (options.pose || options.rangeOfMotion)) {
+    const bool motion = options.pose || options.rangeOfMotion || (options.keyedClips && !options.keyedClips->empty());
+    if (!program && motion) {
         Diagnostics d = program.takeDiagnostics();
         out.report.insert(out.report.end(), d.begin(), d.end());
         return out;
@@ -246,6 +258,15 @@ ExportScene converted(ExportScene scene, const Convention& convention)
                 r = q * r * glm::conjugate(q);
             for (auto& sc : track.scales)
                 sc = glm::abs(Mat3(basis) * sc);
+            // Slopes change as their values do (scales are positive: the
+            // permutation's signs are what abs() took off the values).
+            for (auto& t : track.translationSlopes)
+                t = Mat3(basis) * t * s;
+            for (auto& r : track.rotationSlopes)
+                r = q * r * glm::conjugate(q);
+            const Vec3 signs = glm::sign(Mat3(basis) * Vec3(1.0));
+            for (auto& sc : track.scaleSlopes)
+                sc = signs * (Mat3(basis) * sc);
         }
     return scene;
 }

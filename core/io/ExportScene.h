@@ -71,6 +71,22 @@ struct ExportOptions {
     // One clip per exercised controller ("rom_<controller name>", each from
     // time 0) instead of one clip with a marker per controller.
     bool clipPerControl = false;
+    // Authored clips: keyed poses played with cubic (spline) keys
+    // (ExportTrack::cubic), written after the range of motion.
+    const std::vector<struct KeyedClip>* keyedClips = nullptr;
+};
+
+// A clip a rigger keys: poses (channel values relative to the rig's rest, as
+// the test pose) at increasing times. Each node the poses move gets one key
+// per pose with spline tangents (Catmull-Rom: the slope from the previous key
+// to the next; flat at the first and last key), like a DCC's spline keys;
+// the writers keep them cubic (glTF CUBICSPLINE, FBX cubic keys). The rig is
+// evaluated at the keys only, so between keys the export plays the joints'
+// cubic curves, not the rig's own evaluation of interpolated channels.
+struct KeyedClip {
+    std::string name;
+    std::vector<double> times;               // seconds, increasing, at least two
+    std::vector<model::PoseValues> poses;    // one per time
 };
 
 struct ExportJoint {
@@ -113,7 +129,43 @@ struct ExportTrack {
     // ExportChannel bits of channels constant during the clip but different
     // from the node's written transform: write them with one key (the first).
     unsigned held = 0;
+    // Added for issue 21 item 1: ExportChannel bits of the animated channels
+    // whose keys are authored cubic keys (io::KeyedClip), not baked samples:
+    // between keys k and k+1 the value is the cubic Hermite through both
+    // values with these slopes (value per second, one per key, the same on
+    // both sides of a key) - glTF CUBICSPLINE's definition, in which a player
+    // scales the slopes by the key interval. Rotation slopes are derivatives
+    // of the quaternion components (glTF normalises the result); scale and
+    // translation slopes of their components. Other channels are linear.
+    unsigned cubic = 0;
+    std::vector<Vec3> translationSlopes;
+    std::vector<Quat> rotationSlopes;
+    std::vector<Vec3> scaleSlopes;
 };
+
+// The value of a cubic channel at `time` between keys `k` and `k + 1` (glTF's
+// cubic spline: Hermite basis, slopes scaled by the interval).
+template <typename T>
+T hermite(const T& v0, const T& slope0, const T& v1, const T& slope1, double t0, double t1, double time)
+{
+    const double span = t1 - t0, s = (time - t0) / span, s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * v0 + (s3 - 2 * s2 + s) * span * slope0 + (-2 * s3 + 3 * s2) * v1 +
+           (s3 - s2) * span * slope1;
+}
+// Spline (Catmull-Rom) slopes of `values` at `times`: (next - previous) /
+// (their time apart), zero at the ends (the key eases in and out).
+template <typename T>
+std::vector<T> splineSlopes(const std::vector<T>& values, const std::vector<double>& times)
+{
+    std::vector<T> slopes(values.size(), values.empty() ? T() : values.front() * 0.0);
+    for (std::size_t k = 1; k + 1 < values.size(); ++k)
+        slopes[k] = (values[k + 1] + values[k - 1] * -1.0) * (1.0 / (times[k + 1] - times[k - 1]));
+    return slopes;
+}
+// The track's rotation at `time` of clip `times` (normalised; cubic or slerp).
+Quat trackRotationAt(const ExportTrack& track, const std::vector<double>& times, double time);
+Vec3 trackTranslationAt(const ExportTrack& track, const std::vector<double>& times, double time);
+Vec3 trackScaleAt(const ExportTrack& track, const std::vector<double>& times, double time);
 
 // A named frame range of a clip: the part that exercises one controller.
 struct ExportMarker {

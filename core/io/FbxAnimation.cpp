@@ -1,15 +1,24 @@
 // Clips as FBX animation: per clip an AnimationStack with one AnimationLayer;
 // per animated node and transform property (Lcl Translation / Lcl Rotation /
 // Lcl Scaling) an AnimationCurveNode "T" / "R" / "S" whose channels d|X, d|Y,
-// d|Z each get an AnimationCurve. Keys are the clip's samples (baked), so
-// they are declared linear. The clip's flags (ExportTrack::animated / held)
-// say which properties get a curve node, as they say which channels glTF
+// d|Z each get an AnimationCurve. Baked keys (the range of motion's samples)
+// are declared linear. Authored cubic channels (ExportTrack::cubic) are cubic
+// keys with user slopes (value per second): one at each authored key and at
+// every half frame of the clip's rate between them, each key's value and
+// slope the clip's own curve there (exact for translation and scale: a cubic
+// cut at a frame is still that cubic; for rotation the Euler curve through
+// glTF's normalised quaternion spline). Importers that ignore the flags
+// (Blender, three.js, Assimp interpolate linearly) so play the curve within
+// a half frame's chord instead of cutting straight between authored keys.
+// The clip's flags (ExportTrack::animated / held) say which properties get a curve node, as they say which channels glTF
 // gets; within one, a component whose keys all equal the node's own value is
 // omitted (importers fall back to that value). One Take per clip.
 #include "io/FbxAnimation.h"
 #include "io/FbxDocument.h"
 
+#include <algorithm>
 #include <bit>
+#include <tuple>
 #include <cmath>
 
 namespace rs::io::fbx {
@@ -20,6 +29,8 @@ namespace {
 // next left slope, tangent weights/velocities packed as bits (the default
 // 1/3 weights), unused here since the keys are linear.
 constexpr std::int32_t kLinearKeys = 1 << 2;
+// eInterpolationCubic (0x08) | eTangentUser (0x400): the slopes in KeyAttrDataFloat.
+constexpr std::int32_t kCubicUserKeys = 0x08 | 0x400;
 constexpr std::uint32_t kDefaultTangentWeights = 0x0d050505;
 // A channel closer than this to the node's value at every key is constant
 // (degrees for rotations, file units for translations, factors for scales).
@@ -32,6 +43,8 @@ struct Property {
     const char* curveNode; // "T"...
     Vec3 nodeValue;        // the model's own value
     std::vector<Vec3> keys;
+    std::vector<Vec3> slopes;           // cubic keys: one per key (per second); empty: linear
+    std::vector<std::int64_t> times;    // cubic keys' own times (else the clip's)
 };
 
 void addCurve(Document& doc, std::int64_t curveNode, int channel, const std::vector<std::int64_t>& times,
@@ -44,6 +57,7 @@ void addCurve(Document& doc, std::int64_t curveNode, int channel, const std::vec
     bool constant = true;
     for (float v : values)
         constant = constant && std::abs(double(v) - double(values.front())) <= kConstantTolerance;
+    const bool cubic = !constant && property.slopes.size() == values.size();
     if (constant) { // differs from the node's value but never moves: one key
         values.resize(1);
         keyTimes.resize(1);
@@ -54,11 +68,24 @@ void addCurve(Document& doc, std::int64_t curveNode, int channel, const std::vec
     curve.child("KeyVer").addInt32(4008);
     curve.child("KeyTime").addInt64s(keyTimes);
     curve.child("KeyValueFloat").addFloats(values);
-    const std::int32_t flags = kLinearKeys, refCount = std::int32_t(values.size());
-    const float data[4] = {0.f, 0.f, std::bit_cast<float>(kDefaultTangentWeights), 0.f};
-    curve.child("KeyAttrFlags").addInt32s({&flags, 1});
-    curve.child("KeyAttrDataFloat").addFloats(data);
-    curve.child("KeyAttrRefCount").addInt32s({&refCount, 1});
+    if (cubic) { // one attribute per key: its right slope and the next key's left one
+        std::vector<std::int32_t> flags(values.size(), kCubicUserKeys), refCounts(values.size(), 1);
+        std::vector<float> data;
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            const double right = property.slopes[k][channel];
+            const double nextLeft = property.slopes[std::min(k + 1, values.size() - 1)][channel];
+            data.insert(data.end(), {float(right), float(nextLeft), std::bit_cast<float>(kDefaultTangentWeights), 0.f});
+        }
+        curve.child("KeyAttrFlags").addInt32s(flags);
+        curve.child("KeyAttrDataFloat").addFloats(data);
+        curve.child("KeyAttrRefCount").addInt32s(refCounts);
+    } else {
+        const std::int32_t flags = kLinearKeys, refCount = std::int32_t(values.size());
+        const float data[4] = {0.f, 0.f, std::bit_cast<float>(kDefaultTangentWeights), 0.f};
+        curve.child("KeyAttrFlags").addInt32s({&flags, 1});
+        curve.child("KeyAttrDataFloat").addFloats(data);
+        curve.child("KeyAttrRefCount").addInt32s({&refCount, 1});
+    }
     static const char* const kChannels[3] = {"d|X", "d|Y", "d|Z"};
     doc.connect(id, curveNode, kChannels[channel]);
 }
@@ -74,9 +101,10 @@ void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const st
     const bool animated = (track.animated & bit) != 0, held = (track.held & bit) != 0;
     if (!animated && !held)
         return;
-    std::vector<std::int64_t> keyTimes = times;
+    std::vector<std::int64_t> keyTimes = property.slopes.empty() ? times : property.times;
     if (!animated) { // held: the first key is the value
         property.keys.resize(1);
+        property.slopes.clear();
         keyTimes.resize(1);
     }
     bool writes[3] = {false, false, false};
@@ -99,17 +127,93 @@ void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const st
             addCurve(doc, id, c, keyTimes, property);
 }
 
+// Cubic curves are keyed at every half frame: importers that ignore the
+// cubic flags cut straight between keys, and a frame's chord of a brisk arm
+// swing already strays 2 mm at a fingertip (a half frame's a quarter of it).
+constexpr double kCubicKeysPerFrame = 2.0;
+
+// The times a cubic channel of `clip` is keyed at in the FBX: its keys and
+// every half frame of the clip's rate (30 when it has none) between them.
+std::vector<double> cubicKeyTimes(const ExportClip& clip)
+{
+    const double fps = kCubicKeysPerFrame * (clip.framesPerSecond > 0.0 ? clip.framesPerSecond : 30.0);
+    std::vector<double> out;
+    for (std::size_t k = 0; k < clip.times.size(); ++k) {
+        out.push_back(clip.times[k]);
+        if (k + 1 == clip.times.size())
+            break;
+        for (double frame = std::floor(clip.times[k] * fps + 1e-6) + 1.0; frame / fps < clip.times[k + 1] - 1e-6; frame += 1.0)
+            out.push_back(frame / fps);
+    }
+    return out;
+}
+
+// Values and slopes (central differences of the clip's curve; one-sided at
+// the clip's ends) of `at` at `dense` times.
+template <typename At>
+void sampleCubic(const std::vector<double>& dense, const std::vector<double>& clipTimes, At at, std::vector<Vec3>& values,
+                 std::vector<Vec3>& slopes)
+{
+    constexpr double h = 1e-4; // seconds
+    for (double t : dense) {
+        const double before = std::max(t - h, clipTimes.front()), after = std::min(t + h, clipTimes.back());
+        const auto [a, v, b] = at(before, t, after);
+        values.push_back(v);
+        slopes.push_back((b - a) / (after - before));
+    }
+}
+
 void addTrack(Document& doc, std::int64_t layer, std::int64_t model, const Mat4& nodeLocal,
-              const ExportTrack& track, const std::vector<std::int64_t>& times)
+              const ExportTrack& track, const ExportClip& clip, const std::vector<std::int64_t>& times)
 {
     Vec3 t, s;
     Quat r;
     decompose(nodeLocal, t, r, s);
     const Vec3 euler = eulerXyzDegrees(r);
-    addProperty(doc, layer, model, times, {"Lcl Translation", "T", t, track.translations}, kTranslationChannel, track);
-    addProperty(doc, layer, model, times, {"Lcl Rotation", "R", euler, continuousEulerDegrees(track.rotations, euler)},
-                kRotationChannel, track);
-    addProperty(doc, layer, model, times, {"Lcl Scaling", "S", s, track.scales}, kScaleChannel, track);
+    Property translation{"Lcl Translation", "T", t, track.translations, {}, {}};
+    Property rotation{"Lcl Rotation", "R", euler, continuousEulerDegrees(track.rotations, euler), {}, {}};
+    Property scaling{"Lcl Scaling", "S", s, track.scales, {}, {}};
+    if (track.cubic & track.animated) {
+        const std::vector<double> dense = cubicKeyTimes(clip);
+        std::vector<std::int64_t> denseTicks;
+        for (double time : dense)
+            denseTicks.push_back(ticksOf(time - clip.times.front()) + times.front());
+        using Triple = std::tuple<Vec3, Vec3, Vec3>;
+        if (track.cubic & kTranslationChannel) {
+            translation.keys.clear();
+            sampleCubic(dense, clip.times, [&](double a, double v, double b) {
+                return Triple{trackTranslationAt(track, clip.times, a), trackTranslationAt(track, clip.times, v),
+                              trackTranslationAt(track, clip.times, b)};
+            }, translation.keys, translation.slopes);
+            translation.times = denseTicks;
+        }
+        if (track.cubic & kScaleChannel) {
+            scaling.keys.clear();
+            sampleCubic(dense, clip.times, [&](double a, double v, double b) {
+                return Triple{trackScaleAt(track, clip.times, a), trackScaleAt(track, clip.times, v),
+                              trackScaleAt(track, clip.times, b)};
+            }, scaling.keys, scaling.slopes);
+            scaling.times = denseTicks;
+        }
+        if (track.cubic & kRotationChannel) {
+            std::vector<Quat> quats;
+            for (double time : dense)
+                quats.push_back(trackRotationAt(track, clip.times, time));
+            const std::vector<Vec3> eulers = continuousEulerDegrees(quats, euler);
+            std::size_t i = 0;
+            rotation.keys.clear();
+            sampleCubic(dense, clip.times, [&](double a, double, double b) {
+                // The neighbours' Euler triples nearest this key's (no wrap inside a difference).
+                const std::vector<Vec3> near = continuousEulerDegrees(
+                    {trackRotationAt(track, clip.times, a), trackRotationAt(track, clip.times, b)}, eulers[i]);
+                return Triple{near[0], eulers[i++], near[1]};
+            }, rotation.keys, rotation.slopes);
+            rotation.times = denseTicks;
+        }
+    }
+    addProperty(doc, layer, model, times, translation, kTranslationChannel, track);
+    addProperty(doc, layer, model, times, rotation, kRotationChannel, track);
+    addProperty(doc, layer, model, times, scaling, kScaleChannel, track);
 }
 
 } // namespace
@@ -135,9 +239,9 @@ void addClips(Document& doc, const ExportScene& scene, const ModelIds& ids, Node
         for (const ExportTrack& track : clip.tracks) {
             const std::size_t node = std::size_t(track.node);
             if (track.controller)
-                addTrack(doc, layer, ids.controllers[node], scene.controllers[node].poseLocal, track, times);
+                addTrack(doc, layer, ids.controllers[node], scene.controllers[node].poseLocal, track, clip, times);
             else
-                addTrack(doc, layer, ids.joints[node], scene.joints[node].poseLocal, track, times);
+                addTrack(doc, layer, ids.joints[node], scene.joints[node].poseLocal, track, clip, times);
         }
 
         Node& take = takes.child("Take");

@@ -242,9 +242,19 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
     animation.name = clip.name;
     const std::vector<float> times(clip.times.begin(), clip.times.end());
     std::map<std::vector<std::size_t>, int> inputs; // one time accessor per set of kept keys
+    // `slopes`: a cubic channel's slopes per key (every key kept, CUBICSPLINE:
+    // in-tangent, value, out-tangent per key; the slopes are per second, the
+    // player scales them by the key interval).
     auto channel = [&](int node, const char* path, const std::vector<float>& values, int type, std::size_t width,
-                       bool held) {
-        const auto kept = held ? std::vector<std::size_t>{0} : keptKeys(values, width);
+                       bool held, const std::vector<float>* slopes) {
+        std::vector<std::size_t> kept;
+        if (held)
+            kept = {0};
+        else if (slopes)
+            for (std::size_t k = 0; k < values.size() / width; ++k)
+                kept.push_back(k);
+        else
+            kept = keptKeys(values, width);
         auto input = inputs.find(kept);
         if (input == inputs.end()) {
             std::vector<float> keptTimes;
@@ -253,13 +263,21 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
             input = inputs.emplace(kept, b.bounded(keptTimes, TINYGLTF_TYPE_SCALAR, 1)).first;
         }
         std::vector<float> keptValues;
-        for (std::size_t k : kept)
-            keptValues.insert(keptValues.end(), values.begin() + std::ptrdiff_t(k * width),
-                              values.begin() + std::ptrdiff_t((k + 1) * width));
+        auto append = [&](const std::vector<float>& from, std::size_t k) {
+            keptValues.insert(keptValues.end(), from.begin() + std::ptrdiff_t(k * width),
+                              from.begin() + std::ptrdiff_t((k + 1) * width));
+        };
+        for (std::size_t k : kept) {
+            if (slopes)
+                append(*slopes, k);
+            append(values, k);
+            if (slopes)
+                append(*slopes, k);
+        }
         tinygltf::AnimationSampler sampler;
         sampler.input = input->second;
-        sampler.interpolation = "LINEAR";
-        sampler.output = b.accessor(keptValues, TINYGLTF_COMPONENT_TYPE_FLOAT, type, kept.size());
+        sampler.interpolation = slopes ? "CUBICSPLINE" : "LINEAR";
+        sampler.output = b.accessor(keptValues, TINYGLTF_COMPONENT_TYPE_FLOAT, type, kept.size() * (slopes ? 3 : 1));
         animation.samplers.push_back(sampler);
         tinygltf::AnimationChannel c;
         c.sampler = int(animation.samplers.size() - 1);
@@ -269,25 +287,31 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
     };
     for (const auto& track : clip.tracks) {
         const int node = track.controller ? firstController + track.node : track.node;
-        std::vector<float> t, r, s;
-        for (std::size_t k = 0; k < clip.times.size(); ++k) {
-            const Vec3& tv = track.translations[k];
-            const Quat& q = track.rotations[k];
-            const Vec3& sv = track.scales[k];
-            t.insert(t.end(), {float(tv.x), float(tv.y), float(tv.z)});
-            r.insert(r.end(), {float(q.x), float(q.y), float(q.z), float(q.w)});
-            s.insert(s.end(), {float(sv.x), float(sv.y), float(sv.z)});
-        }
-        // Animated channels get every key, held ones their first, constant ones nothing.
-        auto write = [&](unsigned bit, const char* path, const std::vector<float>& values, int type, std::size_t width) {
-            if (track.animated & bit)
-                channel(node, path, values, type, width, false);
-            else if (track.held & bit)
-                channel(node, path, values, type, width, true);
+        auto vec3s = [](const std::vector<Vec3>& from) {
+            std::vector<float> out;
+            for (const Vec3& v : from)
+                out.insert(out.end(), {float(v.x), float(v.y), float(v.z)});
+            return out;
         };
-        write(kTranslationChannel, "translation", t, TINYGLTF_TYPE_VEC3, 3);
-        write(kRotationChannel, "rotation", r, TINYGLTF_TYPE_VEC4, 4);
-        write(kScaleChannel, "scale", s, TINYGLTF_TYPE_VEC3, 3);
+        auto quats = [](const std::vector<Quat>& from) {
+            std::vector<float> out;
+            for (const Quat& q : from)
+                out.insert(out.end(), {float(q.x), float(q.y), float(q.z), float(q.w)});
+            return out;
+        };
+        // Animated channels get every key (cubic ones with their slopes), held
+        // ones their first, constant ones nothing.
+        auto write = [&](unsigned bit, const char* path, const std::vector<float>& values, const std::vector<float>& slopes,
+                         int type, std::size_t width) {
+            const bool cubic = (track.cubic & bit) && slopes.size() == values.size();
+            if (track.animated & bit)
+                channel(node, path, values, type, width, false, cubic ? &slopes : nullptr);
+            else if (track.held & bit)
+                channel(node, path, values, type, width, true, nullptr);
+        };
+        write(kTranslationChannel, "translation", vec3s(track.translations), vec3s(track.translationSlopes), TINYGLTF_TYPE_VEC3, 3);
+        write(kRotationChannel, "rotation", quats(track.rotations), quats(track.rotationSlopes), TINYGLTF_TYPE_VEC4, 4);
+        write(kScaleChannel, "scale", vec3s(track.scales), vec3s(track.scaleSlopes), TINYGLTF_TYPE_VEC3, 3);
     }
     // The clip's frame rate and named ranges, for tools that read extras.
     tinygltf::Value::Array markers;

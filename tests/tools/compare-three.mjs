@@ -5,7 +5,11 @@
 // files must agree within TOLERANCE metres at every sample (issue 21 item 2).
 // FBX positions are brought to metres with the file's UnitScaleFactor (cm);
 // the loader itself turns a Z-up file to Y-up.
-// usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE=1e-4]
+// --fbx-keys: the FBX clip's key times are merged in too (a cubic glTF clip
+// has few keys; its FBX is keyed densely: each of those intervals is cut in four).
+// --reference REF.json (rigsmith-cli build --reference): both files hold
+// exactly the reference's clips, by name, each as long as it says.
+// usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE=1e-4] [--fbx-keys] [--reference REF.json]
 // Prints one line per clip and "CHECK three <worst>" on success; exits 1 on any
 // disagreement or a missing clip, joint or track.
 import { readFileSync } from 'node:fs';
@@ -19,7 +23,11 @@ const THREE = await import('three');
 const { GLTFLoader } = await import('three/examples/jsm/loaders/GLTFLoader.js');
 const { FBXLoader } = await import('three/examples/jsm/loaders/FBXLoader.js');
 
-const [glbPath, fbxPath, toleranceArg] = process.argv.slice(2);
+const argv = process.argv.slice(2);
+const fbxKeys = argv.includes('--fbx-keys');
+const referenceAt = argv.indexOf('--reference');
+const referencePath = referenceAt >= 0 ? argv[referenceAt + 1] : null;
+const [glbPath, fbxPath, toleranceArg] = argv.filter((a, i) => a !== '--fbx-keys' && (referenceAt < 0 || (i !== referenceAt && i !== referenceAt + 1)));
 if (!glbPath || !fbxPath) {
   console.error('usage: node compare-three.mjs FILE.glb FILE.fbx [TOLERANCE]');
   process.exit(2);
@@ -51,9 +59,10 @@ gltf.scene.traverse((o) => {
 });
 
 // The clip's key times: every track's times, merged.
-function keyTimes(clip) {
+function keyTimes(clip, other) {
   const all = new Set();
-  for (const track of clip.tracks) for (const t of track.times) all.add(Math.round(t * 1e6) / 1e6);
+  for (const c of other ? [clip, other] : [clip])
+    for (const track of c.tracks) for (const t of track.times) all.add(Math.round(t * 1e6) / 1e6);
   return [...all].sort((a, b) => a - b);
 }
 
@@ -82,7 +91,7 @@ for (const clip of gltf.animations) {
     failed = true;
     continue;
   }
-  const times = keyTimes(clip);
+  const times = keyTimes(clip, fbxKeys ? fbxClip : null);
   const playGltf = player(gltf.scene, clip), playFbx = player(fbxRoot, fbxClip);
   let clipWorst = 0, where = '', travel = 0;
   const rest = new Map();
@@ -122,5 +131,25 @@ for (const clip of fbxRoot.animations)
     console.error(`ERROR clip ${clip.name} is only in the FBX`);
     failed = true;
   }
+if (referencePath) {
+  const clips = JSON.parse(readFileSync(referencePath, 'utf8')).clips;
+  for (const [kind, animations] of [['glTF', gltf.animations], ['FBX', fbxRoot.animations]]) {
+    if (animations.length !== clips.length) {
+      console.error(`ERROR the ${kind} has ${animations.length} clips, the reference ${clips.length}`);
+      failed = true;
+    }
+    for (const clip of clips) {
+      const found = animations.find((c) => c.name === clip.name);
+      if (!found) {
+        console.error(`ERROR clip ${clip.name} is missing from the ${kind}`);
+        failed = true;
+      } else if (Math.abs(found.duration - clip.seconds) > 1e-3) {
+        console.error(`ERROR the ${kind}'s clip ${clip.name} lasts ${found.duration} s, the reference ${clip.seconds} s`);
+        failed = true;
+      }
+    }
+  }
+  if (!failed) console.log(`clips named and timed as the reference: ${clips.map((c) => `${c.name} ${c.seconds.toFixed(3)} s`).join(', ')}`);
+}
 if (failed) process.exit(1);
 console.log(`CHECK three ${gltf.animations.length} clips, ${samples} samples, worst ${worst.toExponential(2)} m`);
