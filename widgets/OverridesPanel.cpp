@@ -197,6 +197,7 @@ void OverridesPanel::rebuild()
         }
         node->setExpanded(true);
     }
+    m_tree->clearSelection(); // only what was selected before, nothing Qt picks by itself
     for (QTreeWidgetItem* item : reselect)
         item->setSelected(true);
     updateButtons();

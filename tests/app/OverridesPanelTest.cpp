@@ -11,6 +11,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -239,7 +240,8 @@ TEST(OverridesPanel, OrphansAreMarkedRetargetedDeletedAndDeletedAllAtOnce)
     ASSERT_EQ(found.size(), 1);
     list->setCurrentItem(found.front());
     dialog->accept();
-    EXPECT_EQ(t.w.session().history().size(), steps + 1);
+    ASSERT_EQ(t.w.session().history().size(), steps + 1);
+    ASSERT_TRUE(t.w.session().document().overrides.count(t.key(t.left)));
     EXPECT_FALSE(t.w.session().document().overrides.count(gone));
     EXPECT_EQ(t.w.session().document().overrides.at(t.key(t.left)).limits.at("rz"), (model::ChannelLimit{-15.0, 15.0}));
     EXPECT_TRUE(t.compiled(t.left, "tx").locked);
@@ -248,9 +250,11 @@ TEST(OverridesPanel, OrphansAreMarkedRetargetedDeletedAndDeletedAllAtOnce)
 
     // Delete one kind only: select the "locks" row.
     QTreeWidgetItem* applied = panel->itemOf(t.key(t.left));
+    panel->tree()->clearSelection();
     for (int i = 0; i < applied->childCount(); ++i)
         applied->child(i)->setSelected(applied->child(i)->text(0) == "locks");
     QTest::mouseClick(panel->findChild<QPushButton*>("overridesDelete"), Qt::LeftButton);
+    ASSERT_TRUE(t.w.session().document().overrides.count(t.key(t.left))) << "only the locks were deleted";
     EXPECT_FALSE(t.w.session().document().overrides.at(t.key(t.left)).locks.count("tx"));
     EXPECT_TRUE(t.w.session().document().overrides.at(t.key(t.left)).limits.count("rz"));
 
