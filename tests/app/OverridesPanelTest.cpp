@@ -290,6 +290,7 @@ TEST(OverridesPanel, ScreenshotWithTheDockOpen)
     ASSERT_NE(dock, nullptr);
     dock->show();
     dock->raise();
+    t.w.resizeDocks({dock}, {320}, Qt::Vertical);
     QApplication::processEvents();
     const QImage shot = t.w.grab().toImage();
     EXPECT_FALSE(shot.isNull());
