@@ -133,6 +133,7 @@ void MainWindow::createActions()
     edit->addActions({undo, redo});
     QMenu* rig = menuBar()->addMenu(tr("&Rig"));
     rig->addAction(build);
+    createRestoreActions(rig);
     rig->addSeparator();
     rig->addAction(reload);
 

@@ -77,6 +77,9 @@ void MainWindow::follow(const edit::Change& change)
     if (everything || !optionsShown ||
         (!change.preview && !m_optionsEditing && change.hasAny(K::Options | K::Names | K::Instances)))
         refreshOptions();
+    // The Overrides dock: records and, after a build, which are orphans.
+    if (everything || (!change.preview && change.hasAny(K::Overrides | K::Shapes | K::Pose | K::Instances | K::Names | K::Rig)))
+        refreshOverridesPanel();
     if (change.has(K::Rig))
         m_channelBox->invalidate(); // a rebuilt rig has new channel indices
     if (change.has(K::Mode))

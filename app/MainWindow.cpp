@@ -123,6 +123,7 @@ void MainWindow::createDocks()
     QDockWidget* logDock = addDock(m_log, tr("Build log"), "logDock", Qt::BottomDockWidgetArea);
     m_historyView = new widgets::HistoryView(this);
     tabifyDockWidget(logDock, addDock(m_historyView, tr("History"), "historyDock", Qt::BottomDockWidgetArea));
+    createOverridesDock(logDock);
     logDock->raise();
 
     m_channelBox = new widgets::ChannelBox(this);

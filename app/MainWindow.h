@@ -22,7 +22,7 @@ class QMenu;
 class QProgressBar;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; class WeightPaintPanel; class SkinChunkPanel; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; class WeightPaintPanel; class OverridesPanel; class SkinChunkPanel; }
 
 namespace rs::app {
 
@@ -42,6 +42,7 @@ public:
     widgets::TemplateLibrary* templateLibrary() const { return m_library; }
     widgets::TransformPanel* transformPanel() const { return m_transformPanel; }
     widgets::WeightPaintPanel* paintPanel() const { return m_paintPanel; }
+    widgets::OverridesPanel* overridesPanel() const { return m_overridesPanel; }
     const viewport::DisplayOptions& displayOptions() const { return m_display; }
     QAction* action(const QString& objectName) const;
 
@@ -142,6 +143,14 @@ private:
     void applyRouteColours(viewport::Scene& scene);
     void startRefit(session::RefitJob job); // RefitWiring.cpp
     void finishRefit();
+    void createRestoreActions(QMenu* rigMenu); // OverrideWiring.cpp: Rig > Restore on Build
+    void createOverridesDock(QDockWidget* tabWith);
+    void refreshOverridesPanel();
+    void connectChannelOverrides(); // the channel box's Set as Default, Lock, Limit...
+    // The compiled channels named `names` on every selected controller (Rig mode).
+    std::vector<int> selectedChannels(const QStringList& names) const;
+    // A controller's override record for the channel box's marks (null with defaults not restored).
+    const model::Override* channelBoxRecord(model::RigNodeIndex node) const;
     void connectTransformPanel(); // TransformWiring.cpp
     void refreshTransformPanel();
     void showHelpText(const QString& title, const QString& markdown, const QImage& picture = {});
@@ -181,6 +190,7 @@ private:
     widgets::TemplateLibrary* m_library = nullptr;
     widgets::TransformPanel* m_transformPanel = nullptr;
     widgets::WeightPaintPanel* m_paintPanel = nullptr;
+    widgets::OverridesPanel* m_overridesPanel = nullptr;
     std::optional<NodeKey> m_paintJoint; // the painted skin joint, by identity
     skin::Brush m_strokeBrush;           // the stroke under way
     bool m_strokeOpen = false, m_strokeRefused = false;

@@ -96,6 +96,7 @@ void MainWindow::connectRigMode()
     });
     // After a value is entered the keyboard goes back to the viewport: hotkeys and arrow pickwalk work again.
     connect(m_channelBox, &widgets::ChannelBox::editingDone, this, [this] { m_viewport->setFocus(Qt::OtherFocusReason); });
+    connectChannelOverrides();
 }
 
 void MainWindow::refreshScene()
@@ -135,7 +136,7 @@ void MainWindow::refreshScene()
     }
     m_channelBox->showNode(rigMode && m_session.program() ? &m_session.program()->channels() : nullptr,
                            hasNode ? s.node : model::kNoNode, hasNode ? QString::fromStdString(rig->nodes[s.node].name) : QString(),
-                           &m_session.pose());
+                           &m_session.pose(), hasNode ? channelBoxRecord(s.node) : nullptr);
     if (!rig)
         m_status->setText(tr("Guide: %1 templates").arg(m_session.document().instances().size()));
     else

@@ -1,15 +1,19 @@
 #include "ChannelBox.h"
 
+#include "LimitDialog.h"
 #include "WheelGuard.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QStyle>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -43,6 +47,161 @@ ChannelBox::ChannelBox(QWidget* parent) : QWidget(parent)
     m_match->setChecked(true);
     layout->addWidget(m_match);
     layout->addStretch(1);
+    createActions();
+}
+
+void ChannelBox::createActions()
+{
+    auto add = [this](const char* name, const QString& text, const QString& tip, auto slot) {
+        auto* a = new QAction(text, this);
+        a->setObjectName(name);
+        a->setToolTip(tip);
+        connect(a, &QAction::triggered, this, slot);
+        addAction(a);
+        return a;
+    };
+    using A = ChannelAction;
+    add("channelSetDefault", tr("Set as Default"), tr("The selected channels' current values become what Reset returns to (and export writes as rest)"),
+        [this] { emitAction(A::SetDefault); });
+    add("channelResetDefault", tr("Reset to Default"), tr("The selected channels go back to their defaults"),
+        [this] { emitAction(A::ResetDefault); });
+    add("channelLock", tr("Lock"), tr("Lock the selected channels"), [this] { emitAction(A::Lock); });
+    add("channelUnlock", tr("Unlock"), tr("Unlock the selected channels"), [this] { emitAction(A::Unlock); });
+    add("channelKeyable", tr("Make Keyable"), tr("Animators key the selected channels"), [this] { emitAction(A::Keyable); });
+    add("channelNonKeyable", tr("Make Non-keyable"), tr("The selected channels are shown and set, never keyed"),
+        [this] { emitAction(A::NonKeyable); });
+    add("channelLimit", tr("Limit..."), tr("A minimum and maximum for the selected channels"), [this] { openLimitDialog(); });
+    add("channelRemoveLimit", tr("Remove Limit"), tr("The selected channels take any value"), [this] { emitAction(A::RemoveLimit); });
+    auto* separator = new QAction(this);
+    separator->setSeparator(true);
+    addAction(separator);
+}
+
+QAction* ChannelBox::channelAction(const QString& objectName) const
+{
+    for (QAction* a : actions())
+        if (a->objectName() == objectName)
+            return a;
+    return nullptr;
+}
+
+void ChannelBox::emitAction(ChannelAction action)
+{
+    if (!m_selected.isEmpty())
+        emit channelActionRequested(action, selectedChannels());
+}
+
+QStringList ChannelBox::selectedChannels() const
+{
+    QStringList names;
+    for (const auto& [index, label] : m_labels)
+        if (m_selected.contains(label->text()))
+            names << label->text();
+    return names.isEmpty() ? m_selected : names;
+}
+
+void ChannelBox::setSelectedChannels(const QStringList& names)
+{
+    m_selected = names;
+    m_anchor = names.isEmpty() ? QString() : names.back();
+    for (const auto& [index, label] : m_labels) {
+        label->setProperty("selected", m_selected.contains(label->text()));
+        label->style()->unpolish(label);
+        label->style()->polish(label);
+    }
+}
+
+QLabel* ChannelBox::labelFor(int channel) const
+{
+    for (const auto& [index, label] : m_labels)
+        if (index == channel)
+            return label;
+    return nullptr;
+}
+
+void ChannelBox::openLimitDialog()
+{
+    const QStringList names = selectedChannels();
+    if (names.isEmpty() || !m_layout)
+        return;
+    // Start from the first selected channel's limits, else a range around its kind's usual values.
+    double min = -1.0, max = 1.0;
+    for (const auto& [index, label] : m_labels)
+        if (label->text() == names.front()) {
+            const eval::Channel& c = (*m_layout)[index];
+            if (c.limited) { min = c.min; max = c.max; }
+            else if (c.transform >= 3 && c.transform < 6) { min = -90.0; max = 90.0; }
+            else if (c.transform >= 6 && c.transform < 9) { min = 0.01; max = 2.0; }
+        }
+    auto* dialog = new LimitDialog(names.join(", "), min, max, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog, names] {
+        emit limitRequested(names, dialog->minimum(), dialog->maximum());
+    });
+    dialog->open();
+}
+
+bool ChannelBox::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::MouseButtonPress)
+        if (auto* label = qobject_cast<QLabel*>(watched); label && label->property("channelName").isValid()) {
+            auto* mouse = static_cast<QMouseEvent*>(event);
+            clickLabel(label->text(), mouse->modifiers(), mouse->button() == Qt::RightButton);
+            return mouse->button() != Qt::RightButton; // the right button goes on to the context menu
+        }
+    return QWidget::eventFilter(watched, event);
+}
+
+void ChannelBox::clickLabel(const QString& name, Qt::KeyboardModifiers modifiers, bool rightButton)
+{
+    if (rightButton) {
+        if (!m_selected.contains(name))
+            setSelectedChannels({name});
+        return;
+    }
+    if (modifiers & Qt::ShiftModifier && !m_anchor.isEmpty()) {
+        QStringList rows;
+        for (const auto& [index, label] : m_labels)
+            rows << label->text();
+        const int a = int(rows.indexOf(m_anchor)), b = int(rows.indexOf(name));
+        if (a >= 0 && b >= 0) {
+            QStringList range = rows.mid(std::min(a, b), std::abs(a - b) + 1);
+            const QString anchor = m_anchor;
+            setSelectedChannels(range);
+            m_anchor = anchor;
+            return;
+        }
+    }
+    if (modifiers & Qt::ControlModifier) {
+        QStringList names = m_selected;
+        if (!names.removeAll(name))
+            names << name;
+        setSelectedChannels(names);
+        return;
+    }
+    setSelectedChannels({name});
+}
+
+void ChannelBox::decorate(const model::Override* record)
+{
+    for (const auto& [index, label] : m_labels) {
+        const eval::Channel& c = (*m_layout)[index];
+        const std::string name = c.name;
+        const bool overridden = record && record->defaults.count(name);
+        label->setProperty("locked", c.locked);
+        label->setProperty("keyable", c.keyable);
+        label->setProperty("defaultOverridden", overridden);
+        label->setProperty("selected", m_selected.contains(label->text()));
+        QStringList tip;
+        if (c.locked) tip << tr("Locked");
+        if (!c.keyable) tip << tr("Not keyable");
+        if (overridden) tip << tr("Default %1 (set as default; Reset to Default returns here)").arg(record->defaults.at(name));
+        else if (c.transform != eval::kRotateOrderChannel) tip << tr("Default %1").arg(c.defaultValue);
+        if (c.limited) tip << tr("Limits %1 to %2").arg(c.min).arg(c.max);
+        label->setToolTip(tip.join("\n"));
+        label->style()->unpolish(label);
+        label->style()->polish(label);
+    }
 }
 
 void ChannelBox::invalidate()
@@ -61,7 +220,8 @@ QWidget* ChannelBox::editorFor(int channel) const
     return nullptr;
 }
 
-void ChannelBox::showNode(const eval::ChannelLayout* layout, model::RigNodeIndex node, const QString& title, const eval::Pose* pose)
+void ChannelBox::showNode(const eval::ChannelLayout* layout, model::RigNodeIndex node, const QString& title, const eval::Pose* pose,
+                          const model::Override* record)
 {
     if (!layout || node >= layout->nodeCount() || !pose) {
         m_layout = nullptr;
@@ -76,12 +236,14 @@ void ChannelBox::showNode(const eval::ChannelLayout* layout, model::RigNodeIndex
         rebuild(*layout, node);
     }
     m_title->setText(title);
+    decorate(record);
     updateValues(*pose);
 }
 
 void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex node)
 {
     m_editors.clear();
+    m_labels.clear();
     while (QLayoutItem* item = m_grid->takeAt(0)) {
         delete item->widget();
         delete item;
@@ -93,7 +255,12 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
         const eval::Channel& c = layout[i];
         const int row = i - first;
         auto* label = new QLabel(QString::fromStdString(c.name), m_rows);
+        label->setObjectName(QString::fromStdString("channelLabel_" + c.name));
+        label->setProperty("channelName", QString::fromStdString(c.name));
+        label->setCursor(Qt::PointingHandCursor);
+        label->installEventFilter(this);
         m_grid->addWidget(label, row, 0);
+        m_labels.push_back({i, label});
         if (c.isEnum()) {
             auto* combo = new QComboBox(m_rows);
             for (const auto& text : *c.labels)
@@ -114,6 +281,8 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
         spin->setKeyboardTracking(false);
         spin->setEnabled(!c.locked);
         spin->setToolTip(c.locked ? tr("Locked") : QString());
+        if (c.locked)
+            spin->setStyleSheet("QDoubleSpinBox { background: #4a5563; color: #b8c0cc; }");
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double value) {
             if (!m_updating) emit channelEdited(i, value, m_match->isChecked());
         });
@@ -142,6 +311,12 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
         }
     }
     guardWheel(m_rows);
+    // How a name shows its channel's state (decorate sets the properties).
+    m_rows->setStyleSheet("QLabel { padding: 1px 4px; }"
+                          "QLabel[locked=\"true\"] { background: #4a5563; color: #b8c0cc; }"
+                          "QLabel[keyable=\"false\"] { font-style: italic; color: #8a8a8a; }"
+                          "QLabel[defaultOverridden=\"true\"] { font-weight: bold; color: #2aa198; }"
+                          "QLabel[selected=\"true\"] { background: palette(highlight); color: palette(highlighted-text); }");
 }
 
 void ChannelBox::keyPressEvent(QKeyEvent* event)

@@ -131,6 +131,22 @@ Status removeOverride(History& history, const NodeKey& key, const std::string& w
     return push(history, key, Override{}, what.empty() ? "Remove overrides of " + key.tag : what);
 }
 
+Status setOverrides(History& history, const std::map<NodeKey, Override>& records, const std::string& what)
+{
+    SetOverrides::Records from, to;
+    for (const auto& [key, record] : records) {
+        if (const std::string problem = problemOf(key, record); !problem.empty())
+            return Status::refused(problem, key.isRoot() ? Subject{} : Subject::ofNode(key));
+        std::optional<Override> before = current(history.document(), key);
+        std::optional<Override> after = record.isEmpty() ? std::nullopt : std::optional<Override>(record);
+        if (before != after) { from[key] = std::move(before); to[key] = std::move(after); }
+    }
+    if (to.empty())
+        return Status::refused("nothing to change");
+    history.push(std::make_unique<SetOverrides>(std::move(from), std::move(to), what));
+    return {};
+}
+
 Status setShapeEdit(History& history, model::InstanceId id, const std::string& tag, const model::ShapeEdit& edit,
                     const std::string& what)
 {

@@ -8,6 +8,7 @@
 #include "base/Status.h"
 #include "edit/History.h"
 
+#include <map>
 #include <optional>
 #include <string>
 
@@ -22,6 +23,10 @@ Status setOverride(History& history, const NodeKey& key, const model::Override& 
 Status setOverrideKind(History& history, const NodeKey& key, model::OverrideKind kind, const model::Override& from,
                        const std::string& what);
 Status removeOverride(History& history, const NodeKey& key, const std::string& what = {});
+// Sets many nodes' records as one undo step named `what` (an empty record
+// removes its node's). Refused, changing nothing, when any record is bad (as
+// setOverride) or when nothing changes.
+Status setOverrides(History& history, const std::map<NodeKey, model::Override>& records, const std::string& what);
 
 // A controller shape's edit (`tag` as "ctrls.ik") in the controller's space,
 // kept in the shape override of the instance's authored side (branch "");

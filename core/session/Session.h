@@ -332,6 +332,28 @@ public:
     Status setChannelLocked(int channel, bool locked);
     // Limits [min, max] (min <= max), or none (nullopt) to drop the override.
     Status setChannelLimit(int channel, std::optional<model::ChannelLimit> limit);
+    // The channel box's edits on many channels at once (the selected channels
+    // of the selected controllers), one undo step: set as default (the rotate
+    // order is skipped), lock / unlock, keyable / not keyable, limit (enum
+    // channels are skipped; nullopt removes the limit). Refused, changing
+    // nothing, for an unknown channel or when no channel is left to change.
+    enum class ChannelEdit { SetDefault, Lock, Unlock, Keyable, NonKeyable, Limit };
+    Status editChannels(const std::vector<int>& channels, ChannelEdit edit,
+                        std::optional<model::ChannelLimit> limit = std::nullopt);
+    // "Reset to default" on many channels: one pose step.
+    Status resetChannelsToDefault(const std::vector<int>& channels);
+    // Sets many nodes' records as one undo step named `what` (an empty record
+    // removes its node's: "Delete all orphans"); refused when nothing changes.
+    Status setOverrides(const std::map<NodeKey, model::Override>& records, const std::string& what);
+    // Moves `from`'s record onto `to` (a node of the built rig), one undo step;
+    // kinds `to` already has are replaced by the moved ones, the rest kept.
+    // Refused without a record at `from`, for the same key, for a node the rig
+    // does not make, or for a post transform off the rig root.
+    Status retargetOverride(const NodeKey& from, const NodeKey& to);
+    // Why a record is an orphan (the built rig makes no node for it), or
+    // nullopt when it applies or no rig is built. As the build decides: a
+    // shape record of an authored side (branch "") applies to its copies.
+    std::optional<std::string> orphanReason(const NodeKey& key) const;
     // Which override kinds builds restore (all by default); changing them rebuilds.
     void setRestore(const model::RestoreToggles& restore);
     const model::RestoreToggles& restore() const { return m_restore; }
