@@ -2,16 +2,18 @@
 // vertex the query of skin/TransferQuery.h (closest point on triangles or
 // closest neighbours, with the normal filter), then inpainting
 // (skin/TransferInpaint.h) or the smoothing steps. Target vertices are done in
-// slices (progress and cancel between them), each slice in parallel (oneTBB).
+// one parallel loop (oneTBB), progress and cancel between chunks.
 #include "skin/TransferInpaint.h"
 #include "skin/TransferQuery.h"
 
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace rs::skin {
 
@@ -71,24 +73,41 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
     const float matchCosine = float(std::cos(options.inpaintAngleDegrees * 3.14159265358979 / 180.0));
     // Inpainting: the closest points are about a fifth of the work (BM_TransferInpainting), the solve the rest.
     const double queryShare = inpainting ? 0.2 : 1.0;
-    const std::size_t slice = std::max<std::size_t>(16384, n / 50);
-    for (std::size_t first = 0; first < n; first += slice) {
-        const std::size_t last = std::min(n, first + slice);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 1024), [&](const tbb::blocked_range<std::size_t>& range) {
+    // One parallel loop over every target vertex in chunks of kChunk (no
+    // barrier between slices: on a shared machine every barrier waits for
+    // the slowest thread); the calling thread reports progress between its
+    // chunks, every 2%, and a cancel stops the chunks not yet started.
+    constexpr std::size_t kChunk = 1024;
+    const std::size_t step = std::max<std::size_t>(kChunk, n / 50);
+    const auto caller = std::this_thread::get_id();
+    std::atomic<std::size_t> done{0};
+    std::atomic<bool> cancelled{false};
+    std::size_t nextReport = step; // the calling thread's
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, n, kChunk),
+        [&](const tbb::blocked_range<std::size_t>& range) {
+            if (cancelled.load(std::memory_order_relaxed))
+                return;
             Mix mix;
             for (std::size_t v = range.begin(); v != range.end(); ++v) {
                 mix.size = 0;
                 const glm::vec3 normal = needNormals ? glm::normalize(targetNormals[v]) : glm::vec3(0.0f);
                 Hit hit;
-                route[v] = query.transfer(target.positions[v], normal, mix, nearest[v], &hit);
+                route[v] = query.transfer(target.positions[v], normal, mix, nearest[v], inpainting ? &hit : nullptr);
                 slots.store(v, mix, fallbackJoint);
                 if (inpainting) // near, and facing the target's way
                     matched[v] = hit.distance2 <= matchDistance2 && glm::dot(hit.normal, normal) >= matchCosine;
             }
-        });
-        if (options.progress && !options.progress(queryShare * double(last) / double(n)))
-            return Out::failure(makeError({}, "mesh '" + target.name + "': the transfer was cancelled"));
-    }
+            const std::size_t total = done.fetch_add(range.size(), std::memory_order_relaxed) + range.size();
+            if (options.progress && std::this_thread::get_id() == caller && total >= nextReport && total < n) {
+                nextReport = total + step;
+                if (!options.progress(queryShare * double(total) / double(n)))
+                    cancelled = true;
+            }
+        },
+        tbb::simple_partitioner());
+    if (cancelled || (options.progress && !options.progress(queryShare)))
+        return Out::failure(makeError({}, "mesh '" + target.name + "': the transfer was cancelled"));
     Diagnostics notes;
     std::size_t inpainted = 0;
     std::vector<std::uint32_t> inpaintedIds;
