@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 #include <nanoflann.hpp>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -189,15 +190,17 @@ struct NearestPoints::Impl {
             fine.fill(points, lo, extent, fine.cell * std::max(0.25f, std::sqrt(kPointsPerCell / perCell)));
         // Coarser grids for queries off the surface, while a block of cells
         // still holds a small part of the points.
-        for (int level = 1; level < kGrids; ++level) {
-            const Grid& finer = grids.back();
-            if (finer.n[0] <= 3 && finer.n[1] <= 3 && finer.n[2] <= 3)
-                break; // one block is the whole grid: it settles every query
-            const float side = finer.cell * kCoarser;
-            Grid coarse;
-            coarse.fill(points, lo, extent, side);
-            grids.push_back(std::move(coarse));
+        int levels = 1;
+        for (float side = fine.cell; levels < kGrids; ++levels) {
+            const int across = int(std::ceil(std::max({extent.x, extent.y, extent.z}) / side)) + 1;
+            if (across <= 3)
+                break; // one block of the last grid is the whole grid: it settles every query
+            side *= kCoarser;
         }
+        grids.resize(std::size_t(levels));
+        tbb::parallel_for(1, levels, [&](int level) {
+            grids[std::size_t(level)].fill(points, lo, extent, grids[0].cell * std::pow(kCoarser, float(level)));
+        });
     }
 };
 

@@ -4,6 +4,8 @@
 // nearest-point search over the vertices.
 #include "skin/TransferQuery.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <map>
 
@@ -69,25 +71,35 @@ Result<std::shared_ptr<const Data>> buildSource(const std::vector<const SkinChun
     }
     if (d->positions.empty())
         return Out::failure(makeError({}, "no source vertex to transfer weights from"));
-    const std::size_t n = d->positions.size();
-    d->fanOffsets.assign(n + 1, 0);
-    for (std::uint32_t corner : d->triangles)
-        ++d->fanOffsets[corner + 1];
-    for (std::size_t v = 0; v < n; ++v)
-        d->fanOffsets[v + 1] += d->fanOffsets[v];
-    d->fans.resize(d->triangles.size());
-    std::vector<std::uint32_t> fill(d->fanOffsets.begin(), d->fanOffsets.end() - 1);
-    for (std::size_t k = 0; k < d->triangles.size(); ++k)
-        d->fans[fill[d->triangles[k]]++] = std::uint32_t(k / 3);
-    d->faceNormals.resize(d->triangles.size() / 3);
-    for (std::size_t t = 0; t < d->faceNormals.size(); ++t) {
-        const glm::vec3& a = d->positions[d->triangles[3 * t]];
-        const glm::vec3 normal = glm::cross(d->positions[d->triangles[3 * t + 1]] - a, d->positions[d->triangles[3 * t + 2]] - a);
-        const float length = glm::length(normal);
-        d->faceNormals[t] = length > 0.0f ? normal / length : glm::vec3(0.0f);
-        d->geometry.push_back({a, d->positions[d->triangles[3 * t + 1]] - a, d->positions[d->triangles[3 * t + 2]] - a});
-    }
-    d->nearest = std::make_unique<NearestPoints>(d->positions);
+    // The fans and triangle geometry beside the nearest-point grids (both cores).
+    const auto fans = [&d] {
+        const std::size_t n = d->positions.size();
+        d->fanOffsets.assign(n + 1, 0);
+        for (std::uint32_t corner : d->triangles)
+            ++d->fanOffsets[corner + 1];
+        for (std::size_t v = 0; v < n; ++v)
+            d->fanOffsets[v + 1] += d->fanOffsets[v];
+        d->fans.resize(d->triangles.size());
+        std::vector<std::uint32_t> fill(d->fanOffsets.begin(), d->fanOffsets.end() - 1);
+        for (std::size_t k = 0; k < d->triangles.size(); ++k)
+            d->fans[fill[d->triangles[k]]++] = std::uint32_t(k / 3);
+    };
+    const auto geometry = [&d] {
+        d->faceNormals.resize(d->triangles.size() / 3);
+        d->geometry.resize(d->faceNormals.size());
+        for (std::size_t t = 0; t < d->faceNormals.size(); ++t) {
+            const glm::vec3& a = d->positions[d->triangles[3 * t]];
+            const glm::vec3 ab = d->positions[d->triangles[3 * t + 1]] - a, ac = d->positions[d->triangles[3 * t + 2]] - a;
+            const glm::vec3 normal = glm::cross(ab, ac);
+            const float length = glm::length(normal);
+            d->faceNormals[t] = length > 0.0f ? normal / length : glm::vec3(0.0f);
+            d->geometry[t] = {a, ab, ac};
+        }
+    };
+    tbb::parallel_invoke([&] { d->nearest = std::make_unique<NearestPoints>(d->positions); }, [&] {
+        fans();
+        geometry();
+    });
     return Out(std::shared_ptr<const Data>(std::move(d)));
 }
 
