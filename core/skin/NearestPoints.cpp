@@ -3,12 +3,15 @@
 // them: a query's k-th nearest found so far is final once it is nearer than
 // every face of the block of cells searched (faces on the grid's edge bound
 // nothing: no point lies beyond them). A query farther from the points than
-// a cell goes to the KD-tree (a second ring of 98 cells cost more than the
-// tree on a target 1 cm off a 3 mm-spaced source).
+// a cell tries the same in grids of cells two and four times wider; only what
+// those cannot settle goes to the KD-tree (nanoflann). Building that tree
+// took longer (one thread, the others waiting) than the coarser grids cost
+// the queries of a target 12 mm off a 3 mm-spaced source (BM_TransferClosestPoint/1).
 #include "skin/NearestPoints.h"
 
 #include <glm/glm.hpp>
 #include <nanoflann.hpp>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +32,8 @@ struct Cloud {
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, Cloud>, Cloud, 3, std::uint32_t>;
 
 constexpr std::size_t kMaxCells = std::size_t(1) << 24;
-constexpr int kRings = 1;
+constexpr int kGrids = 3;      // grids from fine to coarse before the KD-tree
+constexpr float kCoarser = 2.0f; // each grid's cells this many times wider than the last's
 constexpr float kPointsPerCell = 1.0f; // points per filled cell the grid aims at
 
 // The k best so far, nearest first.
@@ -66,15 +70,9 @@ struct SeededResult {
     float worstDist() const { return best.worst(); }
 };
 
-} // namespace
 
-struct NearestPoints::Impl {
-    std::vector<glm::vec3> points;
-    Cloud cloud;
-    // Built by the first query the grid cannot settle (a target over its source may never need it).
-    mutable std::once_flag treeBuilt;
-    mutable std::unique_ptr<Tree> tree;
-    // The grid: cells[c] .. cells[c + 1] index sorted / sortedIndex.
+// One uniform grid over the points: cells[c] .. cells[c + 1] index sorted / sortedIndex.
+struct Grid {
     glm::vec3 origin{0.0f};
     float cell = 1.0f;
     int n[3] = {1, 1, 1};
@@ -85,7 +83,7 @@ struct NearestPoints::Impl {
     int cellOf(float x, int axis) const { return std::clamp(int(std::floor((x - origin[axis]) / cell)), 0, n[axis] - 1); }
 
     // Cells of side `side` (grown until there are at most kMaxCells), the points sorted into them.
-    void fill(const glm::vec3& lo, const glm::vec3& extent, float side)
+    void fill(const std::vector<glm::vec3>& points, const glm::vec3& lo, const glm::vec3& extent, float side)
     {
         cell = std::max({side, extent.x / 4096.0f, extent.y / 4096.0f, extent.z / 4096.0f, 1e-6f});
         for (;;) {
@@ -117,34 +115,13 @@ struct NearestPoints::Impl {
         }
     }
 
-    void buildGrid()
-    {
-        glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-        for (const glm::vec3& p : points) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
-        const glm::vec3 extent = glm::max(hi - lo, glm::vec3(1e-6f));
-        // First about two cells per point by volume. Points on a surface fill
-        // few of them, crowded: the side then shrinks (as the square root, a
-        // surface's count per cell going as its area) to about kPointsPerCell
-        // per filled cell (1 measured fastest of 0.5, 1, 2 and 4 on the bench).
-        fill(lo, extent, std::cbrt(extent.x * extent.y * extent.z / float(2 * points.size())));
-        std::size_t filled = 0;
-        for (std::size_t c = 0; c + 1 < cells.size(); ++c)
-            filled += cells[c + 1] > cells[c];
-        const float perCell = float(points.size()) / float(std::max<std::size_t>(filled, 1));
-        if (perCell > 1.5f * kPointsPerCell)
-            fill(lo, extent, cell * std::max(0.25f, std::sqrt(kPointsPerCell / perCell)));
-    }
-
-    // The points of the cells from c - r to c + r on each axis: each row of
+    // The points of the cells from c - 1 to c + 1 on each axis: each row of
     // cells along x is one run of `sorted`.
-    void scan(const glm::vec3& q, const int* c, int r, Best& best) const
+    void scan(const glm::vec3& q, const int* c, Best& best) const
     {
-        const int x0 = std::max(c[0] - r, 0), x1 = std::min(c[0] + r, n[0] - 1);
-        for (int z = std::max(c[2] - r, 0); z <= std::min(c[2] + r, n[2] - 1); ++z)
-            for (int y = std::max(c[1] - r, 0); y <= std::min(c[1] + r, n[1] - 1); ++y) {
+        const int x0 = std::max(c[0] - 1, 0), x1 = std::min(c[0] + 1, n[0] - 1);
+        for (int z = std::max(c[2] - 1, 0); z <= std::min(c[2] + 1, n[2] - 1); ++z)
+            for (int y = std::max(c[1] - 1, 0); y <= std::min(c[1] + 1, n[1] - 1); ++y) {
                 const std::size_t row = (std::size_t(z) * std::size_t(n[1]) + std::size_t(y)) * std::size_t(n[0]);
                 const std::uint32_t end = cells[row + std::size_t(x1) + 1];
                 for (std::uint32_t i = cells[row + std::size_t(x0)]; i < end; ++i) {
@@ -156,17 +133,74 @@ struct NearestPoints::Impl {
             }
     }
 
-    // The distance within which the block of ring r around cell c holds every point.
-    float settled(const glm::vec3& q, const int* c, int r) const
+    // The distance within which the block of cells around c holds every point.
+    float settled(const glm::vec3& q, const int* c) const
     {
         float bound = std::numeric_limits<float>::infinity();
         for (int a = 0; a < 3; ++a) {
-            if (c[a] - r > 0)
-                bound = std::min(bound, q[a] - (origin[a] + float(c[a] - r) * cell));
-            if (c[a] + r < n[a] - 1)
-                bound = std::min(bound, origin[a] + float(c[a] + r + 1) * cell - q[a]);
+            if (c[a] - 1 > 0)
+                bound = std::min(bound, q[a] - (origin[a] + float(c[a] - 1) * cell));
+            if (c[a] + 1 < n[a] - 1)
+                bound = std::min(bound, origin[a] + float(c[a] + 2) * cell - q[a]);
         }
         return std::max(bound, 0.0f);
+    }
+
+    // Whether the block of cells around q settles its k nearest (found into `best`, emptied first).
+    bool search(const glm::vec3& q, int k, Best& best) const
+    {
+        const int c[3] = {cellOf(q.x, 0), cellOf(q.y, 1), cellOf(q.z, 2)};
+        best.size = 0;
+        scan(q, c, best);
+        const float bound = settled(q, c);
+        return best.size == k && best.worst() <= bound * bound;
+    }
+};
+
+} // namespace
+
+struct NearestPoints::Impl {
+    std::vector<glm::vec3> points;
+    Cloud cloud;
+    // Built by the first query no grid can settle (a target near its source may never need it).
+    mutable std::once_flag treeBuilt;
+    mutable std::unique_ptr<Tree> tree;
+    // Grids of cells kCoarser times wider each: the first sized for queries on the surface.
+    std::vector<Grid> grids;
+
+    void buildGrids()
+    {
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+        for (const glm::vec3& p : points) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        const glm::vec3 extent = glm::max(hi - lo, glm::vec3(1e-6f));
+        // First about two cells per point by volume. Points on a surface fill
+        // few of them, crowded: the side then shrinks (as the square root, a
+        // surface's count per cell going as its area) to about kPointsPerCell
+        // per filled cell (1 measured fastest of 0.5, 1, 2 and 4 on the bench).
+        Grid& fine = grids.emplace_back();
+        fine.fill(points, lo, extent, std::cbrt(extent.x * extent.y * extent.z / float(2 * points.size())));
+        std::size_t filled = 0;
+        for (std::size_t c = 0; c + 1 < fine.cells.size(); ++c)
+            filled += fine.cells[c + 1] > fine.cells[c];
+        const float perCell = float(points.size()) / float(std::max<std::size_t>(filled, 1));
+        if (perCell > 1.5f * kPointsPerCell)
+            fine.fill(points, lo, extent, fine.cell * std::max(0.25f, std::sqrt(kPointsPerCell / perCell)));
+        // Coarser grids for queries off the surface, while a block of cells
+        // still holds a small part of the points.
+        int levels = 1;
+        for (float side = fine.cell; levels < kGrids; ++levels) {
+            const int across = int(std::ceil(std::max({extent.x, extent.y, extent.z}) / side)) + 1;
+            if (across <= 3)
+                break; // one block of the last grid is the whole grid: it settles every query
+            side *= kCoarser;
+        }
+        grids.resize(std::size_t(levels));
+        tbb::parallel_for(1, levels, [&](int level) {
+            grids[std::size_t(level)].fill(points, lo, extent, grids[0].cell * std::pow(kCoarser, float(level)));
+        });
     }
 };
 
@@ -175,7 +209,7 @@ NearestPoints::NearestPoints(std::vector<glm::vec3> points) : m_impl(std::make_u
     m_impl->points = std::move(points);
     m_impl->cloud.points = &m_impl->points;
     if (!m_impl->points.empty())
-        m_impl->buildGrid();
+        m_impl->buildGrids();
 }
 
 NearestPoints::~NearestPoints() = default;
@@ -190,21 +224,15 @@ int NearestPoints::nearest(const glm::vec3& q, int k, std::uint32_t* index, floa
     k = int(std::min<std::size_t>(std::size_t(std::clamp(k, 0, kMaxK)), g.points.size()));
     if (k == 0)
         return 0;
-    const int c[3] = {g.cellOf(q.x, 0), g.cellOf(q.y, 1), g.cellOf(q.z, 2)};
     Best best{k, 0, index, distance2};
-    for (int r = 1; r <= kRings; ++r) {
-        if (r > 1)
-            best.size = 0; // the block of ring r holds ring r - 1's points again
-        g.scan(q, c, r, best);
-        const float bound = g.settled(q, c, r);
-        if (best.size == k && best.worst() <= bound * bound)
+    for (const Grid& grid : g.grids)
+        if (grid.search(q, k, best))
             return k;
-    }
     std::call_once(g.treeBuilt, [&g] {
         g.tree = std::make_unique<Tree>(3, g.cloud, nanoflann::KDTreeSingleIndexAdaptorParams(12));
         g.tree->buildIndex();
     });
-    // The tree starts from the grid's candidates: their distance bounds its search.
+    // The tree starts from the coarsest grid's candidates: their distance bounds its search.
     SeededResult found{best};
     g.tree->findNeighbors(found, &q.x, nanoflann::SearchParams());
     return best.size;

@@ -2,8 +2,9 @@
 // The k nearest of a fixed set of points (the source vertices a weight
 // transfer reads), exact, for many queries from several threads at once. A
 // uniform grid answers queries near the points (a remeshed or refitted mesh
-// over the source) from the 3 x 3 x 3 cells around them; a query
-// the grid cannot settle (far from every point) goes to a KD-tree (nanoflann).
+// over the source) from the 3 x 3 x 3 cells around them, two coarser grids
+// those a little off it; a query none can settle (far from every point)
+// goes to a KD-tree (nanoflann). Ties in distance: either point.
 // Immutable once built; points are copied.
 #include <glm/vec3.hpp>
 

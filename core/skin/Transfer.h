@@ -108,7 +108,7 @@ public:
     static Result<TransferSource> uber(const std::vector<SkinChunk>& chunks, bool usePreDeformed);
     std::size_t vertexCount() const;
     const model::MeshWeights& weights() const; // per source vertex; joints: the chunk's (the union, for the uber chunk)
-    struct Data; // skin/TransferMethods.cpp
+    struct Data; // skin/TransferQuery.h
 
 private:
     friend Result<model::MeshWeights> transferWeights(const TransferSource&, const model::Mesh&, const TransferOptions&,
