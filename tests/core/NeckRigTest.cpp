@@ -91,8 +91,8 @@ TEST(NeckRig, SplineNeckBendsSmoothlyTowardsTheHead)
 {
     PosedRig r("biped");
     ASSERT_TRUE(r.ok());
-    Pose pose = r.defaults();
-    pose[r.channel("neck::ctrls.head", "tz")] = 0.04; // the head pushed forward
+    const Vec3 head = r.restPosition("neck::ctrls.head");
+    const Pose pose = r.moveTo(r.defaults(), "neck::ctrls.head", head + Vec3(0.0, 0.0, 0.04), "neck::ctrls.head"); // pushed forward
     r.evaluate(pose);
     const double base = r.position("neck::skin.0").z - r.restPosition("neck::skin.0").z;
     const double middle = r.position("neck::skin.1").z - r.restPosition("neck::skin.1").z;
@@ -110,9 +110,8 @@ TEST(NeckRig, FkNeckWhenTheSplineIsOff)
     PosedRig r(guide);
     ASSERT_TRUE(r.ok());
     EXPECT_FALSE(r.rig.findPath("neck::drv.0"));
-    Pose pose = r.defaults();
-    pose[r.channel("neck::ctrls.head", "tz")] = 0.04;
-    r.evaluate(pose);
+    const Vec3 head = r.restPosition("neck::ctrls.head");
+    r.evaluate(r.moveTo(r.defaults(), "neck::ctrls.head", head + Vec3(0.0, 0.0, 0.04), "neck::ctrls.head"));
     EXPECT_LT(glm::length(r.position("neck::skin.1") - r.restPosition("neck::skin.1")), 1e-9);
 }
 

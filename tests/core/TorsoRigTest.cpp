@@ -119,7 +119,7 @@ TEST(TorsoRig, SquashAndStretchKeepTheVolume)
         // The chest, the neck and the arms keep their size.
         EXPECT_NEAR(across(r, skin(4)), 1.0, 1e-9);
         EXPECT_NEAR(across(r, "neck::skin.0"), 1.0, 1e-9);
-        EXPECT_NEAR(across(r, "arm.L::skin.0"), 1.0, 1e-9);
+        EXPECT_NEAR(across(r, "arm.L::skin.clavicle"), 1.0, 1e-9);
     }
     // The option turns it on by default.
     PosedRig on(withSpineOption("volume", true));
@@ -160,7 +160,7 @@ TEST(TorsoRig, SkinJointCountIsIndependentOfTheControls)
     pose[r.channel("spine::ctrls.cog", "ik_blend")] = 0.0;
     pose[r.channel("spine::ctrls.fk.1", "rz")] = 20.0;
     r.evaluate(pose);
-    EXPECT_LT(glm::length(r.position(skin(1)) - r.restPosition(skin(1))), 0.005);
+    EXPECT_LT(glm::length(r.position(skin(1)) - r.restPosition(skin(1))), 0.01);
     EXPECT_GT(glm::length(r.position(skin(8)) - r.restPosition(skin(8))), 0.08);
 }
 

@@ -170,10 +170,10 @@ public:
                                                pointGroup, frames[head], chain[head]);
         const auto headCtrl = kit::addControl(ctx, "head", "head", {}, spaceGroup, frames[head], chain[head]).ctrl;
         if (spline) {
-            // A spline from the neck's controls to the head carries the neck
-            // joints: the neck bends and stretches to wherever the head goes.
-            std::vector<RigNodeIndex> driven, targets = fk;
-            targets.push_back(headCtrl);
+            // A spline from the neck's base control to the head carries the
+            // neck joints: the neck bends and stretches to wherever the head
+            // goes (the other neck controls carry the head in neck space).
+            std::vector<RigNodeIndex> driven, targets{fk.front(), headCtrl};
             RigNodeIndex drvParent = ctx.hookNode();
             for (std::size_t i = 0; i <= head; ++i) {
                 drvParent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + std::to_string(i), "drv", int(i) + 1, drvParent, frames[i], chain[i]);
