@@ -111,8 +111,7 @@ public:
     void operator()(const model::SplineConstraint& s)
     {
         field("stretch", attributeText(m_rig, s.stretch));
-        if (s.volume)
-            field("volume", attributeText(m_rig, s.volume));
+        field("volume", attributeText(m_rig, s.volume));
     }
     void operator()(const model::SpaceConstraint& s)
     {
