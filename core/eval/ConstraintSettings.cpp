@@ -50,7 +50,11 @@ public:
         m_c.showAbove = s.when == model::ShowWhen::Above;
         m_c.threshold = s.threshold;
     }
-    void operator()(const model::SplineConstraint& s) { m_c.stretchChannel = optionalChannel(s.stretch, "stretch"); }
+    void operator()(const model::SplineConstraint& s)
+    {
+        m_c.stretchChannel = optionalChannel(s.stretch, "stretch");
+        m_c.volumeChannel = optionalChannel(s.volume, "volume");
+    }
     void operator()(const model::SpaceConstraint& s)
     {
         m_c.spaceChannel = channel(s.choice, "choice");

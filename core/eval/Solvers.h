@@ -58,6 +58,7 @@ struct CompiledConstraint {
     // rest arc length and offset from the curve frame.
     std::vector<Vec3> localTangents;
     std::vector<double> parameters, restArc;
+    double restLength = 0.0; // the curve's length at rest
     std::vector<Affine> curveOffsets;
     int samplesPerSegment = 12;
 

@@ -134,6 +134,7 @@ std::string prepareSpline(CompiledConstraint& c, const std::vector<Affine>& rest
     const int count = c.samplesPerSegment * int(n - 1) + 1;
     std::vector<double> arc(count);
     arcTable(k, c.samplesPerSegment, arc);
+    c.restLength = arc.back();
     for (model::RigNodeIndex d : c.driven) {
         const Vec3 target = rest[d].translation;
         auto distance = [&](double u) {
@@ -170,8 +171,15 @@ void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state
     const double scale = c.chainParent != model::kNoNode ? world[c.chainParent].scale().x / c.restParentScale : 1.0;
     const double stretch = c.stretchChannel >= 0 ? std::clamp(pose[c.stretchChannel], 0.0, 1.0) : 1.0;
     const int count = c.samplesPerSegment * (k.count - 1) + 1;
-    if (stretch < 1.0)
+    const double volume = c.volumeChannel >= 0 ? std::clamp(pose[c.volumeChannel], 0.0, 1.0) : 0.0;
+    if (stretch < 1.0 || volume > 0.0)
         arcTable(k, c.samplesPerSegment, state.arcLengths);
+    // Volume: the chain's stretch (by the stretch share) thins it across, a squash thickens it.
+    double across = 1.0;
+    if (volume > 0.0 && c.restLength > 0.0) {
+        const double s = std::max(1.0 + stretch * (state.arcLengths[count - 1] / (c.restLength * scale) - 1.0), 1e-3);
+        across = std::pow(s, -0.5 * volume);
+    }
     for (std::size_t j = 0; j < c.driven.size(); ++j) {
         double u = c.parameters[j], beyond = 0.0;
         if (stretch < 1.0) {
@@ -183,7 +191,12 @@ void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state
         curveAt(k, u, position, derivative);
         if (beyond > 0.0 && glm::length(derivative) > 1e-12)
             position += glm::normalize(derivative) * beyond;
-        world[c.driven[j]] = compose(frameAt(c, k, u, derivative), Vec3(scale), position) * c.curveOffsets[j];
+        Affine& driven = world[c.driven[j]];
+        driven = compose(frameAt(c, k, u, derivative), Vec3(scale), position) * c.curveOffsets[j];
+        if (across != 1.0 && j + 1 < c.driven.size()) {
+            driven.linear[1] *= across;
+            driven.linear[2] *= across;
+        }
     }
 }
 

@@ -108,7 +108,11 @@ public:
         field("when", model::showWhenName(s.when));
         field("threshold", number(s.threshold));
     }
-    void operator()(const model::SplineConstraint& s) { field("stretch", attributeText(m_rig, s.stretch)); }
+    void operator()(const model::SplineConstraint& s)
+    {
+        field("stretch", attributeText(m_rig, s.stretch));
+        field("volume", attributeText(m_rig, s.volume));
+    }
     void operator()(const model::SpaceConstraint& s)
     {
         field("choice", attributeText(m_rig, s.choice));

@@ -71,6 +71,7 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 optionalRef(settings.pin);
             } else if constexpr (std::is_same_v<T, SplineConstraint>) {
                 optionalRef(settings.stretch);
+                optionalRef(settings.volume);
             } else if constexpr (std::is_same_v<T, SpaceConstraint>) {
                 ref(settings.choice);
             } else if constexpr (std::is_same_v<T, VisibilityConstraint>) {

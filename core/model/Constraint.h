@@ -139,6 +139,12 @@ struct SplineConstraint {
     // chain stretches with the curve; 0: each keeps its rest arc length, so the
     // chain keeps its length and slides along the curve. None: 1.
     std::optional<AttributeRef> stretch{};
+    // Squash and stretch keep the volume: with the chain stretched by s (the
+    // curve's length over its rest length, by the stretch share), every
+    // driven joint but the last is scaled across (its local Y and Z) by
+    // s^(-volume / 2). The last keeps its size, so what hangs on it (a neck,
+    // arms) does too. Clamped to [0, 1]. None: 0.
+    std::optional<AttributeRef> volume{};
     bool operator==(const SplineConstraint&) const = default;
 };
 

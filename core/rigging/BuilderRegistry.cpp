@@ -49,6 +49,7 @@ const BuilderRegistry& BuilderRegistry::builtin()
         r.add("leg.limb", makeLimbBuilder(LimbKind::Leg));
         r.add("quad.leg", makeLimbBuilder(LimbKind::Quad));
         r.add("digit.finger", makeDigitBuilder());
+        r.add("digit.hand", makeHandBuilder());
         r.add("rig.spline", makeSplineBuilder());
         r.add("face.jaw", makeJawBuilder());
         r.add("face.eye", makeEyeBuilder());

@@ -237,7 +237,8 @@ TEST(Pickwalk, WalksTheBipedControllersAcrossTemplates)
     EXPECT_EQ(walk("spine::ctrls.cog", {Mirror}), "spine::ctrls.cog"); // centre: stays
     EXPECT_EQ(walk("world::ctrls.world", {Up}), "world::ctrls.world"); // the top: stays
     EXPECT_EQ(walk("spine::ctrls.cog", {Up}), "world::ctrls.fly");     // across templates
-    EXPECT_EQ(walk("index.L::ctrls.fk.0", {Up}).rfind("arm.L::ctrls.", 0), 0u); // finger to its hand
+    EXPECT_EQ(walk("index.L::ctrls.fk.0", {Up}), "hand.L::ctrls.hand");            // finger to its hand master
+    EXPECT_EQ(walk("index.L::ctrls.fk.0", {Up, Up}).rfind("arm.L::ctrls.", 0), 0u); // and on to the arm
     // Siblings wrap: going right through all of them comes back.
     const auto siblings = r.rig.virtualChildren(r.rig.nodes[r.index("index.L::ctrls.fk.0")].virtualParent);
     model::RigNodeIndex at = r.index("index.L::ctrls.fk.0");
@@ -257,7 +258,8 @@ TEST(Pickwalk, WalksTemplateInstancesInTheOutliner)
     auto id = [&](const std::string& name) { return guide.instanceNamed(name)->id; };
     auto name = [&](model::InstanceId i) { return guide.instance(i)->name; };
     EXPECT_EQ(name(eval::pickwalk(guide, id("arm"), WalkDirection::Up)), "spine");
-    EXPECT_EQ(name(eval::pickwalk(guide, id("arm"), WalkDirection::Down)), "thumb");
+    EXPECT_EQ(name(eval::pickwalk(guide, id("arm"), WalkDirection::Down)), "hand");
+    EXPECT_EQ(name(eval::pickwalk(guide, id("hand"), WalkDirection::Down)), "thumb");
     EXPECT_EQ(name(eval::pickwalk(guide, id("thumb"), WalkDirection::Right)), "index");
     EXPECT_EQ(name(eval::pickwalk(guide, id("thumb"), WalkDirection::Left)), "pinky"); // wraps
     EXPECT_EQ(name(eval::pickwalk(guide, id("world"), WalkDirection::Up)), "world");

@@ -104,7 +104,7 @@ TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
         EXPECT_EQ(n.name.substr(0, n.name.rfind("_R")), left.name.substr(0, left.name.rfind("_L"))) << n.path;
         ++pairs;
     }
-    EXPECT_EQ(pairs, 143u) << "arms and legs (with their IK and pole space groups, pins and auto-clavicle groups) and ten fingers";
+    EXPECT_EQ(pairs, 145u) << "arms and legs (with their IK and pole space groups, pins and auto-clavicle groups), two hand masters and ten fingers";
     // Constraints come in pairs too.
     for (const auto& c : rig.constraints)
         if (auto r = c.path.find(".R::"); r != std::string::npos)
@@ -233,11 +233,14 @@ TEST(Templates, TheHeadFollowsTheSpaceItsOptionPicks)
 TEST(Templates, FingersFollowTheHandOfTheirBranch)
 {
     const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
-    EXPECT_EQ(rig.nodes[node(rig, "index.R::roots.fk.0").parent].path, "arm.R::blend.2");
+    // The fingers hang on their side's hand master, which hangs on that side's wrist.
+    EXPECT_EQ(rig.nodes[node(rig, "index.R::roots.fk.0").parent].path, "hand.R::ctrls.hand");
+    EXPECT_EQ(rig.nodes[node(rig, "hand.R::roots.hand").parent].path, "arm.R::blend.2");
     EXPECT_EQ(node(rig, "index.L::ctrls.fk.0").name, "c_index_base_L");
     EXPECT_EQ(node(rig, "index.L::ctrls.fk.1").name, "c_index1_L");
     EXPECT_EQ(rig.nodes[node(rig, "index.L::skin.0").virtualParent].path, "arm.L::skin.limb.2");
-    EXPECT_EQ(rig.nodes[node(rig, "index.L::ctrls.fk.0").virtualParent].path, "arm.L::ctrls.fk.2");
+    EXPECT_EQ(rig.nodes[node(rig, "index.L::ctrls.fk.0").virtualParent].path, "hand.L::ctrls.hand");
+    EXPECT_EQ(rig.nodes[node(rig, "hand.L::ctrls.hand").virtualParent].path, "arm.L::ctrls.fk.2");
     EXPECT_NE(node(rig, "index.L::ctrls.fk.0").attribute("curl"), nullptr);
 }
 

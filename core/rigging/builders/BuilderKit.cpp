@@ -1,8 +1,24 @@
 #include "rigging/builders/BuilderKit.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 
 namespace rs::rigging::kit {
+
+std::pair<Vec3, std::size_t> alongChain(const std::vector<Vec3>& points, double share)
+{
+    double total = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i)
+        total += glm::length(points[i] - points[i - 1]);
+    double left = std::clamp(share, 0.0, 1.0) * total;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const double span = glm::length(points[i] - points[i - 1]);
+        if (left <= span || i + 1 == points.size())
+            return {span > 1e-12 ? glm::mix(points[i - 1], points[i], std::min(left / span, 1.0)) : points[i], i - 1};
+        left -= span;
+    }
+    return {points.empty() ? Vec3(0.0) : points.front(), 0};
+}
 
 Vec3 positionOf(const Mat4& m) { return Vec3(m[3]); }
 
@@ -187,16 +203,17 @@ double guideNumber(const std::map<std::string, Value>& guides, const std::string
 }
 
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
-                    const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly)
+                    const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly,
+                    const std::string& attribute)
 {
     std::vector<Space> named;
     for (std::size_t i = 0; i < spaces.size(); ++i)
         named.push_back({spaces[i], i == 0 ? first : model::kNoNode});
-    addSpaceSwitch(ctx, group, control, option, tag, named, orientOnly);
+    addSpaceSwitch(ctx, group, control, option, tag, named, orientOnly, attribute);
 }
 
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
-                    const std::string& tag, const std::vector<Space>& spaces, bool orientOnly)
+                    const std::string& tag, const std::vector<Space>& spaces, bool orientOnly, const std::string& attribute)
 {
     const std::string chosen = ctx.optionString(option);
     std::vector<model::RigNodeIndex> targets;
@@ -215,7 +232,7 @@ void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNode
         targets.push_back(target);
         labels.push_back(spaces[i].name);
     }
-    const model::AttributeRef choice = ctx.addEnumAttribute(control, "space", index, labels);
+    const model::AttributeRef choice = ctx.addEnumAttribute(control, attribute, index, labels);
     ctx.addConstraint(tag, {group}, targets, model::SpaceConstraint{.choice = choice, .orientOnly = orientOnly});
 }
 

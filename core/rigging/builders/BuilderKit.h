@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rs::rigging::kit {
@@ -25,6 +26,9 @@ Mat4 uprightFrame(const Vec3& origin);
 // axis (spines and necks, whose S-curves would flip a bend normal).
 std::vector<Mat4> sideFrames(const std::vector<Vec3>& points, const Vec3& side);
 Vec3 positionOf(const Mat4& m);
+// The point `share` (0..1) of the way along a polyline by length, and the
+// index of the segment it lies on (the point before it).
+std::pair<Vec3, std::size_t> alongChain(const std::vector<Vec3>& points, double share);
 // Unit axis `column` (0 x, 1 y, 2 z) of a guide joint's world matrix, or `fallback`.
 Vec3 guideAxis(const BuildContext& ctx, model::JointId joint, int column, const Vec3& fallback);
 
@@ -50,8 +54,10 @@ model::RigNodeIndex addSetup(BuildContext& ctx, model::RigNodeKind kind, const s
 // parent), chosen by an enum attribute "space" on `control` whose default is
 // the option `option`. A space missing from this rig falls back to `first`
 // (warned when it is the default). orientOnly keeps the position from the parent.
+// `attribute` names the enum attribute when a control has two switches.
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
-                    const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly);
+                    const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly,
+                    const std::string& attribute = "space");
 // The same with the instance's own spaces: each entry names a space and gives
 // its node, or kNoNode for the rig's named space of that name; entry 0 must
 // have a node, and is what a space missing from the rig falls back to.
@@ -60,7 +66,8 @@ struct Space {
     model::RigNodeIndex node = model::kNoNode;
 };
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
-                    const std::string& tag, const std::vector<Space>& spaces, bool orientOnly);
+                    const std::string& tag, const std::vector<Space>& spaces, bool orientOnly,
+                    const std::string& attribute = "space");
 
 // Guide positions of a structure tag; nullopt (with the error reported) when it fails.
 std::optional<std::vector<Vec3>> positions(const BuildContext& ctx, const std::vector<model::JointId>& joints);

@@ -25,6 +25,9 @@ enum class LimbKind { Arm, Leg, Quad };
 std::unique_ptr<TemplateBuilder> makeLimbBuilder(LimbKind kind);
 // digit.finger: a finger or toe with a base control and a tip.
 std::unique_ptr<TemplateBuilder> makeDigitBuilder();
+// digit.hand: a hand master control whose fist, curl, spread and cup drive
+// every digit.finger hung on it.
+std::unique_ptr<TemplateBuilder> makeHandBuilder();
 // rig.spline: a chain following a curve through spline controllers (tails).
 std::unique_ptr<TemplateBuilder> makeSplineBuilder();
 

@@ -1,4 +1,4 @@
-// digit.finger and rig.spline.
+// rig.spline (digit.finger and digit.hand are in HandBuilders.cpp).
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
@@ -16,53 +16,6 @@ using model::RigNodeKind;
 
 // The Z axis of a chain's root guide: the bend axis used where the chain is straight.
 Vec3 rootNormal(const BuildContext& ctx, JointId root) { return kit::guideAxis(ctx, root, 2, Vec3(0.0, 0.0, 1.0)); }
-
-class DigitBuilder final : public TemplateBuilder {
-public:
-    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
-                                            const std::map<std::string, Value>& guides) const override
-    {
-        // Base (metacarpal), three phalanges and the tip along +X, curling down slightly.
-        const int count = std::max(2, static_cast<int>(kit::guideNumber(guides, "number", 5)));
-        const double length = kit::guideNumber(guides, "length", 0.1);
-        std::vector<GuideJointSpec> specs;
-        int parent = kit::appendJoint(specs, -1, Vec3(0.02, 0.0, 0.0));
-        for (int i = 1; i < count; ++i)
-            parent = kit::appendJoint(specs, parent, Vec3(length / (count - 1), -0.004 * i, 0.0));
-        return specs;
-    }
-
-    bool gather(const BuildContext& ctx) const override { return kit::chainOfAtLeast(ctx, 2, "a digit").has_value(); }
-
-    void generate(BuildContext& ctx) const override
-    {
-        const auto chain = *ctx.structure("chain");
-        const auto points = *kit::positions(ctx, chain);
-        const auto frames = kit::chainFrames(points, rootNormal(ctx, chain.front()));
-        const bool base = ctx.optionBool("base") && chain.size() > 2;
-        RigNodeIndex parent = ctx.hookNode();
-        std::vector<kit::Control> controls;
-        for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-            const bool isBase = base && i == 0;
-            const std::string token = isBase ? "base" : "";
-            const std::optional<int> number = isBase ? std::nullopt : std::optional<int>(int(i) + (base ? 0 : 1));
-            const auto control = kit::addControl(ctx, "fk." + std::to_string(i), token, number, parent, frames[i], chain[i]);
-            kit::addSkin(ctx, std::to_string(i), token, number, control.ctrl, frames[i], chain[i]);
-            ctx.setHook(chain[i], control.ctrl);
-            controls.push_back(control);
-            parent = control.ctrl;
-        }
-        ctx.setHook(chain.back(), parent);
-        // Curl bends every phalanx about its bend axis (Z) from one attribute.
-        const model::AttributeRef curl = ctx.addAttribute(controls.front().ctrl, "curl", 0.0, -30.0, 120.0);
-        for (std::size_t i = base ? 1 : 0; i < controls.size(); ++i)
-            ctx.addConstraint("cns.curl." + std::to_string(i), {controls[i].offset}, {},
-                              model::DriveConstraint{.value = curl,
-                                                     .output = model::DriveOutput::RotateZ,
-                                                     .factor = 1.0,
-                                                     .response = model::DriveClamped{.low = -30.0, .high = 120.0}});
-    }
-};
 
 class SplineBuilder final : public TemplateBuilder {
 public:
@@ -121,7 +74,6 @@ public:
 
 } // namespace
 
-std::unique_ptr<TemplateBuilder> makeDigitBuilder() { return std::make_unique<DigitBuilder>(); }
 std::unique_ptr<TemplateBuilder> makeSplineBuilder() { return std::make_unique<SplineBuilder>(); }
 
 } // namespace rs::rigging

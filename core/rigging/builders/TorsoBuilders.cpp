@@ -42,7 +42,8 @@ public:
     {
         const auto chain = *ctx.structure("chain");
         const auto points = *kit::positions(ctx, chain);
-        const auto frames = kit::sideFrames(points, sideAxis(ctx, chain.front()));
+        const Vec3 side = sideAxis(ctx, chain.front());
+        const auto frames = kit::sideFrames(points, side);
         const std::size_t n = chain.size();
         const Mat4 hipsFrame = kit::uprightFrame(points.front());
 
@@ -57,10 +58,19 @@ public:
             parent = kit::addControl(ctx, "fk." + std::to_string(i), "fk", int(i) + 1, parent, frames[i], chain[i]).ctrl;
             fk.push_back(parent);
         }
-        // IK-style torso: hips and chest controls drive a spline through the chain.
-        const auto ikHips = kit::addControl(ctx, "ik_hips", "ik_hips", {}, cog.ctrl, hipsFrame, chain.front());
+        // IK-style torso: the hips, an optional mid and the chest control drive a
+        // spline through the chain; the mid follows the hips and chest halfway.
         const auto ikChest = kit::addControl(ctx, "ik_chest", "ik_chest", {}, cog.ctrl, kit::uprightFrame(points.back()), chain.back());
         const model::AttributeRef stretch = ctx.addAttribute(ikChest.ctrl, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+        const model::AttributeRef volume = ctx.addAttribute(ikChest.ctrl, "volume", ctx.optionBool("volume") ? 1.0 : 0.0, 0.0, 1.0);
+        std::vector<RigNodeIndex> targets{hips.ctrl};
+        if (ctx.optionBool("mid")) {
+            const auto [at, segment] = kit::alongChain(points, 0.5);
+            const auto mid = kit::addControl(ctx, "ik_mid", "ik_mid", {}, cog.ctrl, kit::uprightFrame(at), chain[segment]);
+            ctx.addConstraint("cns.mid", {mid.offset}, {hips.ctrl, ikChest.ctrl}, model::ParentConstraint{.weights = {0.5, 0.5}});
+            targets.push_back(mid.ctrl);
+        }
+        targets.push_back(ikChest.ctrl);
         std::vector<RigNodeIndex> ik, blend;
         RigNodeIndex ikParent = cog.ctrl, blendParent = cog.ctrl;
         for (std::size_t i = 0; i < n; ++i) {
@@ -70,15 +80,39 @@ public:
             blendParent = kit::addSetup(ctx, RigNodeKind::Joint, "blend." + index, "blend", int(i) + 1, blendParent, frames[i], chain[i]);
             blend.push_back(blendParent);
         }
-        ctx.addConstraint("cns.ik", ik, {ikHips.ctrl, ikChest.ctrl}, model::SplineConstraint{.stretch = stretch});
+        ctx.addConstraint("cns.ik", ik, targets, model::SplineConstraint{.stretch = stretch, .volume = volume});
         for (std::size_t i = 0; i < n; ++i)
             ctx.addConstraint("cns.blend." + std::to_string(i), {blend[i]}, {fk[i], ik[i]},
                               model::BlendConstraint{.weight = blendWeight});
 
-        // Skin: the pelvis follows the hips control, the spine the blended chain.
+        // Skin: the pelvis follows the hips control, the spine the blended
+        // chain, or `skin_joints` joints spread along it by a spline through it.
         kit::addSkin(ctx, "0", "hips", {}, hips.ctrl, frames.front(), chain.front());
-        for (std::size_t i = 1; i < n; ++i)
-            kit::addSkin(ctx, std::to_string(i), "", int(i), blend[i], frames[i], chain[i]);
+        const auto skinJoints = static_cast<std::size_t>(std::max(0LL, ctx.optionInt("skin_joints")));
+        if (skinJoints == 0) {
+            for (std::size_t i = 1; i < n; ++i)
+                kit::addSkin(ctx, std::to_string(i), "", int(i), blend[i], frames[i], chain[i]);
+        } else {
+            std::vector<Vec3> at;
+            std::vector<std::size_t> segment;
+            for (std::size_t k = 0; k <= skinJoints; ++k) {
+                const auto [p, s] = kit::alongChain(points, double(k) / double(skinJoints));
+                at.push_back(p);
+                segment.push_back(s);
+            }
+            segment.back() = n - 1; // the top one is the chest's
+            const auto defFrames = kit::sideFrames(at, side);
+            std::vector<RigNodeIndex> def;
+            RigNodeIndex defParent = cog.ctrl;
+            for (std::size_t k = 0; k <= skinJoints; ++k) {
+                defParent = kit::addSetup(ctx, RigNodeKind::Joint, "def." + std::to_string(k), "def", int(k) + 1, defParent,
+                                          defFrames[k], chain[segment[k]]);
+                def.push_back(defParent);
+                if (k > 0)
+                    kit::addSkin(ctx, std::to_string(k), "", int(k), defParent, defFrames[k], chain[segment[k]]);
+            }
+            ctx.addConstraint("cns.def", def, blend, model::SplineConstraint{.volume = volume});
+        }
 
         ctx.setHook(chain.front(), hips.ctrl);
         for (std::size_t i = 1; i < n; ++i)
@@ -116,17 +150,41 @@ public:
         const auto points = *kit::positions(ctx, chain);
         const auto frames = kit::sideFrames(points, sideAxis(ctx, chain.front()));
         const std::size_t head = chain.size() - 2;
+        const bool spline = ctx.optionBool("spline");
 
         RigNodeIndex parent = ctx.hookNode();
+        std::vector<RigNodeIndex> fk;
         for (std::size_t i = 0; i < head; ++i) {
             parent = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]).ctrl;
-            kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
-            ctx.setHook(chain[i], parent);
+            fk.push_back(parent);
+            if (!spline) {
+                kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
+                ctx.setHook(chain[i], parent);
+            }
         }
-        // The head's orientation follows the space the head_space option picks.
+        // The head's position follows the space head_point_space picks, its
+        // orientation the one head_space picks (configure() wires both).
+        const auto pointGroup = ctx.createNode(RigNodeKind::Group, "spaces.head_point",
+                                               ctx.nodeName(model::NameRole::Group, "head_point_space"), parent, frames[head], chain[head]);
         const auto spaceGroup = ctx.createNode(RigNodeKind::Group, "spaces.head", ctx.nodeName(model::NameRole::Group, "head_space"),
-                                               parent, frames[head], chain[head]);
+                                               pointGroup, frames[head], chain[head]);
         const auto headCtrl = kit::addControl(ctx, "head", "head", {}, spaceGroup, frames[head], chain[head]).ctrl;
+        if (spline) {
+            // A spline from the neck's base control to the head carries the
+            // neck joints: the neck bends and stretches to wherever the head
+            // goes (the other neck controls carry the head in neck space).
+            std::vector<RigNodeIndex> driven, targets{fk.front(), headCtrl};
+            RigNodeIndex drvParent = ctx.hookNode();
+            for (std::size_t i = 0; i <= head; ++i) {
+                drvParent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + std::to_string(i), "drv", int(i) + 1, drvParent, frames[i], chain[i]);
+                driven.push_back(drvParent);
+                if (i < head) {
+                    kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, drvParent, frames[i], chain[i]);
+                    ctx.setHook(chain[i], drvParent);
+                }
+            }
+            ctx.addConstraint("cns.spline", driven, targets, model::SplineConstraint{});
+        }
         kit::addSkin(ctx, "head", "head", {}, headCtrl, frames[head], chain[head]);
         ctx.setHook(chain[head], headCtrl);
         ctx.setHook(chain.back(), headCtrl);
@@ -135,12 +193,16 @@ public:
 
     void configure(BuildContext& ctx) const override
     {
+        const auto point = ctx.findNode("spaces.head_point");
         const auto group = ctx.findNode("spaces.head");
         const auto headCtrl = ctx.findNode(ctx.optionBool("do_ctrl") ? "ctrls.head" : "roots.head");
-        if (!group || !headCtrl)
+        if (!point || !group || !headCtrl)
             return;
-        // Space 0 is the neck the group hangs from; the others are named spaces.
-        kit::addSpaceSwitch(ctx, *group, *headCtrl, "head_space", "cns.head_space", ctx.node(*group).parent, kHeadSpaces, true);
+        // Space 0 is the neck the head hangs from; the others are named spaces.
+        const RigNodeIndex neck = ctx.node(*point).parent;
+        kit::addSpaceSwitch(ctx, *point, *headCtrl, "head_point_space", "cns.head_point_space", neck, kHeadSpaces, false,
+                            "point_space");
+        kit::addSpaceSwitch(ctx, *group, *headCtrl, "head_space", "cns.head_space", neck, kHeadSpaces, true);
     }
 };
 
