@@ -65,7 +65,7 @@ TEST(Editor, AddsATemplateAtAHookBuildsExportsAndUndoesBackToTheStart)
     addJoints->trigger();
 
     const auto& doc = w.session().document();
-    ASSERT_EQ(doc.instances().size(), 11u);
+    ASSERT_EQ(doc.instances().size(), 12u);
     const model::TemplateInstance& added = doc.instances().back();
     EXPECT_EQ(added.parentJoint, hand);
     EXPECT_EQ(w.session().selection().instance, added.id);
@@ -215,6 +215,9 @@ TEST(Editor, OutlinerArrowKeysPickwalkTheTemplateInstances)
     QTest::keyClick(w.outliner(), Qt::Key_Right);
     EXPECT_EQ(selected(), "arm");
     QTest::keyClick(w.outliner(), Qt::Key_Down);
+    EXPECT_EQ(selected(), "hand"); // the arm's only child: the hand master
+    QTest::keyClick(w.outliner(), Qt::Key_Down);
+    EXPECT_EQ(selected(), "thumb"); // the hand's first finger
     QTest::keyClick(w.outliner(), Qt::Key_Left);
     EXPECT_EQ(selected(), "pinky"); // siblings wrap
     EXPECT_EQ(w.outliner()->selectedInstance(), w.session().selection().instance); // the tree follows

@@ -64,7 +64,9 @@ TEST(Outliner, HooksAreItemsAndInstancesHangUnderTheirHook)
     EXPECT_TRUE(hooks.contains("shoulder") && hooks.contains("elbow") && hooks.contains("hand")) << hooks.join(", ").toStdString();
     const QModelIndex thumb = itemNamed(outliner, "thumb");
     ASSERT_TRUE(thumb.isValid());
-    EXPECT_EQ(thumb.parent().data().toString(), "hand") << "the fingers hang under the hand hook";
+    EXPECT_EQ(thumb.parent().data().toString(), "default") << "the fingers hang under the hand master's hook";
+    EXPECT_EQ(thumb.parent().parent().data().toString(), "hand");
+    EXPECT_EQ(thumb.parent().parent().parent().data().toString(), "hand") << "the hand master hangs under the arm's hand hook";
 
     // Clicking a hook selects its joint (the gizmo goes there).
     click(outliner, itemNamed(outliner, "elbow"));

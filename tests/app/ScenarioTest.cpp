@@ -40,7 +40,7 @@ TEST(Scenario, FromSampleToSavedRigAndBackToTheStart)
 
     // 1. File > New > biped.
     w.findChild<QAction*>("new:biped")->trigger();
-    ASSERT_EQ(session.document().instances().size(), 10u);
+    ASSERT_EQ(session.document().instances().size(), 11u);
     EXPECT_TRUE(session.filePath().isEmpty()) << "a copy, never the sample itself";
     const model::GuideDocument original = session.document();
 
