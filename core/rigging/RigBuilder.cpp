@@ -276,6 +276,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
             a.rig.nodes[i].parent = 0;
     report(0.88, "overrides");
     applyRigOverrides(a, guide, restore);
+    computeControlScales(a, builders, cache ? &cache->defaultSegments : nullptr);
     compensateSegmentScale(a);
     // The program compiles on another core while the shapes, the hierarchy and
     // the checks run here: they write none of what it reads (see compileProgram).
