@@ -2,6 +2,8 @@
 // conditions (with an enum option given by index), and ids that only the
 // builder creates (skin.last.up), which the manifest can still place.
 #include "base/Paths.h"
+#include "edit/GuideEdits.h"
+#include "edit/History.h"
 #include "eval/Pickwalk.h"
 #include "io/TemplateFolders.h"
 #include "rigging/RigBuilder.h"
@@ -172,4 +174,22 @@ TEST(VirtualParent, AnUnknownInstanceOrALoopIsReportedAndTheUsualParentKept)
     for (const auto& n : usual.nodes)
         if (n.path.rfind("spine::", 0) == 0 && n.virtualParent != model::kNoNode)
             EXPECT_EQ(virtualParentOf(loop, n.path)->path, usual.nodes[n.virtualParent].path) << n.path;
+}
+
+TEST(VirtualParent, RenamingTheNamedInstanceKeepsTheLinkAndUndoRestoresIt)
+{
+    model::GuideDocument document = test::loadSample("biped");
+    const model::InstanceId arm = document.instanceNamed("arm")->id;
+    const model::InstanceId neck = document.instanceNamed("neck")->id;
+    document.instance(arm)->options["virtual_parent"] = std::string("neck");
+    edit::History history(document);
+    const model::Rig before = rigging::buildRig(document, test::builtinTemplates());
+    ASSERT_TRUE(test::succeeded(edit::renameInstance(history, neck, "collar")));
+    EXPECT_EQ(std::get<std::string>(document.instance(arm)->options.at("virtual_parent")), "collar");
+    const model::Rig after = rigging::buildRig(document, test::builtinTemplates());
+    EXPECT_FALSE(mentions(after, "virtual_parent")) << formatAll(after.diagnostics);
+    const auto& clavicle = test::node(after, "arm.L::ctrls.clavicle");
+    EXPECT_EQ(after.nodes[clavicle.virtualParent].key, before.nodes[test::node(before, "arm.L::ctrls.clavicle").virtualParent].key);
+    history.undo();
+    EXPECT_EQ(std::get<std::string>(document.instance(arm)->options.at("virtual_parent")), "neck");
 }
