@@ -87,6 +87,44 @@ void MainWindow::createEditActions()
     QMenu* edit = findChild<QMenu*>("editMenu");
     edit->addSeparator();
     edit->addActions({remove, selectAll, hierarchy});
+    // The built rig's controller groups (template options `group`, `parent`),
+    // nested as built; choosing one selects its controllers and its subgroups'.
+    QMenu* groups = edit->addMenu(tr("Select Controller &Group"));
+    groups->setObjectName("controllerGroupMenu");
+    groups->setToolTipsVisible(true);
+    connect(groups, &QMenu::aboutToShow, this, [this, groups] {
+        groups->clear();
+        const model::Rig* rig = m_session.rig();
+        if (!rig || rig->groups.empty()) {
+            groups->addAction(tr("(build the rig first)"))->setEnabled(false);
+            return;
+        }
+        std::vector<int> depth(rig->groups.size(), 0);
+        for (std::size_t g = 0; g < rig->groups.size(); ++g) {
+            const auto& group = rig->groups[g];
+            if (group.parent != model::ControllerGroup::kNoGroup)
+                depth[g] = depth[group.parent] + 1;
+            QAction* a = groups->addAction(QString(depth[g] * 3, QChar(' ')) + QString::fromStdString(group.name));
+            a->setObjectName(QString("controllerGroup:") + QString::fromStdString(group.name));
+            a->setToolTip(tr("%n controller(s), with its subgroups'", nullptr, int(group.controllers.size())));
+            connect(a, &QAction::triggered, this, [this, g] {
+                const model::Rig* built = m_session.rig();
+                if (!built || g >= built->groups.size())
+                    return;
+                std::vector<bool> inside(built->groups.size(), false);
+                std::vector<model::RigNodeIndex> nodes;
+                for (std::size_t k = 0; k < built->groups.size(); ++k) { // parents come before children
+                    const auto parent = built->groups[k].parent;
+                    inside[k] = k == g || (parent != model::ControllerGroup::kNoGroup && inside[parent]);
+                    if (inside[k])
+                        nodes.insert(nodes.end(), built->groups[k].controllers.begin(), built->groups[k].controllers.end());
+                }
+                if (m_session.mode() != EditorMode::Rig)
+                    m_session.setMode(EditorMode::Rig);
+                m_session.selectControllers(nodes, false);
+            });
+        }
+    });
 }
 
 } // namespace rs::app

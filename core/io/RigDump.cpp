@@ -229,6 +229,13 @@ std::string writeRigDump(const model::Rig& rig)
     out << "sets:" << (rig.sets.empty() ? " {}\n" : "\n");
     for (const auto& [name, members] : rig.sets)
         out << "  " << quoteIfNeeded(name) << ": " << ids(members) << "\n";
+    out << "groups:" << (rig.groups.empty() ? " []\n" : "\n");
+    for (const auto& g : rig.groups) {
+        out << "  - {name: " << quoteIfNeeded(g.name);
+        if (g.parent != model::ControllerGroup::kNoGroup)
+            out << ", parent: " << quoteIfNeeded(rig.groups[g.parent].name);
+        out << ", controllers: " << ids(g.controllers) << "}\n";
+    }
     out << "diagnostics:" << (rig.diagnostics.empty() ? " []\n" : "\n");
     for (const auto& d : rig.diagnostics)
         out << "  - " << quoteIfNeeded(d.format()) << "\n";

@@ -140,10 +140,22 @@ private:
     bool m_inHierarchy = false;
 };
 
+// An animator's controller group (Mikan's common options `group` and
+// `parent`): the controllers of one or more template instances, nested like the
+// instances, to select (or hide) a body part at once. Built by the generator's
+// controller group plugin (rigging/Plugins.cpp).
+struct ControllerGroup {
+    std::string name;                       // the `group` option, or the instance copy's name ("arm.L")
+    std::size_t parent = kNoGroup;          // index into Rig::groups; kNoGroup for a top-level group
+    std::vector<RigNodeIndex> controllers;  // in node order
+    static constexpr std::size_t kNoGroup = static_cast<std::size_t>(-1);
+};
+
 struct Rig {
     std::vector<RigNode> nodes;
     std::vector<RigConstraint> constraints; // in build order; the evaluator orders them by dependency
     std::map<std::string, std::vector<RigNodeIndex>> sets; // "controllers": every animatable controller
+    std::vector<ControllerGroup> groups;                   // parents before children
     std::unordered_map<NodeKey, RigNodeIndex> byKey;
     std::unordered_map<std::string, RigNodeIndex> byPath;
     Diagnostics diagnostics;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <unordered_map>
 
 namespace rs::rigging {
 
@@ -23,6 +24,72 @@ public:
                 set.push_back(i);
         if (set.empty())
             a.rig.sets.erase("controllers");
+    }
+};
+
+// Controller groups from the common options `group` and `parent`. Each
+// instance copy's visible controllers join a group: by default its own, named
+// after it ("arm.L") and nested in its parent instance's group; `group: name`
+// names it, and every instance naming the same group shares it (created where
+// the first one is); `parent: merge up` puts the controllers in the parent
+// instance's group instead; `parent: merge down` makes the group take in the
+// controllers of every instance below it that does not name a group of its own.
+class ControllerGroupPlugin final : public GeneratorPlugin {
+public:
+    const char* name() const override { return "controller groups"; }
+    void finalize(RigAssembly& a) const override
+    {
+        auto& groups = a.rig.groups;
+        groups.clear();
+        constexpr std::size_t none = model::ControllerGroup::kNoGroup;
+        struct Placed {
+            std::size_t group = none;
+            bool absorbs = false; // merge down: the instances below join this group
+        };
+        std::unordered_map<model::InstanceId, Placed> placed;   // by expanded instance
+        std::map<std::string, std::size_t> named;               // `group` option -> group
+        std::map<CopyKey, std::size_t> byCopy;
+        for (const InstanceRecord& r : a.records) {
+            const std::string group = text(r, "group");
+            const std::string mode = text(r, "parent");
+            Placed parent;
+            if (r.instance->parent != model::kNoId)
+                if (auto it = placed.find(r.instance->parent); it != placed.end())
+                    parent = it->second;
+            Placed self;
+            if (!group.empty()) {
+                auto it = named.find(group);
+                if (it == named.end()) {
+                    groups.push_back({group, parent.group, {}});
+                    it = named.emplace(group, groups.size() - 1).first;
+                }
+                self.group = it->second;
+            } else if (parent.group != none && (mode == "merge up" || parent.absorbs)) {
+                self = parent;
+            } else {
+                groups.push_back({r.instance->name, parent.group, {}});
+                self.group = groups.size() - 1;
+            }
+            if (mode == "merge down")
+                self.absorbs = true;
+            placed[r.instance->id] = self;
+            byCopy[a.copyOf(r.instance->id).key()] = self.group;
+        }
+        for (model::RigNodeIndex i = 0; i < a.rig.nodes.size(); ++i) {
+            const model::RigNode& node = a.rig.nodes[i];
+            if (node.kind != model::RigNodeKind::Controller || node.hidden)
+                continue;
+            if (auto it = byCopy.find(node.key.copy()); it != byCopy.end())
+                groups[it->second].controllers.push_back(i);
+        }
+    }
+
+private:
+    static std::string text(const InstanceRecord& r, const std::string& option)
+    {
+        auto it = r.options.find(option);
+        const std::string* value = it == r.options.end() ? nullptr : std::get_if<std::string>(&it->second);
+        return value ? *value : std::string();
     }
 };
 
@@ -131,6 +198,7 @@ const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
     static const auto plugins = [] {
         std::vector<std::unique_ptr<GeneratorPlugin>> list;
         list.push_back(std::make_unique<ControllerSetPlugin>());
+        list.push_back(std::make_unique<ControllerGroupPlugin>());
         list.push_back(std::make_unique<SkinRootPlugin>());
         list.push_back(std::make_unique<NamingCheckPlugin>());
         return list;

@@ -11,9 +11,12 @@
 #include <QDialog>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QMenu>
 #include <QStatusBar>
 #include <QTextBrowser>
 #include <QWheelEvent>
+
+#include <set>
 
 using namespace rs;
 using namespace rs::test;
@@ -241,4 +244,26 @@ TEST(NewUser, StatusBarDoesNotKeepABuildStageAfterTheBuild)
     EXPECT_TRUE(w.statusBar()->currentMessage().startsWith("Building: configure"));
     emit w.session().buildProgressed(1.0, "done");
     EXPECT_FALSE(w.statusBar()->currentMessage().startsWith("Building")) << w.statusBar()->currentMessage().toStdString();
+}
+
+TEST(NewUser, EditMenuSelectsAControllerGroupWithItsSubgroups)
+{
+    Editor e;
+    app::MainWindow& w = e.window;
+    auto* menu = w.findChild<QMenu*>("controllerGroupMenu");
+    ASSERT_NE(menu, nullptr);
+    w.buildRig();
+    QMetaObject::invokeMethod(menu, "aboutToShow"); // what opening the menu does
+    auto* armGroup = menu->findChild<QAction*>("controllerGroup:arm.L");
+    ASSERT_NE(armGroup, nullptr) << "every instance copy has its group";
+    armGroup->trigger();
+    EXPECT_EQ(w.session().mode(), app::EditorMode::Rig);
+    const model::Rig& rig = *w.session().rig();
+    std::set<std::string> selected;
+    for (auto n : w.session().selection().nodes)
+        selected.insert(rig.nodes[n].path);
+    EXPECT_TRUE(selected.count("arm.L::ctrls.ik"));
+    EXPECT_TRUE(selected.count("index.L::ctrls.fk.0")) << "the hand's and fingers' groups nest in the arm's";
+    EXPECT_FALSE(selected.count("arm.R::ctrls.ik"));
+    EXPECT_FALSE(selected.count("spine::ctrls.cog"));
 }
