@@ -62,7 +62,7 @@ std::string usage()
            "                          --json also writes the bones and each vertex's position and weights as JSON)\n"
            "       rigsmith-cli skin export GUIDE.yml -o FILE.rschunks|--depot DIR [--asset NAME] [--mesh NAME]...\n"
            "                          [--vertices MESH:0-99,120]... [--joints NAME,...] [--bind-pose] [--dual-quaternion]\n"
-           "                          [--neighbours N]   (skin chunks of the guide's bound meshes, or of the selection: whole\n"
+           "                          [--neighbours N] [--json REPORT|-]   (skin chunks of the guide's bound meshes, or of the selection: whole\n"
            "                          meshes, vertex ranges, the vertices those joints weight (all their weights); weights,\n"
            "                          influences, bind positions and those in the guide's test pose unless --bind-pose;\n"
            "                          --depot: one file per mesh, DIR/<asset>/<mesh>.rschunks, asset the guide's file name)\n"
@@ -85,7 +85,8 @@ std::string usage()
            "                          file) get weights on the source's influences by the same decision tree; SOURCE is a\n"
            "                          chunk file or a skinned model file (.glb, .fbx, .dae...: each skinned mesh a chunk, its\n"
            "                          joints by name); -o .glb/.gltf writes TARGET's meshes skinned on the source's skeleton)\n"
-           "       rigsmith-cli skin info FILE.rschunks [--mesh NAME] [--from I] [--limit N]   (what a chunk file holds)\n"
+           "       rigsmith-cli skin info FILE.rschunks [--mesh NAME] [--from I] [--limit N] [--json REPORT|-]\n"
+           "                          (what a chunk file holds; --json - prints only the JSON)\n"
            "       rigsmith-cli check-templates [DIR...]\n"
            "       rigsmith-cli describe-template ID   (what Rigsmith understood of every key)\n"
            "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";
