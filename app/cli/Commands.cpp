@@ -86,7 +86,8 @@ std::string usage()
            "                          chunk file or a skinned model file (.glb, .fbx, .dae...: each skinned mesh a chunk, its\n"
            "                          joints by name); -o .glb/.gltf writes TARGET's meshes skinned on the source's skeleton)\n"
            "       rigsmith-cli skin info FILE.rschunks [--mesh NAME] [--from I] [--limit N] [--json REPORT|-]\n"
-           "                          (what a chunk file holds; --json - prints only the JSON)\n"
+           "                          (what a chunk file holds)\n"
+           "       --json -: the report alone on stdout (the lines for people go to stderr)\n"
            "       rigsmith-cli check-templates [DIR...]\n"
            "       rigsmith-cli describe-template ID   (what Rigsmith understood of every key)\n"
            "       rigsmith-cli shape-icons [--check] [SHAPES_DIR]   (writes SHAPES_DIR/icons/<shape>.svg)\n";

@@ -43,7 +43,7 @@ int runSkinInfo(const std::vector<std::string>& args)
     print(chunks.diagnostics());
     if (!chunks)
         return 1;
-    // --json - prints the report alone on stdout; a file beside the text.
+    // --json - prints the report alone on stdout (the text would only repeat it); a file beside the text.
     const bool text = json != "-";
     if (text)
         std::cout << file << ": " << chunks->size() << (chunks->size() == 1 ? " chunk\n" : " chunks\n");

@@ -299,6 +299,7 @@ int runSkinExport(const std::vector<std::string>& args)
     ExportArguments e;
     if (const int usage = parseExport(args, e))
         return usage;
+    const HumanLinesAside aside(e.json);
     if (e.depot.empty() && !canWriteBeside(e.output, "skin chunks"))
         return 1;
     auto character = loadCharacter(e.guide);

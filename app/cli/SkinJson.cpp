@@ -4,6 +4,7 @@
 #include "io/AtomicFile.h"
 
 #include <charconv>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
@@ -35,12 +36,27 @@ int writeJsonReport(const std::string& path, const Json& report, bool compact)
     if (path.empty())
         return 0;
     if (path == "-") {
-        std::cout << jsonText(report, compact);
+        // C's stdout: std::cout may be set aside for stderr (HumanLinesAside).
+        std::cout.flush();
+        std::fputs(jsonText(report, compact).c_str(), stdout);
+        std::fflush(stdout);
         return 0;
     }
     const Status written = io::writeFileAtomically(path, jsonText(report, compact));
     print(written.diagnostics());
     return written.failed() ? 1 : 0;
+}
+
+HumanLinesAside::HumanLinesAside(const std::string& jsonPath)
+{
+    if (jsonPath == "-")
+        m_stdout = std::cout.rdbuf(std::cerr.rdbuf());
+}
+
+HumanLinesAside::~HumanLinesAside()
+{
+    if (m_stdout)
+        std::cout.rdbuf(m_stdout);
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <iosfwd>
 #include <string>
 
 namespace rs::cli {
@@ -25,6 +26,20 @@ std::string jsonText(const Json& report, bool compact = false);
 // --json PATH: "" writes nothing, "-" prints on stdout, else the file,
 // atomically. 0, or 1 when it cannot be written (printed).
 int writeJsonReport(const std::string& path, const Json& report, bool compact = false);
+
+// With --json - stdout holds the report alone: while one of these lives, the
+// lines a command prints for people (std::cout) go to stderr. Nothing for
+// any other path.
+class HumanLinesAside {
+public:
+    explicit HumanLinesAside(const std::string& jsonPath);
+    ~HumanLinesAside();
+    HumanLinesAside(const HumanLinesAside&) = delete;
+    HumanLinesAside& operator=(const HumanLinesAside&) = delete;
+
+private:
+    std::streambuf* m_stdout = nullptr;
+};
 
 // A chunk's header: mesh, model, who exported it when with what, vertex counts, skinning.
 Json chunkHeaderJson(const skin::SkinChunk& chunk);

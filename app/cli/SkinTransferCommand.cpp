@@ -178,6 +178,7 @@ int runSkinTransfer(const std::vector<std::string>& args)
     TransferArguments t;
     if (const int usage = parseTransfer(args, t))
         return usage;
+    const HumanLinesAside aside(t.json);
     if (!canWriteBeside(t.output, writesGltf(t.output) ? "skinned glTF" : "skin chunks"))
         return 1;
     const auto chunks = readSource(t.source);

@@ -153,6 +153,15 @@ assert all(0 < a <= 1 for a in per(n1)) and all(a < b for a, b in zip(per(n1), p
 "$cli" skin import remesh.yml all.rschunks --progress > /dev/null 2> progress.txt || fail "--progress"
 grep -q "^importing weights: 100%$" progress.txt || fail "--progress prints percent"
 
+# --json -: stdout is the report alone (the lines for people go to stderr), for every command.
+json_only() { "$@" 2> /dev/null | python3 -c 'import json, sys; json.load(sys.stdin)'; }
+json_only "$cli" skin import remesh.yml all.rschunks --json - || fail "import --json - is JSON alone"
+json_only "$cli" skin export g.yml -o stdout.rschunks --json - || fail "export --json - is JSON alone"
+json_only "$cli" skin transfer all.rschunks remesh.obj -o stdout-transfer.rschunks --json - || fail "transfer --json - is JSON alone"
+json_only "$cli" skin info all.rschunks --json - || fail "info --json - is JSON alone"
+"$cli" skin export g.yml -o stdout.rschunks --json - 2> human.txt > /dev/null
+grep -q "^skin chunks: stdout.rschunks$" human.txt || fail "the lines for people go to stderr"
+
 # Bad values: refused by name, exit 2, nothing written.
 cp remesh.weights before.weights
 refused() { # COMMAND... -- MESSAGE
