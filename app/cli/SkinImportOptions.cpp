@@ -1,7 +1,6 @@
 #include "cli/SkinImportOptions.h"
 
 #include "cli/Commands.h"
-#include "io/AtomicFile.h"
 #include "io/WeightsFile.h"
 
 #include <iostream>

@@ -12,7 +12,6 @@
 #include "cli/SkinImportOptions.h"
 #include "cli/SkinTransferExport.h"
 
-#include "io/AtomicFile.h"
 #include "io/ModelImport.h"
 #include "io/SkinChunks.h"
 #include "skin/ModelChunks.h"
