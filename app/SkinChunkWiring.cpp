@@ -1,5 +1,6 @@
 // MainWindow's skin chunks: Skin > Skin Chunks (the dock), export of the
-// dock's scope, import and preview on a worker thread with progress and
+// dock's scope (the selected joints: those built from the selected guide
+// joints, or the selected instance's), import and preview on a worker thread with progress and
 // Cancel (as Skin > Bind), and the chunk file inspector. The session does the
 // work (session/SkinChunkJob.h): an import is one undo step; a preview
 // selects the vertices of the route the dock names, so the viewport's
@@ -90,6 +91,25 @@ void MainWindow::createSkinChunkDock()
 
 namespace {
 
+// The skin joints of the selection: those built from the selected guide
+// joints, or, when none is selected, every skin joint of the selected instance.
+std::vector<NodeKey> selectedSkinJoints(const session::Session& s)
+{
+    std::vector<NodeKey> keys;
+    const session::Selection& selection = s.selection();
+    if (!s.rig())
+        return keys;
+    for (const skin::SkinBone& bone : s.skinBones()) {
+        const model::RigNode& node = s.rig()->nodes[bone.node];
+        const bool picked = selection.joints.empty()
+                                ? selection.instance != model::kNoId && node.owner == selection.instance
+                                : std::find(selection.joints.begin(), selection.joints.end(), node.guide) != selection.joints.end();
+        if (picked)
+            keys.push_back(bone.key);
+    }
+    return keys;
+}
+
 session::SkinScope exportScopeOf(widgets::SkinChunkPanel::ExportScope scope, const session::Session& s)
 {
     switch (scope) {
@@ -102,6 +122,8 @@ session::SkinScope exportScopeOf(widgets::SkinChunkPanel::ExportScope scope, con
                 meshes.push_back(mesh);
         return session::SkinScope::ofMeshes(std::move(meshes));
     }
+    case widgets::SkinChunkPanel::ExportScope::SelectedJoints:
+        return session::SkinScope::ofJoints(selectedSkinJoints(s));
     case widgets::SkinChunkPanel::ExportScope::SelectedVertices:
         break;
     }
@@ -150,8 +172,9 @@ void MainWindow::inspectSkinChunks(const QString& file)
         m_chunkPanel->showInspection(QString::fromStdString(formatAll(chunks.diagnostics())));
         return;
     }
-    m_chunkPanel->showInspection(QString::fromStdString(io::describeSkinChunks(
-        file.toStdString(), *chunks, std::size_t(m_chunkPanel->inspectFrom()), std::size_t(m_chunkPanel->inspectLimit()))));
+    m_chunkPanel->showInspection(QString::fromStdString(io::describeSkinChunks(file.toStdString(), *chunks, std::size_t(m_chunkPanel->inspectFrom()),
+                                                                               std::size_t(m_chunkPanel->inspectLimit()))),
+                                 file);
 }
 
 void MainWindow::importSkinChunks(const QStringList& files, bool preview)
@@ -197,6 +220,7 @@ void MainWindow::importSkinChunks(const QStringList& files, bool preview)
     box->showMoved(prepared->influences.matches);
     auto job = std::make_shared<ChunkImportJob>();
     job->job = prepared.take();
+    job->job.append = m_chunkPanel->appendImport();
     job->preview = preview;
     ChunkImportJob* raw = job.get();
     job->job.options.progress = [raw](double fraction) {

@@ -78,8 +78,10 @@ QWidget* SkinChunkPanel::makeExportBox()
     auto* box = new QGroupBox(tr("Export"), this);
     auto* row = new QHBoxLayout(box);
     m_exportScope = new QComboBox(box);
-    m_exportScope->addItems({tr("Whole character"), tr("Meshes with selected vertices"), tr("Selected vertices")});
-    m_exportScope->setToolTip(tr("What the chunk file holds: every bound mesh, the whole meshes you selected vertices on, or only the selected vertices"));
+    m_exportScope->addItems({tr("Whole character"), tr("Meshes with selected vertices"), tr("Selected vertices"), tr("Selected joints' vertices")});
+    m_exportScope->setToolTip(tr("What the chunk file holds: every bound mesh, the whole meshes you selected vertices on, only the selected "
+                                 "vertices, or the vertices the selected joints (or the selected template instance's skin joints) weight, "
+                                 "with all their weights"));
     row->addWidget(m_exportScope, 1);
     QAbstractButton* save = addButton(box, "export", tr("Export..."), tr("Write the weights, positions (current pose and bind pose) and influences to a .rschunks file"));
     connect(save, &QAbstractButton::clicked, this, &SkinChunkPanel::exportRequested);
@@ -118,6 +120,11 @@ QWidget* SkinChunkPanel::makeImportBox()
     m_onto = new QComboBox(box);
     m_onto->addItems({tr("Every mesh"), tr("Selected vertices")});
     form->addRow(tr("Onto"), m_onto);
+    m_append = new QCheckBox(tr("Append: keep the weights the chunks do not cover"), box);
+    m_append->setObjectName("appendImport");
+    m_append->setToolTip(tr("A mesh loaded 1:1 from a chunk of only some of its vertices keeps its own weights on the others; "
+                            "off, the import replaces every vertex's weights (the others by the fallback method)"));
+    form->addRow(m_append);
     m_previewSelects = new QComboBox(box);
     m_previewSelects->addItems({tr("Vertices transferred (not 1:1)"), tr("Vertices loaded 1:1")});
     m_previewSelects->setToolTip(tr("Preview runs the decision tree without applying it and selects these vertices in the viewport"));
@@ -214,8 +221,15 @@ QWidget* SkinChunkPanel::makeInspectorBox()
     auto* column = new QVBoxLayout(page);
     auto* row = new QHBoxLayout;
     m_from = count(page, 0, 1 << 30, tr("The first influence and vertex row shown"));
+    m_from->setObjectName("inspectFrom");
     m_limit = count(page, 0, 100000, tr("How many rows of each are shown"));
+    m_limit->setObjectName("inspectLimit");
     m_limit->setValue(10);
+    for (QSpinBox* box : {m_from, m_limit})
+        connect(box, &QSpinBox::valueChanged, this, [this] {
+            if (!m_inspected.isEmpty())
+                emit inspectRequested(m_inspected); // the same file, other rows
+        });
     row->addWidget(new QLabel(tr("From"), page));
     row->addWidget(m_from);
     row->addWidget(new QLabel(tr("Limit"), page));
@@ -259,6 +273,8 @@ SkinChunkPanel::ExportScope SkinChunkPanel::exportScope() const { return ExportS
 void SkinChunkPanel::setExportScope(ExportScope scope) { m_exportScope->setCurrentIndex(int(scope)); }
 bool SkinChunkPanel::importOntoSelection() const { return m_onto->currentIndex() == 1; }
 void SkinChunkPanel::setImportOntoSelection(bool on) { m_onto->setCurrentIndex(on ? 1 : 0); }
+bool SkinChunkPanel::appendImport() const { return m_append->isChecked(); }
+void SkinChunkPanel::setAppendImport(bool on) { m_append->setChecked(on); }
 SkinChunkPanel::PreviewSelects SkinChunkPanel::previewSelects() const { return PreviewSelects(m_previewSelects->currentIndex()); }
 void SkinChunkPanel::setPreviewSelects(PreviewSelects what) { m_previewSelects->setCurrentIndex(int(what)); }
 int SkinChunkPanel::inspectFrom() const { return m_from->value(); }
@@ -336,6 +352,10 @@ void SkinChunkPanel::showReports(const std::vector<skin::MeshImportReport>& repo
     }
 }
 
-void SkinChunkPanel::showInspection(const QString& text) { m_inspector->setPlainText(text); }
+void SkinChunkPanel::showInspection(const QString& text, const QString& file)
+{
+    m_inspected = file;
+    m_inspector->setPlainText(text);
+}
 
 } // namespace rs::widgets

@@ -1,13 +1,15 @@
 #pragma once
 // The Skin Chunks dock (issue 20 item 6): export the character's weights as a
-// skin chunk file (the whole character, the meshes with selected vertices, or
-// only the selected vertices); import one or many chunk files with every
-// option of skin::TransferOptions and the missing-influence choices
-// (SkinInfluenceBox) onto everything or the selected vertices,
+// skin chunk file (the whole character, the meshes with selected vertices,
+// only the selected vertices, or the vertices the selected joints weight);
+// import one or many chunk files with every option of skin::TransferOptions
+// and the missing-influence choices (SkinInfluenceBox) onto everything or the
+// selected vertices, replacing the meshes' weights or appending,
 // or preview the import (the decision tree run without applying: per mesh its
 // route and counts, and the vertices of one route selected); and inspect a
 // chunk file (its meshes, counts, influences, dates, user and vertex rows
-// from an index, at most a limit). It only holds options and shows results;
+// from an index, at most a limit; changing either shows the file again). It
+// only holds options and shows results;
 // the app runs each request as session work (an import is one undo step).
 #include "skin/Transfer.h"
 
@@ -38,7 +40,7 @@ class SkinChunkPanel : public QWidget {
     Q_OBJECT
 public:
     // What an export covers, in session::SkinScope terms.
-    enum class ExportScope { Character, SelectedMeshes, SelectedVertices };
+    enum class ExportScope { Character, SelectedMeshes, SelectedVertices, SelectedJoints };
     // Which vertices a preview selects.
     enum class PreviewSelects { Transferred, OneToOne };
 
@@ -52,14 +54,21 @@ public:
     void setOptions(const skin::TransferOptions& options);
     bool importOntoSelection() const;
     void setImportOntoSelection(bool on);
+    // Append: a mesh loaded 1:1 from a chunk of some of its vertices keeps its
+    // weights on the others (session::SkinImportJob::append); off: replaced.
+    bool appendImport() const;
+    void setAppendImport(bool on);
     PreviewSelects previewSelects() const;
     void setPreviewSelects(PreviewSelects what);
 
     // One row per mesh: route, source, counts per method; `preview`: nothing was applied.
     void showReports(const std::vector<skin::MeshImportReport>& reports, bool preview);
-    void showInspection(const QString& text);
+    // `file`: what the text describes; From and Limit changes ask for it again.
+    void showInspection(const QString& text, const QString& file = {});
     int inspectFrom() const;
     int inspectLimit() const;
+    QSpinBox* inspectFromBox() const { return m_from; }
+    QSpinBox* inspectLimitBox() const { return m_limit; }
 
     // Missing influences (stop / map / create) and the name map file, and what they did.
     SkinInfluenceBox* influences() const { return m_influences; }
@@ -106,6 +115,7 @@ private:
     QDoubleSpinBox* m_inpaintDistance = nullptr;
     QDoubleSpinBox* m_inpaintAngle = nullptr;
     QComboBox* m_onto = nullptr;
+    QCheckBox* m_append = nullptr;
     QComboBox* m_previewSelects = nullptr;
     SkinInfluenceBox* m_influences = nullptr;
     QTreeWidget* m_reports = nullptr;
@@ -114,6 +124,7 @@ private:
     QSpinBox* m_from = nullptr;
     QSpinBox* m_limit = nullptr;
     QPlainTextEdit* m_inspector = nullptr;
+    QString m_inspected; // the file the inspector shows
 };
 
 } // namespace rs::widgets

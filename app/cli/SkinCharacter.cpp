@@ -91,18 +91,6 @@ bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBo
     return true;
 }
 
-std::string jsonString(const std::string& text)
-{
-    std::string out = "\"";
-    for (const char c : text) {
-        if (c == '"' || c == '\\')
-            out += '\\';
-        if (static_cast<unsigned char>(c) >= 0x20)
-            out += c;
-    }
-    return out + "\"";
-}
-
 int usageError(const std::string& command, const std::string& message)
 {
     std::cerr << "rigsmith-cli " << command << ": " << message << '\n' << usage();

@@ -50,8 +50,6 @@ bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBo
 int usageError(const std::string& command, const std::string& message);
 bool parseCount(const std::string& text, int low, int high, int& out);
 bool parseNumber(const std::string& text, double low, double high, double& out);
-// A JSON string literal of `text` (control characters dropped).
-std::string jsonString(const std::string& text);
 // Whether `path` may be written (checked before long work), with a message when not.
 bool canWriteBeside(const std::string& path, const std::string& what);
 

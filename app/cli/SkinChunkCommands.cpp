@@ -3,6 +3,7 @@
 // SkinTransferCommand.cpp.
 #include "cli/Commands.h"
 #include "cli/SkinCharacter.h"
+#include "cli/SkinJson.h"
 
 #include "io/SkinChunkInfo.h"
 #include "io/SkinChunks.h"
@@ -13,7 +14,7 @@ namespace rs::cli {
 
 int runSkinInfo(const std::vector<std::string>& args)
 {
-    std::string file, mesh;
+    std::string file, mesh, json;
     int limit = 10, from = 0;
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -26,6 +27,10 @@ int runSkinInfo(const std::vector<std::string>& args)
                 return usageError("skin info", "--from is the first index to print, not '" + args[i] + "'");
         } else if (a == "--mesh" && hasValue) {
             mesh = args[++i];
+        } else if (a == "--json" && hasValue) {
+            json = args[++i];
+            if (json.empty())
+                return usageError("skin info", "--json is a file name (or - for stdout), not ''");
         } else if (file.empty() && !a.empty() && a[0] != '-') {
             file = a;
         } else {
@@ -38,18 +43,24 @@ int runSkinInfo(const std::vector<std::string>& args)
     print(chunks.diagnostics());
     if (!chunks)
         return 1;
-    std::cout << file << ": " << chunks->size() << (chunks->size() == 1 ? " chunk\n" : " chunks\n");
-    bool shown = false;
+    // --json - prints the report alone on stdout (the text would only repeat it); a file beside the text.
+    const bool text = json != "-";
+    if (text)
+        std::cout << file << ": " << chunks->size() << (chunks->size() == 1 ? " chunk\n" : " chunks\n");
+    Json shown = Json::array();
     for (std::size_t k = 0; k < chunks->size(); ++k)
         if (mesh.empty() || (*chunks)[k].mesh == mesh) {
-            std::cout << io::describeSkinChunk((*chunks)[k], k, std::size_t(from), std::size_t(limit));
-            shown = true;
+            if (text)
+                std::cout << io::describeSkinChunk((*chunks)[k], k, std::size_t(from), std::size_t(limit));
+            Json chunk{{"chunk", k}};
+            chunk.update(chunkJson((*chunks)[k], std::size_t(from), std::size_t(limit)));
+            shown.push_back(std::move(chunk));
         }
-    if (!shown && !mesh.empty()) {
+    if (shown.empty() && !mesh.empty()) {
         std::cerr << file << ": error: no chunk of a mesh named '" << mesh << "'\n";
         return 1;
     }
-    return 0;
+    return writeJsonReport(json, Json{{"file", file}, {"chunkCount", chunks->size()}, {"from", from}, {"limit", limit}, {"chunks", std::move(shown)}});
 }
 
 } // namespace rs::cli

@@ -1,6 +1,7 @@
 // rigsmith-cli skin bind: automatic weights without a display.
 #include "cli/Commands.h"
 #include "cli/SkinCharacter.h"
+#include "cli/SkinJson.h"
 
 #include "io/AtomicFile.h"
 #include "io/GuideFile.h"
@@ -16,7 +17,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 
 #include <unistd.h>
 
@@ -24,51 +24,36 @@ namespace rs::cli {
 
 namespace {
 
-void jsonPoint(std::ostream& out, const Vec3& p)
-{
-    out << '[' << p.x << ',' << p.y << ',' << p.z << ']';
-}
-
 // --json: the bones (rig node name, parent bone, head and segment ends) and
 // each bound mesh's vertices (as imported: file order, metres, Y-up) with
 // their weights as [bone, weight] pairs; read by tests/tools/compare-blender-weights.py.
-std::string weightsJson(const model::Rig& rig, const std::vector<skin::SkinBone>& bones, const std::vector<const model::Mesh*>& meshes,
-                        const std::vector<io::BoundMesh>& bound)
+Json weightsJson(const model::Rig& rig, const std::vector<skin::SkinBone>& bones, const std::vector<const model::Mesh*>& meshes,
+                 const std::vector<io::BoundMesh>& bound)
 {
-    std::ostringstream out;
-    out.precision(9);
-    out << "{\"bones\": [";
-    for (std::size_t b = 0; b < bones.size(); ++b) {
-        out << (b ? ",\n " : "\n ") << "{\"name\": " << jsonString(rig.nodes[bones[b].node].name) << ", \"parent\": " << bones[b].parent
-            << ", \"head\": ";
-        jsonPoint(out, bones[b].head);
-        out << ", \"tails\": [";
-        for (std::size_t t = 0; t < bones[b].tails.size(); ++t) {
-            out << (t ? "," : "");
-            jsonPoint(out, bones[b].tails[t]);
-        }
-        out << "]}";
+    Json boneList = Json::array();
+    for (const skin::SkinBone& bone : bones) {
+        Json tails = Json::array();
+        for (const Vec3& tail : bone.tails)
+            tails.push_back(jsonPoint(glm::vec3(tail)));
+        boneList.push_back(Json{{"name", rig.nodes[bone.node].name}, {"parent", bone.parent}, {"head", jsonPoint(glm::vec3(bone.head))},
+                                {"tails", std::move(tails)}});
     }
-    out << "],\n\"meshes\": [";
+    Json meshList = Json::array();
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const model::MeshWeights& w = bound[m].weights;
-        out << (m ? ",\n" : "\n") << "{\"model\": " << jsonString(bound[m].model) << ", \"name\": " << jsonString(bound[m].name)
-            << ",\n \"positions\": [";
-        for (std::size_t v = 0; v < meshes[m]->positions.size(); ++v) {
-            out << (v ? "," : "");
-            jsonPoint(out, Vec3(meshes[m]->positions[v]));
-        }
-        out << "],\n \"weights\": [";
+        Json positions = Json::array(), weights = Json::array();
+        for (const auto& p : meshes[m]->positions)
+            positions.push_back(jsonPoint(glm::vec3(p)));
         for (std::size_t v = 0; v + 1 < w.offsets.size(); ++v) {
-            out << (v ? ",[" : "[");
+            Json vertex = Json::array();
             for (std::uint32_t k = w.offsets[v]; k < w.offsets[v + 1]; ++k)
-                out << (k > w.offsets[v] ? "," : "") << '[' << w.influences[k].joint << ',' << w.influences[k].weight << ']';
-            out << ']';
+                vertex.push_back(Json::array({w.influences[k].joint, jsonNumber(w.influences[k].weight)}));
+            weights.push_back(std::move(vertex));
         }
-        out << "]}";
+        meshList.push_back(Json{{"model", bound[m].model}, {"name", bound[m].name}, {"positions", std::move(positions)},
+                                {"weights", std::move(weights)}});
     }
-    out << "]}\n";
-    return out.str();
+    return Json{{"bones", std::move(boneList)}, {"meshes", std::move(meshList)}};
 }
 
 } // namespace
@@ -240,9 +225,7 @@ int runSkin(const std::vector<std::string>& args)
             return 1;
     }
     if (!jsonPath.empty()) {
-        const Status written = io::writeFileAtomically(jsonPath, weightsJson(rig, *bones, boundMeshes, bound));
-        print(written.diagnostics());
-        if (written.failed())
+        if (writeJsonReport(jsonPath, weightsJson(rig, *bones, boundMeshes, bound), true) != 0)
             return 1;
         std::cout << "weights as JSON: " << jsonPath << '\n';
     }

@@ -1,10 +1,12 @@
 // rigsmith-cli skin export: skin chunks of a guide's bound meshes (issue 20)
 // into one file, or into a weight depot (one file per mesh), from any
 // selection: meshes, vertices, the vertices joints influence (Skinner's
-// "export any combination of mesh / joint / vertex selection"; the union).
+// "export any combination of mesh / joint / vertex selection"; the union);
+// --json reports each chunk's header and file.
 #include "cli/Commands.h"
 #include "cli/SkinCharacter.h"
 #include "cli/SkinChunkSupport.h"
+#include "cli/SkinJson.h"
 
 #include "eval/PoseTools.h"
 #include "io/AtomicFile.h"
@@ -22,7 +24,7 @@ namespace rs::cli {
 namespace {
 
 struct ExportArguments {
-    std::string guide, output, depot, asset;
+    std::string guide, output, depot, asset, json;
     std::set<std::string> meshes;
     std::vector<VertexSelection> vertices;
     std::vector<std::string> joints;
@@ -41,10 +43,10 @@ int parseExportOption(const std::vector<std::string>& args, std::size_t& i, Expo
         return 0;
     const std::string& value = args[i + 1];
     auto bad = [&](const std::string& what) { return usageError("skin export", a + " is " + what + ", not '" + value + "'"); };
-    if (a == "-o" || a == "--depot" || a == "--asset") {
+    if (a == "-o" || a == "--depot" || a == "--asset" || a == "--json") {
         if (value.empty())
-            return bad("a file or folder name");
-        (a == "-o" ? e.output : a == "--depot" ? e.depot : e.asset) = value;
+            return bad(a == "--json" ? "a file name (or - for stdout)" : "a file or folder name");
+        (a == "-o" ? e.output : a == "--depot" ? e.depot : a == "--asset" ? e.asset : e.json) = value;
     } else if (a == "--mesh") {
         e.meshes.insert(value);
     } else if (a == "--vertices") {
@@ -252,6 +254,44 @@ std::optional<skin::ChunkExportOptions> exportOptions(const ExportArguments& e, 
     return options;
 }
 
+std::vector<std::string> chunkFiles(const ExportArguments& e, const std::vector<skin::SkinChunk>& chunks)
+{
+    if (e.depot.empty())
+        return std::vector<std::string>(chunks.size(), e.output);
+    std::vector<std::string> meshes;
+    for (const skin::SkinChunk& k : chunks)
+        meshes.push_back(k.mesh);
+    return depotPaths(e.depot, e.asset.empty() ? assetOf(e.guide) : e.asset, meshes);
+}
+
+// --json: what was asked and, per chunk, its header and the file it went to.
+int writeExportJson(const ExportArguments& e, const std::vector<skin::SkinChunk>& chunks)
+{
+    Json vertices = Json::array();
+    for (const VertexSelection& s : e.vertices) {
+        Json ranges = Json::array();
+        for (const auto& [first, last] : s.ranges)
+            ranges.push_back(Json::array({first, last}));
+        vertices.push_back(Json{{"mesh", s.mesh}, {"ranges", std::move(ranges)}});
+    }
+    const std::vector<std::string> files = chunkFiles(e, chunks);
+    Json chunkList = Json::array();
+    for (std::size_t k = 0; k < chunks.size(); ++k) {
+        Json chunk = chunkHeaderJson(chunks[k]);
+        chunk["file"] = files[k];
+        chunkList.push_back(std::move(chunk));
+    }
+    const Json report{{"guide", e.guide},
+                      {"output", e.output.empty() ? Json(nullptr) : Json(e.output)},
+                      {"depot", e.depot.empty() ? Json(nullptr) : Json(e.depot)},
+                      {"options", Json{{"bindPose", e.bindPose},
+                                       {"skinning", e.method == skin::SkinningMethod::DualQuaternion ? "dual-quaternion" : "linear"},
+                                       {"neighbours", e.neighbourSample}}},
+                      {"selection", Json{{"meshes", e.meshes}, {"vertices", std::move(vertices)}, {"joints", e.joints}}},
+                      {"chunks", std::move(chunkList)}};
+    return writeJsonReport(e.json, report);
+}
+
 } // namespace
 
 int runSkinExport(const std::vector<std::string>& args)
@@ -259,6 +299,7 @@ int runSkinExport(const std::vector<std::string>& args)
     ExportArguments e;
     if (const int usage = parseExport(args, e))
         return usage;
+    const HumanLinesAside aside(e.json);
     if (e.depot.empty() && !canWriteBeside(e.output, "skin chunks"))
         return 1;
     auto character = loadCharacter(e.guide);
@@ -287,7 +328,7 @@ int runSkinExport(const std::vector<std::string>& args)
                   << (k.inBindPose ? "bind pose" : "the guide's test pose and bind pose") << '\n';
     if (e.depot.empty())
         std::cout << "skin chunks: " << e.output << '\n';
-    return 0;
+    return writeExportJson(e, chunks);
 }
 
 } // namespace rs::cli

@@ -216,6 +216,7 @@ int runSkinImport(const std::vector<std::string>& args)
     ImportArguments m;
     if (const int usage = parseImport(args, m))
         return usage;
+    const HumanLinesAside aside(m.json);
     if (!canWriteBeside(io::weightsPathFor(m.guide), "weights"))
         return 1;
     auto chunks = readSources(m);

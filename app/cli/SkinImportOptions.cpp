@@ -1,11 +1,9 @@
 #include "cli/SkinImportOptions.h"
 
 #include "cli/Commands.h"
-#include "io/AtomicFile.h"
 #include "io/WeightsFile.h"
 
 #include <iostream>
-#include <sstream>
 
 namespace rs::cli {
 
@@ -89,75 +87,72 @@ void printImportReport(const skin::MeshImportReport& r, const ImportTarget& t)
     std::cout << '\n';
 }
 
-std::string reportCountsJson(const skin::MeshImportReport& r, skin::TransferMethod method)
-{
-    std::ostringstream out;
-    out << "\"vertices\": " << r.vertices << ", \"route\": \"" << skin::importRouteName(r.route) << "\", \"source\": " << jsonString(r.source)
-        << ", \"why\": " << jsonString(r.why) << ", \"method\": \"" << skin::transferMethodName(method) << "\", \"oneToOne\": " << r.oneToOne
-        << ", \"singleInfluence\": " << r.singleInfluence << ", \"closestPoint\": " << r.closestPoint
-        << ", \"closestNeighbours\": " << r.closestNeighbours << ", \"normalFilterFallbacks\": " << r.normalFilterFallbacks
-        << ", \"inpainted\": " << r.inpainted << ", \"smoothed\": " << r.smoothed << ", \"milliseconds\": " << r.milliseconds;
-    return out.str();
-}
-
 namespace {
 
-std::string influencesJson(const ImportArguments& m, const skin::InfluenceResolution& r)
+Json influencesJson(const ImportArguments& m, const skin::InfluenceResolution& r)
 {
     using How = skin::InfluenceMatch::How;
-    std::ostringstream out;
-    out << "{\"missing\": \"" << skin::missingInfluencesName(m.influences.missing) << "\", \"identity\": " << r.count(How::Identity)
-        << ", \"name\": " << r.count(How::Name) << ", \"mapped\": " << r.count(How::Mapped) << ", \"created\": " << r.count(How::Created)
-        << ", \"unused\": " << r.count(How::Unused) << ", \"moved\": [";
-    bool first = true;
-    for (const skin::InfluenceMatch& match : r.matches) {
-        if (match.how != How::Mapped && match.how != How::Created)
-            continue;
-        out << (first ? "" : ", ") << "{\"influence\": " << jsonString(match.name) << ", \"to\": " << jsonString(match.target)
-            << ", \"how\": \"" << (match.how == How::Mapped ? "mapped" : "created") << "\", \"meshes\": [";
-        for (std::size_t k = 0; k < match.meshes.size(); ++k)
-            out << (k ? ", " : "") << jsonString(match.meshes[k]);
-        out << "]}";
-        first = false;
-    }
-    out << "]}";
-    return out.str();
-}
-
-std::string importJson(const ImportArguments& m, const std::vector<skin::SkinChunk>& chunks, const std::vector<ImportTarget>& targets,
-                       const std::vector<skin::MeshImportReport>& reports, const skin::InfluenceResolution& influences)
-{
-    std::ostringstream out;
-    out << "{\"guide\": " << jsonString(m.guide) << ", \"weights\": " << jsonString(io::weightsPathFor(m.guide))
-        << ", \"append\": " << (m.append ? "true" : "false") << ",\n \"influences\": " << influencesJson(m, influences) << ",\n \"chunks\": [";
-    for (std::size_t k = 0; k < chunks.size(); ++k)
-        out << (k ? ", " : "") << "{\"mesh\": " << jsonString(chunks[k].mesh) << ", \"vertices\": " << chunks[k].vertexCount()
-            << ", \"exported\": " << jsonString(skin::formatExportTime(chunks[k].exportedAtMicroseconds))
-            << ", \"user\": " << jsonString(chunks[k].user) << "}";
-    out << "],\n \"meshes\": [";
-    for (std::size_t i = 0; i < reports.size(); ++i)
-        out << (i ? ",\n  " : "\n  ") << "{\"model\": " << jsonString(targets[i].mesh.model) << ", \"mesh\": " << jsonString(reports[i].mesh)
-            << ", " << reportCountsJson(reports[i], m.options.method) << ", \"written\": " << targets[i].written
-            << ", \"kept\": " << targets[i].kept << "}";
-    out << "]}\n";
-    return out.str();
+    Json moved = Json::array();
+    for (const skin::InfluenceMatch& match : r.matches)
+        if (match.how == How::Mapped || match.how == How::Created)
+            moved.push_back(Json{{"influence", match.name},
+                                 {"to", match.target},
+                                 {"how", match.how == How::Mapped ? "mapped" : "created"},
+                                 {"meshes", match.meshes}});
+    return Json{{"missing", skin::missingInfluencesName(m.influences.missing)},
+                {"identity", r.count(How::Identity)},
+                {"name", r.count(How::Name)},
+                {"mapped", r.count(How::Mapped)},
+                {"created", r.count(How::Created)},
+                {"unused", r.count(How::Unused)},
+                {"moved", std::move(moved)}};
 }
 
 } // namespace
+
+Json transferOptionsJson(const skin::TransferOptions& o)
+{
+    return Json{{"method", skin::transferMethodName(o.method)},
+                {"search", o.searchByCountAndOrder},
+                {"uber", o.forceUberChunk},
+                {"preDeformed", o.usePreDeformed},
+                {"distanceMultiplier", o.neighbourDistanceMultiplier},
+                {"neighbours", o.neighbourCount},
+                {"normalFilter", o.normalFilter ? Json(o.normalTolerance) : Json(nullptr)},
+                {"smooth", o.smoothSteps},
+                {"smoothThreshold", o.weightDifferenceThreshold},
+                {"maxInfluences", o.maxInfluences},
+                {"inpaintDistance", o.inpaintDistance},
+                {"inpaintAngle", o.inpaintAngleDegrees}};
+}
 
 int writeImportJson(const ImportArguments& m, const std::vector<skin::SkinChunk>& chunks, const std::vector<ImportTarget>& targets,
                     const std::vector<skin::MeshImportReport>& reports, const skin::InfluenceResolution& influences)
 {
     if (m.json.empty())
         return 0;
-    const std::string text = importJson(m, chunks, targets, reports, influences);
-    if (m.json == "-") {
-        std::cout << text;
-        return 0;
+    Json chunkList = Json::array();
+    for (const skin::SkinChunk& chunk : chunks)
+        chunkList.push_back(Json{{"mesh", chunk.mesh},
+                                 {"vertices", chunk.vertexCount()},
+                                 {"exported", skin::formatExportTime(chunk.exportedAtMicroseconds)},
+                                 {"user", chunk.user}});
+    Json meshes = Json::array();
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+        Json mesh{{"model", targets[i].mesh.model}, {"mesh", reports[i].mesh}};
+        mesh.update(importReportJson(reports[i], m.options.method));
+        mesh["written"] = targets[i].written;
+        mesh["kept"] = targets[i].kept;
+        meshes.push_back(std::move(mesh));
     }
-    const Status written = io::writeFileAtomically(m.json, text);
-    print(written.diagnostics());
-    return written.failed() ? 1 : 0;
+    const Json report{{"guide", m.guide},
+                      {"weights", io::weightsPathFor(m.guide)},
+                      {"append", m.append},
+                      {"options", transferOptionsJson(m.options)},
+                      {"influences", influencesJson(m, influences)},
+                      {"chunks", std::move(chunkList)},
+                      {"meshes", std::move(meshes)}};
+    return writeJsonReport(m.json, report);
 }
 
 } // namespace rs::cli

@@ -4,6 +4,7 @@
 // reports: a line per mesh on stdout and the --json report.
 #include "cli/SkinCharacter.h"
 #include "cli/SkinChunkSupport.h"
+#include "cli/SkinJson.h"
 
 #include "skin/InfluenceMap.h"
 #include "skin/Transfer.h"
@@ -48,7 +49,7 @@ void printImportReport(const skin::MeshImportReport& report, const ImportTarget&
 // Writes the --json report (if asked); 0, or 1 when it cannot be written.
 int writeImportJson(const ImportArguments& m, const std::vector<skin::SkinChunk>& chunks, const std::vector<ImportTarget>& targets,
                     const std::vector<skin::MeshImportReport>& reports, const skin::InfluenceResolution& influences);
-// The per-method counts of a mesh's report as JSON members ("\"oneToOne\": 3, ...").
-std::string reportCountsJson(const skin::MeshImportReport& r, skin::TransferMethod method);
+// The transfer options as asked (the reports' "options").
+Json transferOptionsJson(const skin::TransferOptions& options);
 
 } // namespace rs::cli

@@ -12,7 +12,6 @@
 #include "cli/SkinImportOptions.h"
 #include "cli/SkinTransferExport.h"
 
-#include "io/AtomicFile.h"
 #include "io/ModelImport.h"
 #include "io/SkinChunks.h"
 #include "skin/ModelChunks.h"
@@ -22,7 +21,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 
 namespace rs::cli {
 
@@ -117,16 +115,19 @@ std::vector<skin::ChunkJoint> jointsFor(const model::MeshWeights& weights, const
     return joints;
 }
 
-std::string transferJson(const TransferArguments& t, const std::vector<skin::MeshImportReport>& reports)
+Json transferJson(const TransferArguments& t, const std::vector<skin::MeshImportReport>& reports)
 {
-    std::ostringstream out;
-    out << "{\"source\": " << jsonString(t.source) << ", \"target\": " << jsonString(t.target) << ", \"output\": " << jsonString(t.output)
-        << ",\n \"meshes\": [";
-    for (std::size_t i = 0; i < reports.size(); ++i)
-        out << (i ? ",\n  " : "\n  ") << "{\"mesh\": " << jsonString(reports[i].mesh) << ", " << reportCountsJson(reports[i], t.options.method)
-            << "}";
-    out << "]}\n";
-    return out.str();
+    Json meshes = Json::array();
+    for (const skin::MeshImportReport& report : reports) {
+        Json mesh{{"mesh", report.mesh}};
+        mesh.update(importReportJson(report, t.options.method));
+        meshes.push_back(std::move(mesh));
+    }
+    return Json{{"source", t.source},
+                {"target", t.target},
+                {"output", t.output},
+                {"options", transferOptionsJson(t.options)},
+                {"meshes", std::move(meshes)}};
 }
 
 // The target's meshes (those named, if any); null on an error (printed).
@@ -152,15 +153,7 @@ std::optional<std::vector<const model::Mesh*>> targetMeshes(const TransferArgume
 
 int writeJson(const TransferArguments& t, const std::vector<skin::MeshImportReport>& reports)
 {
-    if (t.json.empty())
-        return 0;
-    if (t.json == "-") {
-        std::cout << transferJson(t, reports);
-        return 0;
-    }
-    const Status written = io::writeFileAtomically(t.json, transferJson(t, reports));
-    print(written.diagnostics());
-    return written.failed() ? 1 : 0;
+    return writeJsonReport(t.json, transferJson(t, reports));
 }
 
 // -o OUT.glb / .gltf: the target's meshes skinned on the source's skeleton.
@@ -184,6 +177,7 @@ int runSkinTransfer(const std::vector<std::string>& args)
     TransferArguments t;
     if (const int usage = parseTransfer(args, t))
         return usage;
+    const HumanLinesAside aside(t.json);
     if (!canWriteBeside(t.output, writesGltf(t.output) ? "skinned glTF" : "skin chunks"))
         return 1;
     const auto chunks = readSource(t.source);

@@ -200,6 +200,8 @@ public:
     // and neighbour sample; its rigs are set here. Fails without a built rig,
     // for an unbound mesh named by the scope, for two meshes of one name (a
     // chunk file holds one chunk per name) or when nothing is left to export.
+    // A Joints scope exports the vertices those skin joints weight (all their
+    // weights) of every bound mesh; a key that is no skin joint is an error.
     Result<std::vector<skin::SkinChunk>> exportSkinChunks(const SkinScope& scope, skin::ChunkExportOptions stamp = {}) const;
     // An import of `chunks` (many files' chunks: merged here, the newest of a
     // name wins) onto the meshes in `onto`, their influences resolved onto the
@@ -217,7 +219,9 @@ public:
     // A run job's weights as one undo step named `what` (ChangeKind::Weights):
     // a whole mesh's record is replaced (or added); with selected vertices only
     // those change. The stored influences are the rig's skin joint keys the
-    // prepare resolved them onto. Joints the job creates are added in the same
+    // prepare resolved them onto. With job.append, a mesh loaded 1:1 from a
+    // chunk of some of its vertices keeps its weights on the others (a note
+    // counts them). Joints the job creates are added in the same
     // undo step (refused when the guide changed since prepare). Refused, changing
     // nothing, when the job has not run or the models changed since prepare.
     Result<std::vector<skin::MeshImportReport>> applySkinImport(SkinImportJob job, const std::string& what);

@@ -3,6 +3,8 @@
 // prepared here, run anywhere and applied as one undo step.
 #include "session/Session.h"
 
+#include "skin/ImportScope.h"
+
 #include <algorithm>
 #include <set>
 
@@ -63,6 +65,33 @@ bool isOnBones(const model::MeshWeights& weights, const std::vector<skin::SkinBo
     return true;
 }
 
+// Per skin bone, whether `joints` names it; an error per key that is no skin joint.
+std::vector<bool> bonesOf(const std::vector<NodeKey>& joints, const std::vector<skin::SkinBone>& bones, Diagnostics& problems)
+{
+    std::vector<bool> selected(bones.size(), false);
+    for (const NodeKey& key : joints) {
+        auto at = std::find_if(bones.begin(), bones.end(), [&](const skin::SkinBone& b) { return b.key == key; });
+        if (at == bones.end())
+            problems.push_back(makeError({}, "'" + key.tag + "' of instance " + std::to_string(key.instance) + " is not a skin joint of the rig"));
+        else
+            selected[std::size_t(at - bones.begin())] = true;
+    }
+    return selected;
+}
+
+// The vertices (ascending) some bone in `bones` weights, on weights whose joints are the skin bones.
+std::vector<std::uint32_t> weightedBy(const model::MeshWeights& weights, const std::vector<bool>& bones)
+{
+    std::vector<std::uint32_t> out;
+    for (std::size_t v = 0; v < weights.vertexCount(); ++v)
+        for (const model::Influence* i = weights.begin(v); i != weights.end(v); ++i)
+            if (i->weight > 0.0f && i->joint < bones.size() && bones[i->joint]) {
+                out.push_back(std::uint32_t(v));
+                break;
+            }
+    return out;
+}
+
 } // namespace
 
 Result<std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>>> Session::scopeMeshes(const SkinScope& scope) const
@@ -70,6 +99,7 @@ Result<std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>>> Session:
     std::vector<std::pair<std::size_t, std::vector<std::uint32_t>>> out;
     switch (scope.kind) {
     case SkinScope::Kind::All:
+    case SkinScope::Kind::Joints: // every mesh; the export keeps the vertices the joints weight
         for (std::size_t m = 0; m < m_characterMeshes.size(); ++m)
             out.emplace_back(m, std::vector<std::uint32_t>{});
         break;
@@ -115,13 +145,20 @@ Result<std::vector<skin::SkinChunk>> Session::exportSkinChunks(const SkinScope& 
     stamp.rig = &*m_rig;
     stamp.posedRig = posed ? &*posed : nullptr;
     Diagnostics problems;
+    const bool byJoints = scope.kind == SkinScope::Kind::Joints;
+    if (byJoints && scope.joints.empty())
+        return Out::refused("no skin joint is selected: select joints (or their template instance), or export the whole character");
+    const std::vector<bool> bones = bonesOf(scope.joints, m_skinBones, problems);
+    if (hasErrors(problems))
+        return Out::failure(std::move(problems));
     std::vector<skin::SkinChunk> chunks;
-    for (const auto& [index, vertices] : *meshes) {
+    for (const auto& [index, scoped] : *meshes) {
+        std::vector<std::uint32_t> vertices = scoped;
         const CharacterMesh& m = m_characterMeshes[index];
         const model::Mesh& mesh = m.data(m_models);
         const std::string& path = m_models[m.model].path;
         if (!m.weights) {
-            if (scope.kind != SkinScope::Kind::All) // the whole character: its bound meshes
+            if (scope.kind != SkinScope::Kind::All && !byJoints) // the whole character: its bound meshes
                 problems.push_back(meshError(path, mesh.name, m.changed ? "it changed since it was bound: its weights no longer fit it"
                                                                         : "it has no weights to export (Skin > Bind first)"));
             continue;
@@ -132,6 +169,8 @@ Result<std::vector<skin::SkinChunk>> Session::exportSkinChunks(const SkinScope& 
         }
         const model::MeshWeights& record = m_document.bindings[std::size_t(m.binding)].weights;
         const model::MeshWeights* weights = isOnBones(record, m_skinBones) ? &record : m.weights.get();
+        if (byJoints && (vertices = weightedBy(*weights, bones)).empty())
+            continue; // no selected joint weights this mesh
         auto chunk = skin::makeSkinChunk({&mesh, weights, path, vertices}, m_skinBones, stamp);
         if (!chunk)
             return Out::failure(chunk.takeDiagnostics());
@@ -140,7 +179,7 @@ Result<std::vector<skin::SkinChunk>> Session::exportSkinChunks(const SkinScope& 
     if (hasErrors(problems))
         return Out::failure(std::move(problems));
     if (chunks.empty())
-        return Out::refused("no bound mesh to export: Skin > Bind first");
+        return Out::refused(byJoints ? "the selected joints weight no vertex: nothing to export" : "no bound mesh to export: Skin > Bind first");
     return chunks;
 }
 
@@ -166,6 +205,8 @@ Result<SkinImportJob> Session::prepareSkinImport(std::vector<skin::SkinChunk> ch
         return Out::refused("build the rig before importing skin weights: their influences land on its skin joints");
     if (influences.missing == skin::MissingInfluences::Map && influences.names.empty())
         return Out::refused("missing influences: map needs a name map (influence name = rig skin joint name)");
+    if (onto.kind == SkinScope::Kind::Joints)
+        return Out::refused("an import writes meshes or vertices: import onto the character, meshes or selected vertices, not joints");
     const Status valid = skin::validateTransferOptions(options);
     if (valid.failed())
         return Out::failure(valid.diagnostics());
@@ -277,10 +318,29 @@ Result<std::vector<skin::MeshImportReport>> Session::applySkinImport(SkinImportJ
         if (!m || m_models[m->model].model != target.model || &m->data(m_models) != target.mesh)
             return Out::refused("the guide's models changed while the weights were imported; nothing changed: import again");
         model::MeshWeights weights = std::move(job.weights[t]);
-        if (!target.vertices.empty()) {
+        std::vector<std::uint32_t> written = target.vertices;
+        if (job.append && t < job.reports.size() && m->binding >= 0 && m->weights) {
+            const std::size_t n = target.mesh->vertexCount();
+            const std::vector<bool> write =
+                skin::writtenVertices(job.chunks, job.reports[t], n, {target.vertices.empty() ? nullptr : &target.vertices, true});
+            const std::size_t count = std::size_t(std::count(write.begin(), write.end(), true));
+            if (count < n) {
+                written.clear();
+                for (std::uint32_t v = 0; v < n; ++v)
+                    if (write[v])
+                        written.push_back(v);
+                Diagnostic kept = makeWarning({m_models[m->model].path, 0, 0}, "mesh '" + target.mesh->name + "': appended: " +
+                                                                                 std::to_string(count) + " vertices written, " +
+                                                                                 std::to_string(n - count) + " kept their weights");
+                kept.severity = Severity::Note;
+                kept.subject = Subject::ofMesh(target.mesh->name);
+                job.notes.push_back(std::move(kept));
+            }
+        }
+        if (!written.empty()) {
             if (m->binding < 0 || !m->weights)
                 return Out::refused("mesh '" + target.mesh->name + "' lost its weights while importing; nothing changed");
-            weights = mergeVertices(m_document.bindings[std::size_t(m->binding)].weights, weights, target.vertices);
+            weights = mergeVertices(m_document.bindings[std::size_t(m->binding)].weights, weights, written);
         }
         records.push_back({m_models[m->model].path, target.mesh->name, target.mesh->vertexCount(), model::topologyFingerprint(*target.mesh),
                            std::move(weights)});

@@ -34,12 +34,17 @@ struct SkinScope {
         Meshes,           // the character meshes in `meshes`
         SelectedVertices, // Session::selectedVertices() (export: only those vertices; import: only
                           // those vertices of bound meshes, the others keep their weights)
+        Joints,           // export only: the vertices the skin joints in `joints` weight, with all
+                          // their weights, of every bound mesh (Skinner's joint selection); an
+                          // import refuses it
     };
     Kind kind = Kind::All;
     std::vector<std::size_t> meshes; // Session::characterMeshes() indices, with Meshes
+    std::vector<NodeKey> joints;     // skin joint keys, with Joints
     static SkinScope all() { return {}; }
-    static SkinScope ofMeshes(std::vector<std::size_t> meshes) { return {Kind::Meshes, std::move(meshes)}; }
-    static SkinScope selectedVertices() { return {Kind::SelectedVertices, {}}; }
+    static SkinScope ofMeshes(std::vector<std::size_t> meshes) { return {Kind::Meshes, std::move(meshes), {}}; }
+    static SkinScope selectedVertices() { return {Kind::SelectedVertices, {}, {}}; }
+    static SkinScope ofJoints(std::vector<NodeKey> joints) { return {Kind::Joints, {}, std::move(joints)}; }
 };
 
 // Per target vertex, how a run placed its weights, as far as the decision
@@ -68,6 +73,11 @@ struct SkinImportJob {
     };
     std::vector<Target> targets;
     Diagnostics notes; // what the merge replaced
+    // Append (skin/ImportScope.h, Skinner's "append" rather than "unbind
+    // first"): a mesh loaded 1:1 from a chunk of some of its vertices keeps
+    // its own weights on the others; without, every target vertex is
+    // written. A mesh without weights that fit it is written whole either way.
+    bool append = false;
 
     // After run(): per target, its weights (on the chunks' influences) and report.
     std::vector<model::MeshWeights> weights;
