@@ -166,6 +166,8 @@ TEST(VehicleTemplates, TheDoorSlidesAlongItsRailWithinItsLimits)
     EXPECT_NEAR(moved.z, -0.5, 1e-9) << "the rail runs back from its first guide";
     EXPECT_NEAR(moved.x, 0.0, 1e-9);
     EXPECT_NEAR(moved.y, 0.0, 1e-9);
+    const Vec3 panel = r.position("panel::skin.xform") - r.restPosition("panel::skin.xform");
+    EXPECT_LT(glm::length(panel - moved), 1e-9) << "the door panel hung on the rail rides on the slide";
     // The door rides on the body.
     set(pose, r, "body::ctrls.xform", "ty", 0.1);
     r.evaluate(pose);
