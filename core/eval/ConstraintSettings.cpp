@@ -77,6 +77,13 @@ public:
             m_c.breakChannel = channel(past->breakAngle, "break");
         }
     }
+    void operator()(const model::RollConstraint& s)
+    {
+        m_c.axle = static_cast<int>(s.axle);
+        m_c.forward = static_cast<int>(s.forward);
+        m_c.radius = s.radius;
+        m_c.weightChannel = optionalChannel(s.amount, "amount");
+    }
     void operator()(const model::AimConstraint& s)
     {
         m_c.aimAxis = static_cast<int>(s.aim);

@@ -193,6 +193,31 @@ void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affin
     driven.linear[b] = columnB * cosine - columnA * sine;
 }
 
+// model::RollConstraint: the travel from rest along the wheel's forward axis,
+// in the reference's frame, turned into a rotation about its axle.
+void solveRoll(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
+{
+    const double amount = c.weightChannel >= 0 ? std::clamp(pose[c.weightChannel], 0.0, 1.0) : 1.0;
+    if (amount == 0.0)
+        return;
+    Affine& driven = world[c.driven.front()];
+    const Affine toReference = world[c.targets[0]].inverse();
+    const Vec3 moved = toReference.apply(driven.translation) - c.restInReference;
+    const Vec3 forward = toReference.linear * driven.linear[c.forward];
+    const double length = glm::length(forward);
+    if (length < 1e-12)
+        return;
+    const double angle = amount * glm::dot(moved, forward / length) / c.radius;
+    if (angle == 0.0)
+        return;
+    // Right-multiplying by a rotation about local axis k mixes the other two columns.
+    const int k = c.axle, a = (k + 1) % 3, b = (k + 2) % 3;
+    const double sine = std::sin(angle), cosine = std::cos(angle);
+    const Vec3 columnA = driven.linear[a], columnB = driven.linear[b];
+    driven.linear[a] = columnA * cosine + columnB * sine;
+    driven.linear[b] = columnB * cosine - columnA * sine;
+}
+
 } // namespace
 
 Quat rotationOf(const Affine& a) { return glm::normalize(glm::quat_cast(a.rotation())); }
@@ -239,6 +264,13 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
     }
     case ConstraintKind::Visibility:
         return t == 0 ? std::string() : "takes no targets";
+    case ConstraintKind::Roll:
+        if (t != 1) return "needs one target (the reference it travels in)";
+        if (c.axle == c.forward || c.axle < 0 || c.axle > 2 || c.forward < 0 || c.forward > 2)
+            return "its axle and forward axes must be two different axes of x, y, z";
+        if (!(c.radius > 1e-9) || !std::isfinite(c.radius)) return "its radius must be positive";
+        c.restInReference = rest[c.targets[0]].inverse().apply(rest[c.driven.front()].translation);
+        return {};
     case ConstraintKind::Twist: {
         if (c.nonRolling && t != 3) return "needs three targets (start, end, reference) to be non-rolling";
         if (!c.nonRolling && t != 2) return "needs two targets (start, end)";
@@ -282,6 +314,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Drive: solveDrive(c, pose, world); break;
     case ConstraintKind::Ik: solveIk(c, pose, world); break;
     case ConstraintKind::Spline: solveSpline(c, pose, state); break;
+    case ConstraintKind::Roll: solveRoll(c, pose, world); break;
     case ConstraintKind::Visibility: break; // RigProgram::evaluate writes EvalState::visible
     }
 }

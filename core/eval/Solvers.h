@@ -64,6 +64,13 @@ struct CompiledConstraint {
 
     // Aim: axes and rest offset.
     int aimAxis = 0, upAxis = 1;
+
+    // Roll: the driven's axle and forward axes (0 x, 1 y, 2 z), the wheel's
+    // radius and its rest place in the reference's (targets[0]) rest frame.
+    // weightChannel is the roll's amount.
+    int axle = 0, forward = 2;
+    double radius = 1.0;
+    Vec3 restInReference{0.0};
 };
 
 // Reads the typed settings of `rc` into `c` (its kind, driven and targets

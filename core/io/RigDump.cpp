@@ -108,6 +108,13 @@ public:
         field("when", model::showWhenName(s.when));
         field("threshold", number(s.threshold));
     }
+    void operator()(const model::RollConstraint& s)
+    {
+        field("axle", model::axisName(s.axle));
+        field("forward", model::axisName(s.forward));
+        field("radius", number(s.radius));
+        field("amount", attributeText(m_rig, s.amount));
+    }
     void operator()(const model::SplineConstraint& s)
     {
         field("stretch", attributeText(m_rig, s.stretch));

@@ -38,6 +38,7 @@ const char* constraintKindName(ConstraintKind kind)
     case ConstraintKind::Aim: return "aim";
     case ConstraintKind::Scale: return "scale";
     case ConstraintKind::Visibility: return "visibility";
+    case ConstraintKind::Roll: return "roll";
     }
     return "parent";
 }
@@ -76,6 +77,8 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 ref(settings.choice);
             } else if constexpr (std::is_same_v<T, VisibilityConstraint>) {
                 ref(settings.value);
+            } else if constexpr (std::is_same_v<T, RollConstraint>) {
+                optionalRef(settings.amount);
             } else if constexpr (std::is_same_v<T, DriveConstraint>) {
                 ref(settings.value);
                 std::visit(

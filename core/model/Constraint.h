@@ -224,13 +224,36 @@ struct VisibilityConstraint {
     bool operator==(const VisibilityConstraint&) const = default;
 };
 
+// A wheel rolling as it travels (wheel.legacy): driven[0] turns about its
+// local `axle` axis by amount * travel / radius radians, after its parent
+// placed it. travel is how far driven[0] has moved from its rest place along
+// its current `forward` axis, both measured in targets[0]'s frame: the ground
+// the vehicle travels over (the world control), so moving that reference
+// carries the wheel without rolling it, while moving the vehicle's or the
+// wheel's own controls rolls it. A positive travel turns it positively about
+// `axle`, which rolls it forward when its ground contact lies along
+// axle x forward from its centre (axle X, forward Z: the ground below, -Y);
+// the builder picks the axes so. Stateless: the roll is the displacement from
+// rest along the direction the wheel faces now, not the length of the path it
+// took (a vehicle that drives forward, turns and comes back unrolls). Exactly
+// one target; `axle` and `forward` must differ; `radius` must be positive.
+struct RollConstraint {
+    Axis axle = Axis::X;
+    Axis forward = Axis::Z;
+    double radius = 1.0; // metres, in the reference's rest frame (the rig's rest scale)
+    // The share of the automatic roll, clamped to [0, 1] (Mikan's auto_rotate):
+    // 0 keeps the wheel still whatever it travels. None: 1.
+    std::optional<AttributeRef> amount{};
+    bool operator==(const RollConstraint&) const = default;
+};
+
 // What a constraint does; the index of its settings in ConstraintSettings.
-enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale, Visibility };
+enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale, Visibility, Roll };
 const char* constraintKindName(ConstraintKind kind); // "parent", "orient"...
 
 using ConstraintSettings = std::variant<ParentConstraint, OrientConstraint, PointConstraint, BlendConstraint, IkConstraint,
                                         TwistConstraint, SplineConstraint, SpaceConstraint, DriveConstraint, AimConstraint,
-                                        ScaleConstraint, VisibilityConstraint>;
+                                        ScaleConstraint, VisibilityConstraint, RollConstraint>;
 
 template <ConstraintKind kind>
 using SettingsOf = std::variant_alternative_t<static_cast<std::size_t>(kind), ConstraintSettings>;
@@ -246,7 +269,8 @@ static_assert(std::is_same_v<SettingsOf<ConstraintKind::Drive>, DriveConstraint>
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Aim>, AimConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Scale>, ScaleConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Visibility>, VisibilityConstraint>);
-static_assert(std::variant_size_v<ConstraintSettings> == 12);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Roll>, RollConstraint>);
+static_assert(std::variant_size_v<ConstraintSettings> == 13);
 
 struct RigConstraint {
     NodeKey key;                       // identity, as a node's

@@ -41,6 +41,10 @@ const BuilderRegistry& BuilderRegistry::builtin()
         BuilderRegistry r;
         r.add("world.character", makeWorldBuilder());
         r.add("world.prop", makeWorldBuilder());
+        r.add("world.default", makeWorldDefaultBuilder());
+        r.add("wheel.legacy", makeWheelBuilder());
+        r.add("rig.slide", makeSlideBuilder());
+        r.add("util.camera", makeCameraBuilder());
         r.add("core.xform", makeXformBuilder());
         r.add("core.bones", makeBoneChainBuilder());
         r.add("spine.torso", makeSpineBuilder());

@@ -221,6 +221,7 @@ void BM_BuildSampleRig(benchmark::State& state, const std::string& sample)
 BENCHMARK_CAPTURE(BM_BuildSampleRig, quadruped, std::string("quadruped"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_BuildSampleRig, prop, std::string("prop"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_BuildSampleRig, face, std::string("face"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_BuildSampleRig, vehicle, std::string("vehicle"))->Unit(benchmark::kMicrosecond);
 
 // N bipeds side by side in one guide (fresh ids and names per copy): how the
 // build scales past the ~900 nodes of a production biped.

@@ -2,7 +2,8 @@
 // read back from a sample's dump have the same kinds, nodes and settings (to
 // the dump's 6 decimals), no field the kind does not have, and the rig
 // evaluates as before. Aim, point and scale constraints (no builder makes
-// them) are added to the prop, so every kind is covered.
+// them) are added to the prop, so every kind is covered (the vehicle brings the
+// wheels' roll).
 #include "EvalTestSupport.h"
 #include "io/RigDump.h"
 
@@ -59,6 +60,7 @@ private:
         if (kind == "space") return model::SpaceConstraint{attribute("choice"), flag("orient_only"), flag("keep_offset")};
         if (kind == "drive") return drive();
         if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
+        if (kind == "roll") return model::RollConstraint{axis("axle"), axis("forward"), number("radius"), optionalAttribute("amount")};
         ADD_FAILURE() << "unknown kind " << kind;
         return {};
     }
@@ -140,6 +142,8 @@ model::ConstraintSettings asDumped(model::ConstraintSettings settings)
             round(s.fraction);
         if constexpr (std::is_same_v<S, model::VisibilityConstraint>)
             round(s.threshold);
+        if constexpr (std::is_same_v<S, model::RollConstraint>)
+            round(s.radius);
         if constexpr (std::is_same_v<S, model::DriveConstraint>) {
             round(s.factor);
             if (auto* clamped = std::get_if<model::DriveClamped>(&s.response)) {
@@ -194,7 +198,7 @@ void addAimPointAndScale(model::Rig& rig)
 TEST(ConstraintDump, EveryKindReadsBackFromTheDumpWithItsTypedSettingsAndEvaluatesTheSame)
 {
     std::set<model::ConstraintKind> kinds;
-    for (const std::string sample : {"biped", "quadruped", "prop"}) {
+    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle"}) {
         SCOPED_TRACE(sample);
         test::PosedRig built(sample);
         model::Rig rig = built.rig;

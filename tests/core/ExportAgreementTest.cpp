@@ -196,5 +196,5 @@ TEST_P(ExportAgreement, AssimpPlaysTheGlbAndTheFbxAlikeBetweenKeys)
                 travel, worst, where.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop"),
+INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop", "vehicle"),
                          [](const testing::TestParamInfo<std::string>& info) { return info.param; });

@@ -36,7 +36,7 @@ model::Rig brokenBiped()
 
 TEST(ExportCheck, TheSamplesExportCleanly)
 {
-    for (const char* sample : {"biped", "quadruped", "prop", "face"}) {
+    for (const char* sample : {"biped", "quadruped", "prop", "face", "vehicle"}) {
         const model::Rig rig = sampleRig(sample);
         auto skeleton = model::extractSkeleton(rig);
         ASSERT_TRUE(skeleton.ok()) << sample;

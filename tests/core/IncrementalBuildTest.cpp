@@ -17,7 +17,7 @@ using namespace rs;
 
 namespace {
 
-const char* const kSamples[] = {"biped", "quadruped", "prop", "face"};
+const char* const kSamples[] = {"biped", "quadruped", "prop", "face", "vehicle"};
 
 // Builds `guide` with the cache and checks it against a build without one.
 rigging::BuildCache::Stats buildAndCompare(const model::GuideDocument& guide, rigging::BuildCache& cache,

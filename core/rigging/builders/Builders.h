@@ -7,6 +7,9 @@ namespace rs::rigging {
 // world.character / world.prop: seed 004's base structure (root, controller,
 // joint, setup and model groups; world, move, scale, fly; post transform).
 std::unique_ptr<TemplateBuilder> makeWorldBuilder();
+// world.default: Mikan's default root, a world and a move controller (spaces
+// world, move and root) at one guide joint.
+std::unique_ptr<TemplateBuilder> makeWorldDefaultBuilder();
 // core.joints (and the fallback for modules without a builder): an FK chain,
 // one offset group, controller and skin joint per guide joint.
 std::unique_ptr<TemplateBuilder> makeJointChainBuilder();
@@ -30,6 +33,15 @@ std::unique_ptr<TemplateBuilder> makeDigitBuilder();
 std::unique_ptr<TemplateBuilder> makeHandBuilder();
 // rig.spline: a chain following a curve through spline controllers (tails).
 std::unique_ptr<TemplateBuilder> makeSplineBuilder();
+
+// wheel.legacy: a wheel that rolls by itself as it travels (d / radius
+// radians about its axle), a bank control at the ground and a manual spin.
+std::unique_ptr<TemplateBuilder> makeWheelBuilder();
+// rig.slide: a control sliding along a rail between two guide joints, within
+// limits in metres; what hangs on the rail rides on it.
+std::unique_ptr<TemplateBuilder> makeSlideBuilder();
+// util.camera: a camera aiming at its target control, with a roll and lens attributes.
+std::unique_ptr<TemplateBuilder> makeCameraBuilder();
 
 // face.jaw, face.eye, face.brow, face.mouth: the face's parts on guides placed
 // on the head (jaw and chin; an eye aiming at a shared look target, lids

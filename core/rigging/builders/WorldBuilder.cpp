@@ -1,4 +1,5 @@
 // world.character / world.prop: the base structure of every rig (seed 004).
+// world.default (Mikan's default root) is WorldDefaultBuilder below.
 //
 //   root_gp
 //   ├─ ctrl_gp > world (all) > move (sub) > scale > post_transform > fly   <- children hook here
@@ -86,8 +87,57 @@ public:
     }
 };
 
+// world.default, Mikan's default root: a world controller and a move
+// controller under it at the one guide joint, nothing else. The spaces `world`
+// (the world control: what stays put while the rig travels, e.g. the ground a
+// wheel rolls on) and `move` (the move control) are named for other templates'
+// space switches, `root` too (the move control, or the hook group), so limbs'
+// `root` spaces find it. With the `hook` option the children hang under a
+// group beside the controls that follows the move control (Mikan's
+// hook_move: a flat hierarchy), otherwise under the move control itself.
+class WorldDefaultBuilder final : public TemplateBuilder {
+public:
+    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
+                                            const std::map<std::string, Value>&) const override
+    {
+        return {GuideJointSpec{-1, {}, {}, {}}};
+    }
+
+    bool gather(const BuildContext& ctx) const override { return ctx.structure("world").has_value(); }
+
+    void generate(BuildContext& ctx) const override
+    {
+        const model::JointId world = ctx.structure("world")->front();
+        const Mat4 frame = kit::uprightFrame(ctx.guidePosition(world));
+        const auto worldNode = control(ctx, "world", ctx.hookNode(), frame, world);
+        const auto moveNode = control(ctx, "move", worldNode, frame, world);
+        model::RigNodeIndex anchor = moveNode;
+        if (ctx.optionBool("hook")) {
+            anchor = ctx.createNode(RigNodeKind::Group, "hooks.root", ctx.nodeName(NameRole::Group, "hook_move"), ctx.hookNode(),
+                                    frame, world);
+            ctx.addConstraint("cns.hook", {anchor}, {moveNode}, model::ParentConstraint{});
+        }
+        ctx.setHook(world, anchor);
+        ctx.defineSpace("world", worldNode);
+        ctx.defineSpace("move", moveNode);
+        ctx.defineSpace("root", anchor);
+        if (ctx.optionBool("do_skin")) // the export skeleton's one root, which child templates' skin joints hang under
+            ctx.createNode(RigNodeKind::Joint, "skin.root", ctx.nodeName(NameRole::Skin, "root"), anchor, frame, world);
+    }
+
+private:
+    static model::RigNodeIndex control(BuildContext& ctx, const std::string& key, model::RigNodeIndex parent, const Mat4& frame,
+                                       model::JointId source)
+    {
+        if (!ctx.optionBool("do_ctrl"))
+            return ctx.createNode(RigNodeKind::Group, "hooks." + key, ctx.nodeName(NameRole::Offset, key), parent, frame, source);
+        return ctx.createNode(RigNodeKind::Controller, "ctrls." + key, ctx.nodeName(NameRole::Controller, key), parent, frame, source);
+    }
+};
+
 } // namespace
 
 std::unique_ptr<TemplateBuilder> makeWorldBuilder() { return std::make_unique<WorldBuilder>(); }
+std::unique_ptr<TemplateBuilder> makeWorldDefaultBuilder() { return std::make_unique<WorldDefaultBuilder>(); }
 
 } // namespace rs::rigging
