@@ -2,6 +2,7 @@
 // default channels: offsets, bone frames and curve parameters are measured on
 // the rest pose at compile time and re-applied at evaluation.
 #include "eval/Solvers.h"
+#include "eval/DrivenKeys.h"
 
 #include "eval/IkSolver.h"
 #include "eval/RigProgram.h"
@@ -239,6 +240,8 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
     }
     case ConstraintKind::Visibility:
         return t == 0 ? std::string() : "takes no targets";
+    case ConstraintKind::DrivenKey:
+        return checkCurveKeys(c.keys);
     case ConstraintKind::Twist: {
         if (c.nonRolling && t != 3) return "needs three targets (start, end, reference) to be non-rolling";
         if (!c.nonRolling && t != 2) return "needs two targets (start, end)";
@@ -283,6 +286,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Ik: solveIk(c, pose, world); break;
     case ConstraintKind::Spline: solveSpline(c, pose, state); break;
     case ConstraintKind::Visibility: break; // RigProgram::evaluate writes EvalState::visible
+    case ConstraintKind::DrivenKey: break;  // RigProgram::evaluate computes the driven channels first
     }
 }
 
