@@ -15,8 +15,10 @@
 // (`ctrls.ik`) is the owner's node; a mod of a branched instance applies to
 // each branch copy, and a reference without a branch takes the copy's branch
 // (else the unbranched node), so the L mod drives L nodes and the R copy R
-// nodes, mirrored as the copies are. Values (channel defaults, curve keys) are
-// applied as written on every copy.
+// nodes, mirrored as the copies are. Values are written for the authored side:
+// on a mirrored copy a transform channel's value (a default, a limit, a drive's
+// keys) that the reflection negates (tx, ry, rz for the x plane) is negated, so
+// that copy moves as the mirror image; custom channels take values as written.
 //
 // A mod whose node does not exist in a build is reported in the build log
 // (with the mod's file:line when it was read from a file) and kept.

@@ -244,14 +244,16 @@ void ModApplication::plug(const model::PlugMod& m)
         }
         if (m.type || !m.labels.empty())
             warn("'" + name + "' is a transform channel: its type is fixed ('type' and 'labels' are ignored)", subject);
+        const double sign = channelSign(*index, name); // the mirror image's value on a mirrored copy
         if (m.min.has_value() != m.max.has_value())
             warn("a transform channel's limit needs both 'min' and 'max' (the limit is ignored)", subject);
         else if (m.min)
-            node.channels.limit(t, *m.min, *m.max);
+            node.channels.limit(t, sign > 0 ? *m.min : -*m.max, sign > 0 ? *m.max : -*m.min);
         if (m.value) {
-            const double kept = node.channels.isLimited(t) ? std::clamp(*m.value, node.channels.minimum[t], node.channels.maximum[t]) : *m.value;
-            if (kept != *m.value)
-                warn("the default " + formatNumber(*m.value) + " of '" + name + "' is outside its limits; using " + formatNumber(kept), subject);
+            const double value = sign * *m.value;
+            const double kept = node.channels.isLimited(t) ? std::clamp(value, node.channels.minimum[t], node.channels.maximum[t]) : value;
+            if (kept != value)
+                warn("the default " + formatNumber(value) + " of '" + name + "' is outside its limits; using " + formatNumber(kept), subject);
             node.channels.defaults[t] = kept;
         }
         const auto bit = std::uint16_t(1u << t);
@@ -293,7 +295,7 @@ void ModApplication::plug(const model::PlugMod& m)
     model::DrivenKeyConstraint settings;
     settings.driver = {*source, m.from->channel};
     settings.driven = {*index, name};
-    settings.keys = {{0.0, 0.0}, {1.0, m.factor}};
+    settings.keys = {{0.0, 0.0}, {1.0, m.factor * channelSign(*source, m.from->channel) * channelSign(*index, name)}};
     settings.pre = settings.post = model::CurveInfinity::Linear;
     addDrivenKey(std::move(settings), "plug");
 }
@@ -311,6 +313,16 @@ void ModApplication::drive(const model::DriveMod& m)
     settings.smooth = m.smooth;
     settings.pre = m.pre;
     settings.post = m.post;
+    // A mirrored copy: the curve of the mirror image (a negated driver reverses the keys, and pre and post).
+    const double in = channelSign(*driver, m.driver.channel), out = channelSign(*driven, m.driven.channel);
+    for (model::CurveKey& key : settings.keys) {
+        key.in *= in;
+        key.out *= out;
+    }
+    if (in < 0.0) {
+        std::reverse(settings.keys.begin(), settings.keys.end());
+        std::swap(settings.pre, settings.post);
+    }
     addDrivenKey(std::move(settings), "drive");
 }
 

@@ -32,11 +32,27 @@ std::map<InstanceId, std::vector<std::string>> builtCopies(const RigAssembly& a)
     return out;
 }
 
+// The mirrored branch copies and the plane each is reflected through.
+std::map<CopyKey, int> mirrorPlanes(const RigAssembly& a)
+{
+    std::map<CopyKey, int> out;
+    for (const InstanceRecord& r : a.records) {
+        const BranchCopy& copy = a.copyOf(r.instance->id);
+        for (int axis = 0; axis < 3; ++axis)
+            if (copy.mirror[axis][axis] < 0.0) {
+                out[{copy.original, copy.branch()}] = axis;
+                break;
+            }
+    }
+    return out;
+}
+
 // Runs `apply` once per copy of each mod (reporting an owner with none).
 void forEachCopy(RigAssembly& a, const model::GuideDocument& guide, bool quiet,
                  const std::function<void(ModApplication&)>& apply)
 {
     const auto copies = builtCopies(a);
+    const auto planes = mirrorPlanes(a);
     for (std::size_t i = 0; i < guide.mods.size(); ++i) {
         const model::Mod& mod = guide.mods[i];
         if (mod.isGlobal()) {
@@ -57,6 +73,7 @@ void forEachCopy(RigAssembly& a, const model::GuideDocument& guide, bool quiet,
         }
         for (const std::string& branch : it->second) {
             ModApplication app(a, guide, mod, i, branch, quiet);
+            app.mirrorPlanes = &planes;
             apply(app);
         }
     }
@@ -174,6 +191,19 @@ std::optional<RigNodeIndex> ModApplication::resolve(const model::ModRef& ref, co
     warn(role + " '" + text(ref) + "': the rig has no such node" + hint + "; the mod is kept in the guide",
          Subject::ofInstance(instance->id, b));
     return std::nullopt;
+}
+
+double ModApplication::channelSign(RigNodeIndex node, const std::string& channel) const
+{
+    const int t = model::channelIndex(channel);
+    if (!mirrorPlanes || t < 0 || t >= 6 || !mirrorPlanes->count(CopyKey{mod.owner.id, branch}))
+        return 1.0;
+    const auto plane = mirrorPlanes->find(a.rig.nodes[node].key.copy());
+    if (plane == mirrorPlanes->end())
+        return 1.0;
+    // A reflection negates the translation along its normal and the rotations about the other two axes.
+    const bool along = t % 3 == plane->second;
+    return (t < 3) == along ? -1.0 : 1.0;
 }
 
 NodeKey ModApplication::constraintKey(const std::string& what) const

@@ -14,6 +14,7 @@
 // subject; the mod (or that copy of it) is skipped and stays in the guide.
 #include "rigging/RigAssembly.h"
 
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -50,6 +51,12 @@ public:
     void lockChannel(model::RigNodeIndex node, const std::string& channel);
     // Adds a driven key, refusing (reported) a loop of driven keys.
     bool addDrivenKey(model::DrivenKeyConstraint settings, const std::string& what);
+    // -1 where the value a mod gives a channel is negated on this copy: a mod
+    // of a mirrored branch copy (its values are written for the authored side)
+    // on a transform channel of a node of a mirrored copy whose mirror image
+    // negates it (reflected through the x plane: tx, ry, rz); else 1. So the R
+    // copy's driven keys and defaults move as the mirror image of the L's.
+    double channelSign(model::RigNodeIndex node, const std::string& channel) const;
 
     // The kinds (ModKinds.cpp).
     void space(const model::SpaceMod& m);
@@ -67,6 +74,8 @@ public:
     std::size_t index; // in guide.mods
     std::string branch; // the copy's
     bool quiet;         // the second part re-resolving what the first reported
+    // The mirror plane (0 x, 1 y, 2 z) of each mirrored branch copy this build made.
+    const std::map<CopyKey, int>* mirrorPlanes = nullptr;
 };
 
 } // namespace rs::rigging

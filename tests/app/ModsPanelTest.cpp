@@ -7,6 +7,7 @@
 #include "ModsPanel.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QApplication>
 #include <QLabel>
 #include <QMenu>
@@ -97,4 +98,25 @@ TEST(ModsPanel, AGlobalModNamesItsInstanceAndAMissingNodeIsLoggedNotRefused)
     for (const Diagnostic& d : t.w.session().rig()->diagnostics)
         logged = logged || d.message.find("global vdag mod: parent 'spine::ctrls.nope'") != std::string::npos;
     EXPECT_TRUE(logged);
+}
+
+TEST(ModsPanel, ScreenshotOfTheDockWithTheTestGuidesMods)
+{
+    Editor e;
+    app::MainWindow& w = e.window;
+    ASSERT_TRUE(w.openFile(QString(RIGSMITH_TEST_DATA) + "/Mods/biped/guide.yml"));
+    w.action("build")->trigger();
+    auto* dock = w.findChild<QDockWidget*>("modsDock");
+    ASSERT_NE(dock, nullptr);
+    dock->show();
+    dock->raise();
+    w.resizeDocks({dock}, {380}, Qt::Vertical);
+    widgets::ModsPanel* panel = w.modsPanel();
+    EXPECT_EQ(panel->tree()->topLevelItemCount(), 3); // Global, arm, hand
+    panel->selectMod(0);
+    EXPECT_TRUE(panel->editor()->toPlainText().startsWith("space:\n  node: ctrls.ik\n"));
+    QApplication::processEvents();
+    const QImage shot = w.grab().toImage();
+    EXPECT_FALSE(shot.isNull());
+    EXPECT_TRUE(shot.save(QString::fromStdString(outputPath("mods-panel.png"))));
 }

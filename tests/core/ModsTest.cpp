@@ -247,3 +247,17 @@ TEST(Mods, DrivenKeysThatLoopAreRefusedAndTheRigStillEvaluates)
     r.evaluate({{"hand.L::ctrls.hand", "rx", 10.0}});
     EXPECT_NEAR(r.state.channels[r.channel("hand.L::ctrls.hand", "ry")], 10.0, kTolerance);
 }
+
+TEST(Mods, AnInstancesModMovesTheMirroredCopyAsTheMirrorImage)
+{
+    // Authored for the left side; the right copy's curve is the mirror image's.
+    ModdedRig r(bipedWith({{"hand", "drive: {driver: 'arm::ctrls.fk.1@rz', driven: ctrls.hand@ry, keys: {0: 0, 90: 30}}"},
+                           {"hand", "plug: {channel: ctrls.hand@rz, default: 10}"}}));
+    ASSERT_TRUE(r.program) << r.log();
+    const Mat4 mirror = glm::scale(Mat4(1.0), Vec3(-1.0, 1.0, 1.0)); // the biped's L/R plane
+    r.evaluate({{"arm.L::ctrls.fk.1", "rz", 45.0}, {"arm.R::ctrls.fk.1", "rz", -45.0}}); // a mirrored pose
+    EXPECT_NEAR(r.state.channels[r.channel("hand.L::ctrls.hand", "ry")], 15.0, kTolerance);
+    EXPECT_NEAR(r.state.channels[r.channel("hand.R::ctrls.hand", "ry")], -15.0, kTolerance);
+    EXPECT_EQ(r.program->channels()[r.channel("hand.R::ctrls.hand", "rz")].defaultValue, -10.0);
+    EXPECT_LT(maxAbsDifference(mirror * r.world("hand.L::ctrls.hand") * mirror, r.world("hand.R::ctrls.hand")), 1e-6);
+}
