@@ -147,8 +147,8 @@ public:
         auto channel = [&](const model::ChannelRef& c) {
             return "{node: " + nodeText(m_rig, c.node) + ", channel: " + quoteIfNeeded(c.channel) + "}";
         };
-        field("driver", channel(s.driver));
-        field("driven", channel(s.driven));
+        field("driver_channel", channel(s.driver)); // "driven" is the constraint's driven nodes
+        field("driven_channel", channel(s.driven));
         std::string keys = "[";
         for (std::size_t i = 0; i < s.keys.size(); ++i)
             keys += (i ? ", [" : "[") + number(s.keys[i].in) + ", " + number(s.keys[i].out) + "]";

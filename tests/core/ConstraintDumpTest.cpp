@@ -93,7 +93,7 @@ private:
 
     model::DrivenKeyConstraint drivenKey()
     {
-        model::DrivenKeyConstraint d{channel("driver"), channel("driven"), {}, flag("smooth"), infinity("pre"), infinity("post")};
+        model::DrivenKeyConstraint d{channel("driver_channel"), channel("driven_channel"), {}, flag("smooth"), infinity("pre"), infinity("post")};
         for (const auto& key : field("keys"))
             d.keys.push_back({key[0].as<double>(), key[1].as<double>()});
         return d;

@@ -92,8 +92,9 @@ TEST(Mods, EachKindWithAMissingTargetIsAWarningAtItsLineWithASubjectAndIsKept)
         EXPECT_NE(d.message.find(expected[k].second), std::string::npos) << d.message;
         EXPECT_EQ(d.where.file, "bad.yml");
         EXPECT_EQ(d.where.line, firstLine + int(k) + (k > 0 ? 1 : 0)) << d.format(); // the first mod takes two lines
-        if (k != 3) // a ghost instance has nothing to select
+        if (k != 3) { // a ghost instance has nothing to select
             EXPECT_FALSE(d.subject.isNone()) << d.format();
+        }
     }
     EXPECT_EQ(about(rig, "space mod of 'arm.R'").front().subject, Subject::ofInstance(kArm, "R"));
     // Nothing changed in the rig, and every mod is still in the guide, written back as read.
@@ -145,7 +146,9 @@ TEST(Mods, AGuideWithoutModsIsWrittenAsBefore)
         auto read = io::readGuideText(text, sample);
         ASSERT_TRUE(read.ok());
         EXPECT_TRUE(read->mods.empty());
-        EXPECT_EQ(io::writeGuideText(*read), text) << sample;
+        const std::string written = io::writeGuideText(*read);
+        // The same but for a sample's own first line (its description).
+        EXPECT_EQ(written.substr(written.find('\n')), text.substr(text.find('\n'))) << sample;
     }
 }
 

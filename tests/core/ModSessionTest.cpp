@@ -69,8 +69,9 @@ TEST(Mods, SessionRefusesAMalformedModOrAnIndexPastTheEnd)
     bad.settings = model::HideMod{};
     EXPECT_FALSE(test::refusal(t.s.addMod(bad)).empty());
     model::DriveMod unsorted;
-    unsorted.driver = {{}, std::nullopt, "rig", "x"};
-    unsorted.driven = {{}, std::nullopt, "rig", "y"};
+    unsorted.driver.tag = unsorted.driven.tag = "rig";
+    unsorted.driver.channel = "x";
+    unsorted.driven.channel = "y";
     unsorted.keys = {{1.0, 0.0}, {0.0, 1.0}};
     bad.settings = unsorted;
     EXPECT_NE(test::refusal(t.s.addMod(bad)).find("sorted"), std::string::npos);

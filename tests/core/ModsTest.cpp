@@ -110,16 +110,25 @@ TEST(Mods, AParentModKeepsTheWorldRestAndTheChildFollowsItsNewParent)
 
 TEST(Mods, AParentModUnderALaterNodeKeepsTheNodesParentsFirst)
 {
-    ModdedRig r(bipedWith({{"", "parent: {node: 'neck::roots.fk.0', parent: 'hand.L::ctrls.hand'}"}}));
+    ModdedRig r(bipedWith({{"", "parent: {node: 'neck::roots.fk.0', parent: 'leg.L::ctrls.ik'}"}}));
     ASSERT_TRUE(r.program) << r.log();
+    EXPECT_EQ(r.log().find("mod"), std::string::npos) << r.log();
     for (model::RigNodeIndex i = 1; i < r.rig.nodes.size(); ++i) {
         ASSERT_LT(r.rig.nodes[i].parent, i) << r.rig.nodes[i].path;
         EXPECT_EQ(*r.rig.find(r.rig.nodes[i].key), i);
     }
-    r.evaluate();
-    const Vec3 head = r.position("neck::ctrls.head");
-    r.evaluate({{"hand.L::ctrls.hand", "ty", 0.1}});
-    EXPECT_GT(glm::length(r.position("neck::ctrls.head") - head), 0.05); // the neck now hangs from the hand
+    EXPECT_EQ(r.rig.nodes[r.index("neck::roots.fk.0")].parent, r.index("leg.L::ctrls.ik"));
+    expectNear(followsLegIk(r, "neck::ctrls.fk.1", {}), Vec3(0.0)); // the neck's FK now hangs from the foot
+}
+
+TEST(Mods, AParentModThatWouldMakeACycleIsAWarningAndChangesNothing)
+{
+    // The arm's IK control can follow the head (a space), which hangs below the neck's FK.
+    ModdedRig r(bipedWith({{"", "parent: {node: 'neck::roots.fk.0', parent: 'hand.L::ctrls.hand'}"}}));
+    ASSERT_TRUE(r.program) << r.log();
+    EXPECT_NE(r.log().find("global parent mod: 'hand.L::ctrls.hand' follows 'neck::roots.fk.0' (a cycle)"), std::string::npos) << r.log();
+    const ModdedRig plain(test::loadSample("biped"));
+    EXPECT_EQ(r.rig.nodes[r.index("neck::roots.fk.0")].parent, plain.rig.nodes[plain.index("neck::roots.fk.0")].parent);
 }
 
 TEST(Mods, AHideModTakesTheControllerAwayFromTheAnimator)
@@ -245,7 +254,7 @@ TEST(Mods, DrivenKeysThatLoopAreRefusedAndTheRigStillEvaluates)
     ASSERT_TRUE(r.program) << r.log();
     EXPECT_NE(r.log().find("would make a loop of driven keys"), std::string::npos) << r.log();
     r.evaluate({{"hand.L::ctrls.hand", "rx", 10.0}});
-    EXPECT_NEAR(r.state.channels[r.channel("hand.L::ctrls.hand", "ry")], 10.0, kTolerance);
+    EXPECT_NEAR(r.state.channels[r.channel("hand.L::ctrls.hand", "ry")], 1.0, kTolerance); // past the last key: constant
 }
 
 TEST(Mods, AnInstancesModMovesTheMirroredCopyAsTheMirrorImage)
