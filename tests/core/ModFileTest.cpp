@@ -218,3 +218,21 @@ TEST(Mods, AnIncrementalRebuildEqualsAFullBuildWithMods)
     guide.mods.push_back(test::modFromText(guide, "arm", "hide: [ctrls.pin]"));
     compare("a mod added");
 }
+
+TEST(Mods, EveryKindsSampleReadsAndWritesBackAsItsText)
+{
+    const model::GuideDocument guide = test::loadSample("biped");
+    for (int k = 0; k < model::kModKindCount; ++k)
+        for (const bool ofInstance : {true, false}) {
+            const auto kind = model::ModKind(k);
+            const model::ModInstance owner = ofInstance ? model::ModInstance{kArm, "arm"} : model::ModInstance{};
+            auto mod = io::readModText(guide, owner, io::modSample(kind, ofInstance), "sample");
+            ASSERT_TRUE(mod.ok()) << model::modKindName(kind) << "\n" << formatAll(mod.diagnostics());
+            EXPECT_EQ(mod->kind(), kind);
+            EXPECT_EQ(mod->isGlobal(), !ofInstance);
+            // Its text reads back to the same mod.
+            auto again = io::readModText(guide, owner, io::writeModText(guide, *mod), "again");
+            ASSERT_TRUE(again.ok()) << io::writeModText(guide, *mod) << formatAll(again.diagnostics());
+            EXPECT_EQ(*again, *mod);
+        }
+}
