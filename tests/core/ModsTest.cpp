@@ -6,6 +6,7 @@
 
 #include "eval/DrivenKeys.h"
 #include "eval/Pickwalk.h"
+#include "model/Skeleton.h"
 
 #include <gtest/gtest.h>
 
@@ -269,4 +270,22 @@ TEST(Mods, AnInstancesModMovesTheMirroredCopyAsTheMirrorImage)
     EXPECT_NEAR(r.state.channels[r.channel("hand.R::ctrls.hand", "ry")], -15.0, kTolerance);
     EXPECT_EQ(r.program->channels()[r.channel("hand.R::ctrls.hand", "rz")].defaultValue, -10.0);
     EXPECT_LT(maxAbsDifference(mirror * r.world("hand.L::ctrls.hand") * mirror, r.world("hand.R::ctrls.hand")), 1e-6);
+}
+
+TEST(Mods, AVdagModOnASkinJointChangesTheExportSkeleton)
+{
+    ModdedRig r(bipedWith({{"", "vdag: {node: 'index.L::skin.0', parent: 'spine::skin.0'}"}}));
+    ASSERT_TRUE(r.program) << r.log();
+    auto skeleton = model::extractSkeleton(r.rig);
+    ASSERT_TRUE(skeleton.ok()) << formatAll(skeleton.diagnostics());
+    const auto joint = [&](const std::string& id) {
+        const auto it = std::find_if(skeleton->joints.begin(), skeleton->joints.end(),
+                                     [&](const model::SkeletonJoint& j) { return j.node == r.index(id); });
+        EXPECT_NE(it, skeleton->joints.end()) << id;
+        return int(it - skeleton->joints.begin());
+    };
+    EXPECT_EQ(skeleton->joints[joint("index.L::skin.0")].parent, joint("spine::skin.0"));
+    // The bind pose stays: the joint's world is its rest, only its parent changed.
+    EXPECT_LT(maxAbsDifference(skeleton->joints[joint("index.L::skin.0")].bindWorld,
+                               r.rig.nodes[r.index("index.L::skin.0")].worldMatrix), 1e-12);
 }
