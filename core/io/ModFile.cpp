@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <sstream>
 
 namespace rs::io {
 
@@ -36,9 +37,10 @@ public:
     }
 
 private:
-    std::optional<ModRef> ref(const YAML::Node& node, const std::string& what, Want want)
+    // The reference `node` holds (or `word` of it).
+    std::optional<ModRef> ref(const YAML::Node& node, const std::string& what, Want want, const std::string& word = {})
     {
-        const auto text = m_r.string(node, what);
+        const auto text = word.empty() ? m_r.string(node, what) : std::optional<std::string>(word);
         if (!text)
             return std::nullopt;
         ModRef ref;
@@ -102,6 +104,12 @@ private:
         if (node.IsSequence()) {
             for (const auto& item : node)
                 if (auto r = ref(item, what, want)) out.push_back(*r);
+                else ok = false;
+        } else if (node.IsScalar() && node.Scalar().find_first_of(" \t") != std::string::npos) {
+            // Mikan's one-line form: `hide: a::ctrls.0 b::ctrls.0`.
+            std::istringstream words(node.Scalar());
+            for (std::string word; words >> word;)
+                if (auto r = ref(node, what, want, word)) out.push_back(*r);
                 else ok = false;
         } else if (auto r = ref(node, what, want)) {
             out.push_back(*r);

@@ -236,3 +236,15 @@ TEST(Mods, EveryKindsSampleReadsAndWritesBackAsItsText)
             EXPECT_EQ(*again, *mod);
         }
 }
+
+TEST(Mods, HideTakesMikansOneLineFormOfSeveralNodes)
+{
+    const model::GuideDocument guide = test::loadSample("biped");
+    auto mod = io::readModText(guide, {}, "hide: arm.L::ctrls.pin arm.R::ctrls.pin");
+    ASSERT_TRUE(mod.ok()) << formatAll(mod.diagnostics());
+    const auto& hide = std::get<model::HideMod>(mod->settings);
+    ASSERT_EQ(hide.nodes.size(), 2u);
+    EXPECT_EQ(hide.nodes[1].instance.id, kArm);
+    EXPECT_EQ(hide.nodes[1].branch, std::optional<std::string>("R"));
+    EXPECT_EQ(io::writeModText(guide, *mod), "hide: [\"arm.L::ctrls.pin\", \"arm.R::ctrls.pin\"]\n");
+}
