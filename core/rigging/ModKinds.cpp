@@ -96,64 +96,73 @@ void ModApplication::space(const model::SpaceMod& m)
     const auto target = resolve(m.target, "target");
     if (!ctrl || !target)
         return;
-    model::Rig& rig = a.rig;
-    const std::string label = m.label.empty() ? defaultLabel(rig.nodes[*target].key.tag) : m.label;
-    auto it = std::find_if(rig.constraints.begin(), rig.constraints.end(), [&](const model::RigConstraint& c) {
+    const std::string label = m.label.empty() ? defaultLabel(a.rig.nodes[*target].key.tag) : m.label;
+    auto it = std::find_if(a.rig.constraints.begin(), a.rig.constraints.end(), [&](const model::RigConstraint& c) {
         const auto* s = std::get_if<model::SpaceConstraint>(&c.settings);
         return s && s->choice.node == *ctrl && s->choice.attribute == m.attribute;
     });
-    const Subject subject = Subject::ofNode(rig.nodes[*ctrl].key);
-    if (it != rig.constraints.end()) { // one more space in the existing switch
-        model::RigAttribute* choice = attributeOf(rig.nodes[*ctrl], m.attribute);
-        if (!choice || std::count(choice->labels.begin(), choice->labels.end(), label) > 0 || it->targets.size() >= kMaxSpaceTargets) {
-            warn("'" + rig.nodes[*ctrl].path + "' " + (choice && it->targets.size() >= kMaxSpaceTargets ? "has 16 spaces already"
-                                                       : "already has a space '" + label + "'") + "; give another label",
-                 subject);
-            return;
-        }
-        if (dependsOn(*target, it->driven.front())) {
-            warn("'" + text(m.target) + "' follows '" + rig.nodes[*ctrl].path + "' itself; it cannot be its space", subject);
-            return;
-        }
-        it->targets.push_back(*target);
-        choice->labels.push_back(label);
-        choice->max = double(choice->labels.size() - 1);
+    if (it != a.rig.constraints.end())
+        addSpace(*it, *ctrl, *target, label, m);
+    else
+        makeSpaceSwitch(*ctrl, *target, label, m);
+}
+
+void ModApplication::addSpace(model::RigConstraint& spaces, RigNodeIndex ctrl, RigNodeIndex target, const std::string& label,
+                              const model::SpaceMod& m)
+{
+    const model::RigNode& node = a.rig.nodes[ctrl];
+    model::RigAttribute* choice = attributeOf(a.rig.nodes[ctrl], m.attribute);
+    if (!choice || std::count(choice->labels.begin(), choice->labels.end(), label) > 0 || spaces.targets.size() >= kMaxSpaceTargets) {
+        warn("'" + node.path + "' " + (choice && spaces.targets.size() >= kMaxSpaceTargets ? "has 16 spaces already"
+                                                                                            : "already has a space '" + label + "'") +
+                 "; give another label",
+             Subject::ofNode(node.key));
         return;
     }
-    // No switch yet: one on the control's offset group, its own parent being space 0.
-    const RigNodeIndex group = rig.nodes[*ctrl].parent;
-    if (rig.nodes[*ctrl].kind != model::RigNodeKind::Controller || group == kNoNode || group == 0 ||
-        rig.nodes[group].kind != model::RigNodeKind::Group) {
-        warn("'" + rig.nodes[*ctrl].path + "' is not a controller under an offset group; it cannot have a space switch", subject);
+    if (dependsOn(target, spaces.driven.front())) {
+        warn("'" + text(m.target) + "' follows '" + node.path + "' itself; it cannot be its space", Subject::ofNode(node.key));
         return;
     }
-    if (attributeOf(rig.nodes[*ctrl], m.attribute)) {
-        warn("'" + rig.nodes[*ctrl].path + "' has a channel '" + m.attribute + "' that is not a space switch", subject);
-        return;
-    }
+    spaces.targets.push_back(target);
+    choice->labels.push_back(label);
+    choice->max = double(choice->labels.size() - 1);
+}
+
+// No switch yet: one on the control's offset group, the group's own parent being space 0.
+void ModApplication::makeSpaceSwitch(RigNodeIndex ctrl, RigNodeIndex target, const std::string& label, const model::SpaceMod& m)
+{
+    model::Rig& rig = a.rig;
+    const Subject subject = Subject::ofNode(rig.nodes[ctrl].key);
+    const RigNodeIndex group = rig.nodes[ctrl].parent;
+    std::string problem;
+    if (rig.nodes[ctrl].kind != model::RigNodeKind::Controller || group == kNoNode || group == 0 ||
+        rig.nodes[group].kind != model::RigNodeKind::Group)
+        problem = "'" + rig.nodes[ctrl].path + "' is not a controller under an offset group; it cannot have a space switch";
+    else if (attributeOf(rig.nodes[ctrl], m.attribute))
+        problem = "'" + rig.nodes[ctrl].path + "' has a channel '" + m.attribute + "' that is not a space switch";
+    else if (dependsOn(target, group))
+        problem = "'" + text(m.target) + "' follows '" + rig.nodes[ctrl].path + "' itself; it cannot be its space";
     for (const model::RigConstraint& c : rig.constraints)
-        if (c.kind() != model::ConstraintKind::Visibility && c.kind() != model::ConstraintKind::DrivenKey &&
-            std::count(c.driven.begin(), c.driven.end(), group) > 0) {
-            warn("its offset group '" + rig.nodes[group].path + "' is already placed by constraint '" + c.path +
-                     "'; a space switch would fight it", subject);
-            return;
-        }
-    if (dependsOn(*target, group)) {
-        warn("'" + text(m.target) + "' follows '" + rig.nodes[*ctrl].path + "' itself; it cannot be its space", subject);
+        if (problem.empty() && c.kind() != model::ConstraintKind::Visibility && c.kind() != model::ConstraintKind::DrivenKey &&
+            std::count(c.driven.begin(), c.driven.end(), group) > 0)
+            problem = "its offset group '" + rig.nodes[group].path + "' is already placed by constraint '" + c.path +
+                      "'; a space switch would fight it";
+    if (!problem.empty()) {
+        warn(problem, subject);
         return;
     }
     model::RigAttribute choice;
     choice.name = m.attribute;
     choice.max = 1.0;
     choice.labels = {"parent", label};
-    rig.nodes[*ctrl].attributes.push_back(choice);
+    rig.nodes[ctrl].attributes.push_back(choice);
     model::RigConstraint c;
     c.key = constraintKey("space");
     c.path = constraintPath("space");
     c.owner = c.key.instance;
     c.driven = {group};
-    c.targets = {rig.nodes[group].parent, *target};
-    c.settings = model::SpaceConstraint{.choice = {*ctrl, m.attribute}};
+    c.targets = {rig.nodes[group].parent, target};
+    c.settings = model::SpaceConstraint{.choice = {ctrl, m.attribute}};
     rig.constraints.push_back(std::move(c));
 }
 
@@ -234,58 +243,12 @@ void ModApplication::plug(const model::PlugMod& m)
     const auto index = resolve(m.channel, "channel");
     if (!index)
         return;
-    model::RigNode& node = a.rig.nodes[*index];
     const std::string& name = m.channel.channel;
-    const Subject subject = Subject::ofNode(node.key);
     if (const int t = model::channelIndex(name); t >= 0) {
-        if (node.kind != model::RigNodeKind::Controller) {
-            warn("'" + node.path + "' is not a controller: it has no transform channel '" + name + "'", subject);
+        if (!plugTransform(*index, t, m))
             return;
-        }
-        if (m.type || !m.labels.empty())
-            warn("'" + name + "' is a transform channel: its type is fixed ('type' and 'labels' are ignored)", subject);
-        const double sign = channelSign(*index, name); // the mirror image's value on a mirrored copy
-        if (m.min.has_value() != m.max.has_value())
-            warn("a transform channel's limit needs both 'min' and 'max' (the limit is ignored)", subject);
-        else if (m.min)
-            node.channels.limit(t, sign > 0 ? *m.min : -*m.max, sign > 0 ? *m.max : -*m.min);
-        if (m.value) {
-            const double value = sign * *m.value;
-            const double kept = node.channels.isLimited(t) ? std::clamp(value, node.channels.minimum[t], node.channels.maximum[t]) : value;
-            if (kept != value)
-                warn("the default " + formatNumber(value) + " of '" + name + "' is outside its limits; using " + formatNumber(kept), subject);
-            node.channels.defaults[t] = kept;
-        }
-        const auto bit = std::uint16_t(1u << t);
-        if (m.keyable) node.channels.unkeyable = std::uint16_t(*m.keyable ? node.channels.unkeyable & ~bit : node.channels.unkeyable | bit);
-        if (m.locked) node.channels.locked = std::uint16_t(*m.locked ? node.channels.locked | bit : node.channels.locked & ~bit);
     } else {
-        model::RigAttribute* attribute = attributeOf(node, name);
-        if (!attribute) {
-            model::RigAttribute created;
-            created.name = name;
-            created.labels = m.labels;
-            if (!m.labels.empty()) created.max = double(m.labels.size() - 1);
-            node.attributes.push_back(std::move(created));
-            attribute = &node.attributes.back();
-        } else if (m.type || !m.labels.empty()) {
-            warn("'" + node.path + "' already has a channel '" + name + "': its type is kept", subject);
-        }
-        if (attribute->labels.empty() && m.type != model::PlugType::Bool) {
-            if (m.min) attribute->min = *m.min;
-            if (m.max) attribute->max = *m.max;
-            if (attribute->min > attribute->max)
-                attribute->max = attribute->min;
-        }
-        if (m.value) {
-            attribute->value = std::clamp(*m.value, attribute->min, attribute->max);
-            if (attribute->value != *m.value)
-                warn("the default " + formatNumber(*m.value) + " of '" + name + "' is outside [" + formatNumber(attribute->min) +
-                         ", " + formatNumber(attribute->max) + "]; using " + formatNumber(attribute->value), subject);
-        }
-        if (!attribute->labels.empty()) attribute->value = std::round(attribute->value);
-        if (m.keyable) attribute->keyable = *m.keyable;
-        if (m.locked) attribute->locked = *m.locked;
+        plugAttribute(*index, m);
     }
     if (!m.from)
         return;
@@ -298,6 +261,68 @@ void ModApplication::plug(const model::PlugMod& m)
     settings.keys = {{0.0, 0.0}, {1.0, m.factor * channelSign(*source, m.from->channel) * channelSign(*index, name)}};
     settings.pre = settings.post = model::CurveInfinity::Linear;
     addDrivenKey(std::move(settings), "plug");
+}
+
+bool ModApplication::plugTransform(RigNodeIndex index, int t, const model::PlugMod& m)
+{
+    model::RigNode& node = a.rig.nodes[index];
+    const std::string& name = m.channel.channel;
+    const Subject subject = Subject::ofNode(node.key);
+    if (node.kind != model::RigNodeKind::Controller) {
+        warn("'" + node.path + "' is not a controller: it has no transform channel '" + name + "'", subject);
+        return false;
+    }
+    if (m.type || !m.labels.empty())
+        warn("'" + name + "' is a transform channel: its type is fixed ('type' and 'labels' are ignored)", subject);
+    const double sign = channelSign(index, name); // the mirror image's value on a mirrored copy
+    if (m.min.has_value() != m.max.has_value())
+        warn("a transform channel's limit needs both 'min' and 'max' (the limit is ignored)", subject);
+    else if (m.min)
+        node.channels.limit(t, sign > 0 ? *m.min : -*m.max, sign > 0 ? *m.max : -*m.min);
+    if (m.value) {
+        const double value = sign * *m.value;
+        const double kept = node.channels.isLimited(t) ? std::clamp(value, node.channels.minimum[t], node.channels.maximum[t]) : value;
+        if (kept != value)
+            warn("the default " + formatNumber(value) + " of '" + name + "' is outside its limits; using " + formatNumber(kept), subject);
+        node.channels.defaults[t] = kept;
+    }
+    const auto bit = std::uint16_t(1u << t);
+    if (m.keyable) node.channels.unkeyable = std::uint16_t(*m.keyable ? node.channels.unkeyable & ~bit : node.channels.unkeyable | bit);
+    if (m.locked) node.channels.locked = std::uint16_t(*m.locked ? node.channels.locked | bit : node.channels.locked & ~bit);
+    return true;
+}
+
+void ModApplication::plugAttribute(RigNodeIndex index, const model::PlugMod& m)
+{
+    model::RigNode& node = a.rig.nodes[index];
+    const std::string& name = m.channel.channel;
+    const Subject subject = Subject::ofNode(node.key);
+    model::RigAttribute* attribute = attributeOf(node, name);
+    if (!attribute) {
+        model::RigAttribute created;
+        created.name = name;
+        created.labels = m.labels;
+        if (!m.labels.empty()) created.max = double(m.labels.size() - 1);
+        node.attributes.push_back(std::move(created));
+        attribute = &node.attributes.back();
+    } else if (m.type || !m.labels.empty()) {
+        warn("'" + node.path + "' already has a channel '" + name + "': its type is kept", subject);
+    }
+    if (attribute->labels.empty() && m.type != model::PlugType::Bool) {
+        if (m.min) attribute->min = *m.min;
+        if (m.max) attribute->max = *m.max;
+        if (attribute->min > attribute->max)
+            attribute->max = attribute->min;
+    }
+    if (m.value) {
+        attribute->value = std::clamp(*m.value, attribute->min, attribute->max);
+        if (attribute->value != *m.value)
+            warn("the default " + formatNumber(*m.value) + " of '" + name + "' is outside [" + formatNumber(attribute->min) + ", " +
+                     formatNumber(attribute->max) + "]; using " + formatNumber(attribute->value), subject);
+    }
+    if (!attribute->labels.empty()) attribute->value = std::round(attribute->value);
+    if (m.keyable) attribute->keyable = *m.keyable;
+    if (m.locked) attribute->locked = *m.locked;
 }
 
 void ModApplication::drive(const model::DriveMod& m)

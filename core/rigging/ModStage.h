@@ -65,6 +65,11 @@ public:
     void hide(const model::HideMod& m);
     void hideCurves(const model::HideMod& m);
     void plug(const model::PlugMod& m);
+    bool plugTransform(model::RigNodeIndex node, int channel, const model::PlugMod& m); // false: not a controller
+    void plugAttribute(model::RigNodeIndex node, const model::PlugMod& m);
+    void addSpace(model::RigConstraint& spaces, model::RigNodeIndex ctrl, model::RigNodeIndex target, const std::string& label,
+                  const model::SpaceMod& m);
+    void makeSpaceSwitch(model::RigNodeIndex ctrl, model::RigNodeIndex target, const std::string& label, const model::SpaceMod& m);
     void drive(const model::DriveMod& m);
     void vdag(const model::VdagMod& m);
 
