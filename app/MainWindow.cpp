@@ -124,6 +124,7 @@ void MainWindow::createDocks()
     m_historyView = new widgets::HistoryView(this);
     tabifyDockWidget(logDock, addDock(m_historyView, tr("History"), "historyDock", Qt::BottomDockWidgetArea));
     createOverridesDock(logDock);
+    createModsDock(logDock);
     logDock->raise();
 
     m_channelBox = new widgets::ChannelBox(this);

@@ -22,7 +22,7 @@ class QMenu;
 class QProgressBar;
 
 namespace rs::viewport { class ViewportWidget; }
-namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; class WeightPaintPanel; class OverridesPanel; class SkinChunkPanel; }
+namespace rs::widgets { class OutlinerView; class LogPanel; class ChannelBox; class ExportDialog; class OptionsEditor; class HistoryView; class TemplateLibrary; class TransformPanel; class WeightPaintPanel; class OverridesPanel; class ModsPanel; class SkinChunkPanel; }
 
 namespace rs::app {
 
@@ -43,6 +43,7 @@ public:
     widgets::TransformPanel* transformPanel() const { return m_transformPanel; }
     widgets::WeightPaintPanel* paintPanel() const { return m_paintPanel; }
     widgets::OverridesPanel* overridesPanel() const { return m_overridesPanel; }
+    widgets::ModsPanel* modsPanel() const { return m_modsPanel; }
     const viewport::DisplayOptions& displayOptions() const { return m_display; }
     QAction* action(const QString& objectName) const;
 
@@ -147,6 +148,8 @@ private:
     void createOverridesDock(QDockWidget* tabWith);
     void refreshOverridesPanel();
     void connectChannelOverrides(); // the channel box's Set as Default, Lock, Limit...
+    void createModsDock(QDockWidget* tabWith); // ModWiring.cpp: the Mods dock
+    void refreshModsPanel();
     // The compiled channels named `names` on every selected controller (Rig mode).
     std::vector<int> selectedChannels(const QStringList& names) const;
     // A controller's override record for the channel box's marks (null with defaults not restored).
@@ -191,6 +194,7 @@ private:
     widgets::TransformPanel* m_transformPanel = nullptr;
     widgets::WeightPaintPanel* m_paintPanel = nullptr;
     widgets::OverridesPanel* m_overridesPanel = nullptr;
+    widgets::ModsPanel* m_modsPanel = nullptr;
     std::optional<NodeKey> m_paintJoint; // the painted skin joint, by identity
     skin::Brush m_strokeBrush;           // the stroke under way
     bool m_strokeOpen = false, m_strokeRefused = false;

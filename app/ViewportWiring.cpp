@@ -134,9 +134,12 @@ void MainWindow::refreshScene()
         m_viewport->setGizmoTarget(joint != model::kNoId ? joint : model::kNoNode,
                                    joint != model::kNoId ? m_session.document().jointWorldMatrix(joint) : glm::dmat4(1.0));
     }
+    // Driven channels (driven keys, a mod's connection) show the value their driver gives them.
+    const eval::EvalState* evaluated = m_session.evaluation();
+    const eval::Pose* shown = evaluated && evaluated->channels.size() == m_session.pose().size() ? &evaluated->channels : &m_session.pose();
     m_channelBox->showNode(rigMode && m_session.program() ? &m_session.program()->channels() : nullptr,
                            hasNode ? s.node : model::kNoNode, hasNode ? QString::fromStdString(rig->nodes[s.node].name) : QString(),
-                           &m_session.pose(), hasNode ? channelBoxRecord(s.node) : nullptr);
+                           shown, hasNode ? channelBoxRecord(s.node) : nullptr);
     if (!rig)
         m_status->setText(tr("Guide: %1 templates").arg(m_session.document().instances().size()));
     else

@@ -3,6 +3,8 @@
 // kinds that follow their targets get normalised weights and rest offsets.
 #include "eval/Solvers.h"
 
+#include "eval/DrivenKeys.h"
+
 #include <algorithm>
 
 namespace rs::eval {
@@ -90,7 +92,32 @@ public:
         m_c.upAxis = static_cast<int>(s.up);
     }
 
+    void operator()(const model::DrivenKeyConstraint& s)
+    {
+        m_c.valueChannel = anyChannel(s.driver, "driver");
+        m_c.drivenChannel = anyChannel(s.driven, "driven");
+        m_c.keys = s.keys;
+        m_c.pre = s.pre;
+        m_c.post = s.post;
+        m_c.tangents.clear();
+        if (s.smooth && checkCurveKeys(s.keys).empty())
+            m_c.tangents = smoothTangents(s.keys);
+    }
+
 private:
+    // A transform channel or a custom attribute of the node.
+    int anyChannel(const model::ChannelRef& ref, const char* role)
+    {
+        if (const auto found = m_channels.find(ref.node, ref.channel))
+            return *found;
+        const std::string where = ref.node < m_rig.nodes.size() ? "is not a channel of node '" + m_rig.nodes[ref.node].path + "'"
+                                                                : "names no node of the rig";
+        m_diagnostics.push_back(makeError({}, "constraint '" + m_rc.path + "': its " + role + " channel '" + ref.channel + "' " +
+                                                  where));
+        m_ok = false;
+        return -1;
+    }
+
     void weighted(const std::vector<double>& weights, bool keepOffset)
     {
         m_weights = &weights;

@@ -1,5 +1,6 @@
 #include "eval/RigProgram.h"
 
+#include "eval/DrivenKeys.h"
 #include "eval/Solvers.h"
 
 #include <deque>
@@ -60,6 +61,27 @@ CompiledConstraint compileConstraint(const model::RigConstraint& rc, const model
 
 } // namespace
 
+// Driven keys run before the steps, drivers first; a loop is a compile error.
+bool RigProgram::orderDrivenKeys(RigProgram& p, const model::Rig& rig, const std::vector<std::uint32_t>& drives,
+                                 Diagnostics& diagnostics)
+{
+    std::vector<ChannelDrive> channels;
+    for (std::uint32_t k : drives)
+        channels.push_back({p.m_constraints[k].valueChannel, p.m_constraints[k].drivenChannel});
+    int loop = -1;
+    const std::vector<std::uint32_t> order = orderChannelDrives(channels, loop);
+    if (loop >= 0) {
+        Diagnostic d = makeError({}, "driven key '" + rig.constraints[drives[loop]].path +
+                                         "' is part of a loop of driven keys (a channel drives itself); the rig cannot be evaluated");
+        d.subject = Subject::ofNode(rig.constraints[drives[loop]].key);
+        diagnostics.push_back(std::move(d));
+        return false;
+    }
+    for (std::uint32_t i : order)
+        p.m_drivenKeys.push_back(drives[i]);
+    return true;
+}
+
 RigProgram::RigProgram() = default;
 RigProgram::RigProgram(RigProgram&&) noexcept = default;
 RigProgram& RigProgram::operator=(RigProgram&&) noexcept = default;
@@ -111,17 +133,22 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
                     placed[c.driven[k]] = false;
     for (model::RigNodeIndex i = 0; i < n; ++i)
         if (placed[i]) writers[i].push_back(i);
-    // Visibility constraints place nothing: no writer, no step, no dependency.
+    // Visibility constraints and driven keys place nothing: no writer, no step, no dependency.
     auto isStep = [&](std::uint32_t k) {
-        return !p.m_constraints[k].driven.empty() && p.m_constraints[k].kind != model::ConstraintKind::Visibility;
+        const model::ConstraintKind kind = p.m_constraints[k].kind;
+        return !p.m_constraints[k].driven.empty() && kind != model::ConstraintKind::Visibility &&
+               kind != model::ConstraintKind::DrivenKey;
     };
+    std::vector<std::uint32_t> drives;
     for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k) {
         if (!p.m_constraints[k].driven.empty() && !isStep(k))
-            p.m_visibility.push_back(k);
+            (p.m_constraints[k].kind == model::ConstraintKind::DrivenKey ? drives : p.m_visibility).push_back(k);
         else
             for (model::RigNodeIndex d : p.m_constraints[k].driven)
                 writers[d].push_back(std::uint32_t(n + k));
     }
+    if (!orderDrivenKeys(p, rig, drives, diagnostics))
+        return Result<RigProgram>::failure(diagnostics);
     std::vector<std::vector<std::uint32_t>> dependents(ops);
     std::vector<int> pending(ops, 0);
     auto depend = [&](std::uint32_t op, std::uint32_t on) {
@@ -185,11 +212,27 @@ EvalState RigProgram::makeState() const
     state.arcLengths.resize(m_maxSamples);
     state.twistAngles.resize(m_constraints.size());
     state.visible.assign(m_nodes.size(), 1);
+    if (!m_drivenKeys.empty())
+        state.channels.resize(m_channels.size());
     return state;
 }
 
-void RigProgram::evaluate(const Pose& pose, EvalState& state) const
+const Pose& RigProgram::driveChannels(const Pose& given, EvalState& state) const
 {
+    if (m_drivenKeys.empty())
+        return given;
+    state.channels.assign(given.begin(), given.end()); // the state's capacity: no allocation
+    for (std::uint32_t k : m_drivenKeys) {
+        const CompiledConstraint& c = m_constraints[k];
+        const double x = state.channels[c.valueChannel];
+        state.channels[c.drivenChannel] = m_channels.clamp(c.drivenChannel, evaluateCurve(c.keys, c.tangents, c.pre, c.post, x));
+    }
+    return state.channels;
+}
+
+void RigProgram::evaluate(const Pose& given, EvalState& state) const
+{
+    const Pose& pose = driveChannels(given, state);
     std::vector<Affine>& world = state.world;
     for (const Step& step : m_steps) {
         if (!step.isNode) {

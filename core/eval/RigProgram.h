@@ -32,6 +32,9 @@ struct EvalState {
     // in this pose. Nodes no visibility constraint drives stay 1.
     std::vector<std::uint8_t> visible;
     bool isVisible(model::RigNodeIndex node) const { return node >= visible.size() || visible[node] != 0; }
+    // The pose evaluated last with its driven channels computed (driven keys,
+    // model::DrivenKeyConstraint); empty when the rig has none.
+    Pose channels;
     Mat4 worldMatrix(model::RigNodeIndex node) const { return world[node].matrix(); }
 };
 
@@ -49,7 +52,12 @@ public:
     std::size_t stepCount() const { return m_steps.size(); }
     EvalState makeState() const;
     // Evaluates every node's world transform for `pose` (m_channels.size() values).
+    // Driven channels (driven keys) are computed from it first: their values in `pose` are ignored.
     void evaluate(const Pose& pose, EvalState& state) const;
+    // `pose` with its driven channels computed (into state.channels), or `pose`
+    // itself when the rig has no driven keys: what evaluate() places the nodes with.
+    const Pose& driveChannels(const Pose& pose, EvalState& state) const;
+    bool hasDrivenKeys() const { return !m_drivenKeys.empty(); }
 
     // What pose tools need to invert a node's placement: the world transform
     // the node's channels act in (parent world * rest local, compensated), so
@@ -78,6 +86,9 @@ private:
     std::vector<CompiledConstraint> m_constraints;
     std::vector<Step> m_steps;
     std::vector<std::uint32_t> m_visibility; // visibility constraints: evaluated after the steps, ordering nothing
+    std::vector<std::uint32_t> m_drivenKeys; // driven keys, drivers first: computed on the pose before the steps
+    static bool orderDrivenKeys(RigProgram& p, const model::Rig& rig, const std::vector<std::uint32_t>& drives,
+                                Diagnostics& diagnostics);
     std::size_t m_maxSamples = 0;
 };
 

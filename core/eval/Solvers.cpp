@@ -2,6 +2,7 @@
 // default channels: offsets, bone frames and curve parameters are measured on
 // the rest pose at compile time and re-applied at evaluation.
 #include "eval/Solvers.h"
+#include "eval/DrivenKeys.h"
 
 #include "eval/IkSolver.h"
 #include "eval/RigProgram.h"
@@ -271,6 +272,8 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         if (!(c.radius > 1e-9) || !std::isfinite(c.radius)) return "its radius must be positive";
         c.restInReference = rest[c.targets[0]].inverse().apply(rest[c.driven.front()].translation);
         return {};
+    case ConstraintKind::DrivenKey:
+        return checkCurveKeys(c.keys);
     case ConstraintKind::Twist: {
         if (c.nonRolling && t != 3) return "needs three targets (start, end, reference) to be non-rolling";
         if (!c.nonRolling && t != 2) return "needs two targets (start, end)";
@@ -316,6 +319,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Spline: solveSpline(c, pose, state); break;
     case ConstraintKind::Roll: solveRoll(c, pose, world); break;
     case ConstraintKind::Visibility: break; // RigProgram::evaluate writes EvalState::visible
+    case ConstraintKind::DrivenKey: break;  // RigProgram::evaluate computes the driven channels first
     }
 }
 

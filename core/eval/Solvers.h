@@ -32,6 +32,11 @@ struct CompiledConstraint {
     int axis = 0, driveResponse = 0;
     double factor = 1, low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
     bool scaleDrive = false;
+    // Driven key: the driver is valueChannel; the curve (tangents empty: linear).
+    int drivenChannel = -1;
+    std::vector<model::CurveKey> keys;
+    std::vector<double> tangents;
+    model::CurveInfinity pre = model::CurveInfinity::Constant, post = model::CurveInfinity::Constant;
     model::RigNodeIndex chainParent = model::kNoNode; // parent of driven[0]
     double restParentScale = 1.0;
     Mat3 restParentRotation{1.0};

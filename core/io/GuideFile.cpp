@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/GuidePose.h"
+#include "io/ModFile.h"
 #include "io/OverrideFile.h"
 #include "io/YamlSupport.h"
 
@@ -223,6 +224,7 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
     std::map<model::InstanceId, YAML::Node> nodes;
     std::vector<LegacyPoseRecord> legacyPose;
     LegacyRecords legacy;
+    YAML::Node modsNode;
     for (const auto& kv : root) {
         const std::string key = kv.first.Scalar();
         if (key == kFormatKey) continue;
@@ -233,6 +235,7 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
             if (!legacy.pose.empty() && !legacy.where) legacy.where = locationOf(kv.first, r.file());
         }
         else if (key == "overrides") readOverrides(r, kv.second, doc.overrides);
+        else if (key == "mods") modsNode = kv.second; // read once the instances are: names resolve to ids
         else if (key == "reference_model") { // an older guide's one see-through model: now one of its models
             if (auto s = r.string(kv.second, "reference_model"); s && !s->empty() &&
                 std::find(doc.models.begin(), doc.models.end(), *s) == doc.models.end())
@@ -254,6 +257,8 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
                 readInstance(r, node, doc, nodes, legacy);
         } else r.warning(kv.first, "unknown key '" + key + "' (ignored)");
     }
+    if (modsNode)
+        readMods(r, modsNode, doc);
     if (!hasErrors(diagnostics))
         validate(r, doc, nodes);
     if (!hasErrors(diagnostics))
@@ -357,6 +362,7 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
         }
     }
     writeOverrides(out, doc);
+    writeMods(out, doc);
     writeLegacyPose(out, doc);
     return out.str();
 }

@@ -149,6 +149,22 @@ public:
         field("up", model::axisName(s.up));
     }
 
+    void operator()(const model::DrivenKeyConstraint& s)
+    {
+        auto channel = [&](const model::ChannelRef& c) {
+            return "{node: " + nodeText(m_rig, c.node) + ", channel: " + quoteIfNeeded(c.channel) + "}";
+        };
+        field("driver_channel", channel(s.driver)); // "driven" is the constraint's driven nodes
+        field("driven_channel", channel(s.driven));
+        std::string keys = "[";
+        for (std::size_t i = 0; i < s.keys.size(); ++i)
+            keys += (i ? ", [" : "[") + number(s.keys[i].in) + ", " + number(s.keys[i].out) + "]";
+        field("keys", keys + "]");
+        field("smooth", boolText(s.smooth));
+        field("pre", model::curveInfinityName(s.pre));
+        field("post", model::curveInfinityName(s.post));
+    }
+
 private:
     void field(const char* name, const std::string& text) { m_out << "    " << name << ": " << text << "\n"; }
     void weighted(const std::vector<double>& weights, bool keepOffset)

@@ -39,11 +39,22 @@ const char* constraintKindName(ConstraintKind kind)
     case ConstraintKind::Scale: return "scale";
     case ConstraintKind::Visibility: return "visibility";
     case ConstraintKind::Roll: return "roll";
+    case ConstraintKind::DrivenKey: return "driven_key";
     }
     return "parent";
 }
 
 const char* showWhenName(ShowWhen when) { return when == ShowWhen::Above ? "above" : "below"; }
+
+const char* curveInfinityName(CurveInfinity infinity)
+{
+    switch (infinity) {
+    case CurveInfinity::Constant: return "constant";
+    case CurveInfinity::Linear: return "linear";
+    case CurveInfinity::Cycle: return "cycle";
+    }
+    return "constant";
+}
 
 } // namespace rs::model
 
@@ -79,6 +90,9 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 ref(settings.value);
             } else if constexpr (std::is_same_v<T, RollConstraint>) {
                 optionalRef(settings.amount);
+            } else if constexpr (std::is_same_v<T, DrivenKeyConstraint>) {
+                visit(settings.driver.node);
+                visit(settings.driven.node);
             } else if constexpr (std::is_same_v<T, DriveConstraint>) {
                 ref(settings.value);
                 std::visit(

@@ -247,13 +247,54 @@ struct RollConstraint {
     bool operator==(const RollConstraint&) const = default;
 };
 
+
+// A channel of a node: a controller's transform channel ("tx".."sz", in the
+// channel box's units: metres, degrees, factors) or any node's custom
+// attribute (`curl`, `ik_blend`).
+struct ChannelRef {
+    RigNodeIndex node = kNoNode;
+    std::string channel{};
+    bool operator==(const ChannelRef&) const = default;
+};
+
+// A keyed curve's point: at driver value `in` the driven channel is `out`.
+struct CurveKey {
+    double in = 0.0;
+    double out = 0.0;
+    bool operator==(const CurveKey&) const = default;
+};
+// What a keyed curve gives before its first key (pre) and after its last (post):
+// the end key's value, the end segment's slope continued, or the keys repeated.
+enum class CurveInfinity : std::uint8_t { Constant = 0, Linear = 1, Cycle = 2 };
+const char* curveInfinityName(CurveInfinity infinity); // "constant", "linear", "cycle"
+
+// Driven keys (Maya's set driven key, Mikan's `drive` mod): the `driven`
+// channel takes the keyed curve's value at the `driver` channel's value. It
+// works on channels, not transforms: the evaluator computes every driven
+// channel from the pose before placing any node (drivers first when one drives
+// another's driver), and the driven channel's own pose value is ignored (the
+// builder locks it for animators). A driven channel driven twice takes the
+// last; a loop of driven keys is a compile error. driven = {driven.node},
+// targets = {driver.node}; it places nothing. Keys sorted by `in`, strictly
+// increasing, at least one (else the evaluator skips it with a warning);
+// linear between keys or, `smooth`, monotone cubic (never overshooting a key).
+struct DrivenKeyConstraint {
+    ChannelRef driver{};
+    ChannelRef driven{};
+    std::vector<CurveKey> keys{};
+    bool smooth = false;
+    CurveInfinity pre = CurveInfinity::Constant;
+    CurveInfinity post = CurveInfinity::Constant;
+    bool operator==(const DrivenKeyConstraint&) const = default;
+};
+
 // What a constraint does; the index of its settings in ConstraintSettings.
-enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale, Visibility, Roll };
+enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale, Visibility, Roll, DrivenKey };
 const char* constraintKindName(ConstraintKind kind); // "parent", "orient"...
 
 using ConstraintSettings = std::variant<ParentConstraint, OrientConstraint, PointConstraint, BlendConstraint, IkConstraint,
                                         TwistConstraint, SplineConstraint, SpaceConstraint, DriveConstraint, AimConstraint,
-                                        ScaleConstraint, VisibilityConstraint, RollConstraint>;
+                                        ScaleConstraint, VisibilityConstraint, RollConstraint, DrivenKeyConstraint>;
 
 template <ConstraintKind kind>
 using SettingsOf = std::variant_alternative_t<static_cast<std::size_t>(kind), ConstraintSettings>;
@@ -270,7 +311,8 @@ static_assert(std::is_same_v<SettingsOf<ConstraintKind::Aim>, AimConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Scale>, ScaleConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Visibility>, VisibilityConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Roll>, RollConstraint>);
-static_assert(std::variant_size_v<ConstraintSettings> == 13);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::DrivenKey>, DrivenKeyConstraint>);
+static_assert(std::variant_size_v<ConstraintSettings> == 14);
 
 struct RigConstraint {
     NodeKey key;                       // identity, as a node's

@@ -9,6 +9,7 @@
 #include "base/Identity.h"
 #include "base/Math.h"
 #include "model/Mesh.h"
+#include "model/Mod.h"
 #include "model/Naming.h"
 #include "model/Override.h"
 #include "model/Value.h"
@@ -101,6 +102,10 @@ public:
     // not make are kept.
     Overrides overrides;
     LegacyPoseValues legacyPose;     // unmatched records of an older guide, kept
+    // Modifications of the built rig (model/Mod.h), global or per instance,
+    // applied in this order; edited through rs::edit. Mods whose nodes a build
+    // does not make are reported and kept.
+    Mods mods;
     // The character's models (any format io::importModel reads), bound to the
     // rig by skin weights kept beside the guide (`<guide>.weights`); drawn
     // see-through for placing guides until bound. Absolute paths in memory;

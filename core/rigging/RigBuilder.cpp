@@ -1,6 +1,7 @@
 #include "rigging/RigBuilder.h"
 
 #include "rigging/Fragment.h"
+#include "rigging/ModStage.h"
 #include "rigging/RigAssembly.h"
 #include "templates/Structure.h"
 
@@ -274,6 +275,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     for (RigNodeIndex i = 1; i < a.rig.nodes.size(); ++i)
         if (a.rig.nodes[i].parent == kNoNode)
             a.rig.nodes[i].parent = 0;
+    applyRigMods(a, guide); // before the overrides: an override may adjust a channel a mod made
     report(0.88, "overrides");
     applyRigOverrides(a, guide, restore);
     computeControlScales(a, builders, cache ? &cache->defaultSegments : nullptr);
@@ -289,6 +291,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
         applyShapes(a, cache ? cache->shapeSamples : samples);
         applyShapeOverrides(a, guide, restore);
         buildVirtualHierarchy(a);
+        applyHierarchyMods(a, guide);
         computeLocalMatrices(a.rig);
         for (const auto& plugin : builtinPlugins())
             plugin->finalize(a);

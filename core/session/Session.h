@@ -362,6 +362,13 @@ public:
     void setRestore(const model::RestoreToggles& restore);
     const model::RestoreToggles& restore() const { return m_restore; }
 
+    // --- mods (SessionMods.cpp): the guide's mods (model/Mod.h) by index in
+    // document order, one undo step each (change kind Mods); a built rig is
+    // rebuilt with them. Refused for a malformed mod (edit::modProblem) or an index past the end.
+    Status addMod(const model::Mod& mod);
+    Status setMod(std::size_t index, const model::Mod& mod);
+    Status removeMod(std::size_t index);
+
     // --- rig mode (SessionPose.cpp)
     void selectControllers(const std::vector<model::RigNodeIndex>& nodes, bool add);
     // Over controllers in Rig mode, else (or with `instances`) over template instances.

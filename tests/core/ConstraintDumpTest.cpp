@@ -2,8 +2,8 @@
 // read back from a sample's dump have the same kinds, nodes and settings (to
 // the dump's 6 decimals), no field the kind does not have, and the rig
 // evaluates as before. Aim, point and scale constraints (no builder makes
-// them) are added to the prop, so every kind is covered (the vehicle brings the
-// wheels' roll).
+// them) and a driven key are added to the prop, so every kind is covered (the
+// vehicle brings the wheels' roll).
 #include "EvalTestSupport.h"
 #include "io/RigDump.h"
 
@@ -61,6 +61,7 @@ private:
         if (kind == "drive") return drive();
         if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
         if (kind == "roll") return model::RollConstraint{axis("axle"), axis("forward"), number("radius"), optionalAttribute("amount")};
+        if (kind == "driven_key") return drivenKey();
         ADD_FAILURE() << "unknown kind " << kind;
         return {};
     }
@@ -90,6 +91,27 @@ private:
         else if (response == "past_break") d.response = model::DrivePastBreak{attribute("break")};
         else ADD_FAILURE() << "unknown drive response " << response;
         return d;
+    }
+
+    model::DrivenKeyConstraint drivenKey()
+    {
+        model::DrivenKeyConstraint d{channel("driver_channel"), channel("driven_channel"), {}, flag("smooth"), infinity("pre"), infinity("post")};
+        for (const auto& key : field("keys"))
+            d.keys.push_back({key[0].as<double>(), key[1].as<double>()});
+        return d;
+    }
+    model::ChannelRef channel(const std::string& name)
+    {
+        const YAML::Node n = field(name);
+        return {node(n["node"]), n["channel"].as<std::string>()};
+    }
+    model::CurveInfinity infinity(const std::string& name)
+    {
+        const std::string text = field(name).as<std::string>();
+        for (auto i : {model::CurveInfinity::Constant, model::CurveInfinity::Linear, model::CurveInfinity::Cycle})
+            if (text == model::curveInfinityName(i)) return i;
+        ADD_FAILURE() << "unknown infinity " << text;
+        return {};
     }
 
     YAML::Node field(const std::string& name)
@@ -144,6 +166,8 @@ model::ConstraintSettings asDumped(model::ConstraintSettings settings)
             round(s.threshold);
         if constexpr (std::is_same_v<S, model::RollConstraint>)
             round(s.radius);
+        if constexpr (std::is_same_v<S, model::DrivenKeyConstraint>)
+            for (model::CurveKey& key : s.keys) { round(key.in); round(key.out); }
         if constexpr (std::is_same_v<S, model::DriveConstraint>) {
             round(s.factor);
             if (auto* clamped = std::get_if<model::DriveClamped>(&s.response)) {
@@ -181,7 +205,7 @@ std::vector<Affine> sweptWorld(const model::Rig& rig)
     return state.world;
 }
 
-void addAimPointAndScale(model::Rig& rig)
+void addAimPointScaleAndDrivenKey(model::Rig& rig)
 {
     const auto antenna = *rig.findPath("antenna::skin.3"), lid = *rig.findPath("lid::ctrls.xform"),
                chest = *rig.findPath("chest::ctrls.xform");
@@ -191,6 +215,11 @@ void addAimPointAndScale(model::Rig& rig)
                                model::PointConstraint{.weights = {1.0, 2.0 / 3.0}, .keepOffset = false}});
     rig.constraints.push_back({{}, "t::scale", model::kNoId, {*rig.findPath("antenna::skin.1")}, {chest},
                                model::ScaleConstraint{.weights = {}, .keepOffset = true}});
+    rig.constraints.push_back({{}, "t::driven_key", model::kNoId, {lid}, {chest},
+                               model::DrivenKeyConstraint{.driver = {chest, "ry"}, .driven = {lid, "rx"},
+                                                          .keys = {{-30.0, 1.0 / 3.0}, {0.0, 0.0}, {60.0, -45.0}},
+                                                          .smooth = true, .pre = model::CurveInfinity::Linear,
+                                                          .post = model::CurveInfinity::Cycle}});
 }
 
 } // namespace
@@ -203,7 +232,7 @@ TEST(ConstraintDump, EveryKindReadsBackFromTheDumpWithItsTypedSettingsAndEvaluat
         test::PosedRig built(sample);
         model::Rig rig = built.rig;
         if (sample == "prop")
-            addAimPointAndScale(rig);
+            addAimPointScaleAndDrivenKey(rig);
         const model::Rig back = readBack(rig);
         ASSERT_EQ(back.constraints.size(), rig.constraints.size());
         for (std::size_t i = 0; i < rig.constraints.size(); ++i) {
