@@ -80,6 +80,8 @@ void MainWindow::follow(const edit::Change& change)
     // The Overrides dock: records and, after a build, which are orphans.
     if (everything || (!change.preview && change.hasAny(K::Overrides | K::Shapes | K::Pose | K::Instances | K::Names | K::Rig)))
         refreshOverridesPanel();
+    if (change.hasAny(K::Build | K::Document))
+        syncBuildActions();
     if (change.has(K::Rig))
         m_channelBox->invalidate(); // a rebuilt rig has new channel indices
     if (change.has(K::Mode))

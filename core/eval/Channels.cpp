@@ -48,6 +48,7 @@ ChannelLayout::ChannelLayout(const model::Rig& rig)
                 c.max = node.channels.maximum[i];
                 c.locked = !animatable || node.channels.isLocked(i);
                 c.keyable = node.channels.isKeyable(i);
+                c.hidden = node.channels.isHidden(i);
                 m_channels.push_back(std::move(c));
             }
             static const std::vector<std::string> kOrders = {"xyz", "yzx", "zxy", "xzy", "yxz", "zyx"};

@@ -27,6 +27,7 @@ struct Channel {
     bool limited = false;
     bool locked = false;            // animators cannot change it (tools keep it too)
     bool keyable = true;            // false: shown, set by hand, never keyed
+    bool hidden = false;            // not shown to animators (cleanup's lock and hide)
     const std::vector<std::string>* labels = nullptr; // enum labels (points into the rig)
     bool isEnum() const { return labels && !labels->empty(); }
 };

@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/GuidePose.h"
+#include "io/BuildSettingsFile.h"
 #include "io/OverrideFile.h"
 #include "io/YamlSupport.h"
 
@@ -233,6 +234,7 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
             if (!legacy.pose.empty() && !legacy.where) legacy.where = locationOf(kv.first, r.file());
         }
         else if (key == "overrides") readOverrides(r, kv.second, doc.overrides);
+        else if (key == "build") readBuildSettings(r, kv.second, doc.build);
         else if (key == "reference_model") { // an older guide's one see-through model: now one of its models
             if (auto s = r.string(kv.second, "reference_model"); s && !s->empty() &&
                 std::find(doc.models.begin(), doc.models.end(), *s) == doc.models.end())
@@ -299,6 +301,7 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
                 << ", lowercase: " << (n.lowercase ? "on" : "off") << "}\n";
         }
     }
+    writeBuildSettings(out, doc.build);
     if (!doc.models.empty()) {
         out << "models:\n";
         for (const std::string& model : doc.models) {

@@ -1,5 +1,6 @@
 #include "rigging/RigBuilder.h"
 
+#include "rigging/CleanupStage.h"
 #include "rigging/Fragment.h"
 #include "rigging/RigAssembly.h"
 #include "templates/Structure.h"
@@ -150,7 +151,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* buildCache)
 {
-    return buildRig(guide, templates, builders, progress, buildCache, model::RestoreToggles{});
+    return buildRig(guide, templates, builders, progress, buildCache, guide.build.restore);
 }
 
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
@@ -276,6 +277,8 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
             a.rig.nodes[i].parent = 0;
     report(0.88, "overrides");
     applyRigOverrides(a, guide, restore);
+    if (guide.build.cleanup)
+        cleanUpRig(a.rig, guide, restore);
     compensateSegmentScale(a);
     // The program compiles on another core while the shapes, the hierarchy and
     // the checks run here: they write none of what it reads (see compileProgram).

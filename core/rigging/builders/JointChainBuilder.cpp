@@ -1,5 +1,6 @@
 #include "rigging/builders/Builders.h"
 
+#include "rigging/builders/BuilderKit.h"
 #include "templates/Structure.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -77,6 +78,9 @@ public:
             model::RigNodeIndex driver = offset;
             if (controllers)
                 driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
+            // A generic chain (props, modules without a builder of their own):
+            // each control slides, turns and scales its part.
+            kit::animate(ctx, driver, kit::kTranslate | kit::kRotate | kit::kScale);
             if (skin)
                 ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
             ctx.setHook(chain[i], driver);
@@ -123,6 +127,7 @@ public:
             model::RigNodeIndex driver = offset;
             if (controllers)
                 driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
+            kit::animate(ctx, driver, kit::kRotate); // a bone turns about its head
             if (skin)
                 ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
             ctx.setHook(chain[i], driver);
