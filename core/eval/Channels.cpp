@@ -179,6 +179,8 @@ model::PoseValues valuesFromPose(const model::Rig& rig, const ChannelLayout& lay
 {
     for (std::size_t i = 0; i < layout.size(); ++i) {
         const Channel& c = layout[i];
+        if (c.locked)
+            continue; // poseFromValues ignored its value: the record waits for the lock (or cleanup) to go
         const NodeKey& id = rig.nodes[c.node].key;
         if (std::abs(pose[i] - c.defaultValue) > 1e-12) {
             values[id][c.name] = pose[i];

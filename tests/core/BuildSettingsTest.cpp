@@ -117,3 +117,23 @@ TEST(BuildSettings, TheSessionsTogglesAreUndoableStepsWithATypedChange)
     ASSERT_TRUE(reopened.ok()) << formatAll(reopened.diagnostics());
     EXPECT_EQ(reopened->build, t.s.document().build);
 }
+
+TEST(BuildSettings, ATestPoseOnAChannelCleanupLocksIsKeptUntilCleanupIsOff)
+{
+    Started t;
+    const NodeKey fk = t.node("arm.L::ctrls.fk.0").key;
+    model::Override record;
+    record.pose = {{"tx", 0.05}};
+    ASSERT_TRUE(test::succeeded(t.s.setOverride(fk, record)));
+    auto channel = [&](const std::string& name) { return *t.s.program()->channels().find(*t.s.rig()->find(fk), name); };
+    EXPECT_EQ(t.s.pose()[channel("tx")], 0.05);
+    ASSERT_TRUE(test::succeeded(t.s.setCleanup(true)));
+    EXPECT_EQ(t.s.pose()[channel("tx")], 0.0) << "locked by cleanup: at its default";
+    ASSERT_TRUE(test::succeeded(t.s.setChannel(channel("rx"), 10.0, false))); // a pose edit writes the pose back
+    const auto& pose = t.s.document().overrides.at(fk).pose;
+    EXPECT_EQ(pose.at("rx"), 10.0);
+    ASSERT_TRUE(pose.count("tx")) << "the locked channel's value stays in the guide";
+    EXPECT_EQ(pose.at("tx"), 0.05);
+    ASSERT_TRUE(test::succeeded(t.s.setCleanup(false)));
+    EXPECT_EQ(t.s.pose()[channel("tx")], 0.05);
+}

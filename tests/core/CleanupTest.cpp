@@ -237,3 +237,22 @@ TEST(Cleanup, RecordedDefaultsAreGltfExtrasAndFbxUserProperties)
     ASSERT_FALSE(hasErrors(io::exportRig(build(guide), plain, options)));
     EXPECT_EQ(test::readFileBytes(plain).find("\"defaults\""), std::string::npos);
 }
+
+TEST(Cleanup, TwoBuildsOfACleanedGuideExportByteIdenticalGlbAndFbx)
+{
+    const model::GuideDocument guide = cleaned(test::loadSample("biped"));
+    io::ExportOptions options;
+    options.controllers = true;
+    for (const char* extension : {".glb", ".fbx"}) {
+        std::string bytes[2];
+        for (int k = 0; k < 2; ++k) {
+            const std::string path = test::temporaryPath("cleaned-" + std::to_string(k) + extension);
+            ASSERT_FALSE(hasErrors(io::exportRig(build(guide), path, options)));
+            bytes[k] = test::readFileBytes(path);
+        }
+        EXPECT_FALSE(bytes[0].empty());
+        EXPECT_TRUE(bytes[0] == bytes[1]) << extension;
+        const std::string recorded = extension == std::string(".fbx") ? "rig_default_rx" : "\"defaults\"";
+        EXPECT_NE(bytes[0].find(recorded), std::string::npos) << extension;
+    }
+}
