@@ -63,17 +63,33 @@ private:
     std::vector<std::pair<std::size_t, TemplateInstance>> m_removed;
 };
 
+// Renames an instance, and the `virtual_parent` options that name it (the
+// one option whose value is an instance's name), so they still find it.
 class RenameInstance final : public Command {
 public:
-    RenameInstance(InstanceId id, std::string from, std::string to) : m_id(id), m_from(std::move(from)), m_to(std::move(to)) {}
+    RenameInstance(InstanceId id, std::string from, std::string to, std::vector<InstanceId> referring)
+        : m_id(id), m_from(std::move(from)), m_to(std::move(to)), m_referring(std::move(referring)) {}
     std::string text() const override { return "Rename '" + m_from + "' to '" + m_to + "'"; }
-    void redo(GuideDocument& d) override { d.instance(m_id)->name = m_to; }
-    void undo(GuideDocument& d) override { d.instance(m_id)->name = m_from; }
-    Change change() const override { return Change::of(ChangeKind::Instances | ChangeKind::Names, {m_id}); }
+    void redo(GuideDocument& d) override { set(d, m_to); }
+    void undo(GuideDocument& d) override { set(d, m_from); }
+    Change change() const override
+    {
+        std::vector<InstanceId> ids{m_id};
+        ids.insert(ids.end(), m_referring.begin(), m_referring.end());
+        return Change::of(ChangeKind::Instances | ChangeKind::Names | (m_referring.empty() ? ChangeKind{} : ChangeKind::Options), ids);
+    }
 
 private:
+    void set(GuideDocument& d, const std::string& name)
+    {
+        d.instance(m_id)->name = name;
+        for (InstanceId id : m_referring)
+            d.instance(id)->options["virtual_parent"] = name;
+    }
+
     InstanceId m_id;
     std::string m_from, m_to;
+    std::vector<InstanceId> m_referring;
 };
 
 // One document-wide field (the test pose, the reference model) set to a new value.
@@ -228,7 +244,12 @@ Status renameInstance(History& history, InstanceId id, const std::string& newNam
         return invalidName(id, newName);
     if (history.document().instanceNamed(newName))
         return refusedFor(id, "an instance named '" + newName + "' already exists");
-    history.push(std::make_unique<RenameInstance>(id, instance->name, newName));
+    std::vector<InstanceId> referring;
+    for (const TemplateInstance& other : history.document().instances())
+        if (auto it = other.options.find("virtual_parent"); it != other.options.end())
+            if (const auto* name = std::get_if<std::string>(&it->second); name && *name == instance->name)
+                referring.push_back(other.id);
+    history.push(std::make_unique<RenameInstance>(id, instance->name, newName, std::move(referring)));
     return {};
 }
 

@@ -74,6 +74,21 @@ struct Sample {
     std::vector<Quat> rotations;
 };
 
+// One key on every track of `clip`, each rotation on the hemisphere of the
+// track's previous key (no half-turn flip between keys).
+void appendSample(ExportClip& clip, const Sample& sample)
+{
+    for (std::size_t n = 0; n < clip.tracks.size(); ++n) {
+        ExportTrack& track = clip.tracks[n];
+        Quat r = sample.rotations[n];
+        if (!track.rotations.empty() && glm::dot(track.rotations.back(), r) < 0.0)
+            r = -r;
+        track.translations.push_back(sample.translations[n]);
+        track.rotations.push_back(r);
+        track.scales.push_back(sample.scales[n]);
+    }
+}
+
 Sample sampleAt(double frame, const eval::Pose& pose, const eval::RigProgram& program, const Sampler& sampler,
                 eval::EvalState& state)
 {
@@ -186,15 +201,7 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
     }
     for (const Sample& sample : samples) {
         clip.times.push_back(sample.frame / framesPerSecond);
-        for (std::size_t n = 0; n < clip.tracks.size(); ++n) {
-            ExportTrack& track = clip.tracks[n];
-            Quat r = sample.rotations[n];
-            if (!track.rotations.empty() && glm::dot(track.rotations.back(), r) < 0.0)
-                r = -r;
-            track.translations.push_back(sample.translations[n]);
-            track.rotations.push_back(r);
-            track.scales.push_back(sample.scales[n]);
-        }
+        appendSample(clip, sample);
     }
     std::vector<ExportTrack> kept;
     for (auto& track : clip.tracks) {
@@ -245,15 +252,7 @@ ExportClip keyedClip(const model::Rig& rig, const KeyedClip& keyed, const eval::
     for (std::size_t k = 0; k < keyed.poses.size(); ++k) {
         const Sample sample = sampleAt(keyed.times[k], eval::poseFromValues(rig, program.channels(), keyed.poses[k]),
                                        program, sampler, state);
-        for (std::size_t n = 0; n < clip.tracks.size(); ++n) {
-            ExportTrack& track = clip.tracks[n];
-            Quat r = sample.rotations[n];
-            if (!track.rotations.empty() && glm::dot(track.rotations.back(), r) < 0.0)
-                r = -r;
-            track.translations.push_back(sample.translations[n]);
-            track.rotations.push_back(r);
-            track.scales.push_back(sample.scales[n]);
-        }
+        appendSample(clip, sample);
     }
     std::vector<ExportTrack> kept;
     for (auto& track : clip.tracks) {

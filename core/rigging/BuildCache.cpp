@@ -33,6 +33,7 @@ void BuildCache::Impl::begin(const templates::TemplateRegistry& library, const B
     if (templates != &library || builders != &registry || !(naming == rules)) {
         fragments.clear();
         shapeSamples.clear();
+        defaultSegments.clear();
         templates = &library;
         builders = &registry;
         naming = rules;

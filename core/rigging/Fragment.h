@@ -64,6 +64,7 @@ struct BuildCache::Impl {
     std::optional<Result<eval::RigProgram>> program;
     std::size_t lastNodeCount = 0; // the last build's: the next one reserves as much
     ShapeSamples shapeSamples;     // the library's shapes, sampled once
+    std::map<std::string, double> defaultSegments; // by template id: its default guide's mean segment (ControlSize.cpp)
 
     // Drops everything when the library, builders or naming rules differ from the last build's.
     void begin(const templates::TemplateRegistry& library, const BuilderRegistry& registry, const model::NamingRules& rules);

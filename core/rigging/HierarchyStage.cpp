@@ -1,11 +1,14 @@
 // Finalize stage: the virtual hierarchy per domain (ctrls, skin...) from the
 // manifests' `hierarchy` sections. It drives pickwalk (ctrls) and the export
-// skeleton (skin), independent of the physical parenting.
+// skeleton (skin), independent of the physical parenting. The common option
+// `virtual_parent` (an instance's name) attaches an instance's root nodes to
+// the closest node of that instance in the same domain instead of its hook's.
 #include "rigging/RigAssembly.h"
 #include "templates/Condition.h"
 #include "templates/Structure.h"
 
 #include <cmath>
+#include <optional>
 #include <string_view>
 #include <unordered_map>
 
@@ -74,8 +77,70 @@ void registerHooks(RigAssembly& a, const InstanceRecord& r, const templates::Hie
     }
 }
 
-void linkParents(RigAssembly& a, const InstanceRecord& r, const templates::HierarchyEntry& e,
-                 const templates::HierarchyRule& rule, const std::vector<RigNodeIndex>& nodes)
+// The common option `virtual_parent` (an instance name): the nodes of that
+// instance in `domain`, from its copy on this instance's branch if it has one,
+// else its unbranched copy, else its first. Empty with a warning when there is
+// no such instance or it has no node in the domain.
+std::vector<RigNodeIndex> virtualParentCandidates(RigAssembly& a, const NodesByInstance& index, const InstanceRecord& r,
+                                                  const std::string& domain)
+{
+    auto option = r.options.find("virtual_parent");
+    const std::string* name = option == r.options.end() ? nullptr : std::get_if<std::string>(&option->second);
+    if (!name || name->empty())
+        return {};
+    const std::string branch = a.copyOf(r.instance->id).branch();
+    std::optional<CopyKey> best;
+    int bestRank = 3;
+    for (const auto& [expanded, copy] : a.expanded.copies) {
+        if (copy.baseName != *name)
+            continue;
+        const int rank = copy.branch() == branch ? 0 : copy.branch().empty() ? 1 : 2;
+        if (rank < bestRank || (rank == bestRank && best && copy.key() < *best)) {
+            best = copy.key();
+            bestRank = rank;
+        }
+    }
+    std::vector<RigNodeIndex> out;
+    if (best)
+        if (auto nodes = index.find(*best); nodes != index.end())
+            for (RigNodeIndex i : nodes->second) {
+                const std::string& tag = a.rig.nodes[i].key.tag;
+                if (tag.compare(0, domain.size(), domain) == 0 && tag.size() > domain.size() && tag[domain.size()] == '.')
+                    out.push_back(i);
+            }
+    if (out.empty())
+        a.report(Severity::Warning, r.instance, "virtual_parent: " +
+                                                   (best ? "instance '" + *name + "' has no " + domain + " node"
+                                                         : "no instance named '" + *name + "'") +
+                                                   "; the " + domain + " hierarchy attaches to the parent as usual");
+    return out;
+}
+
+RigNodeIndex closestOf(const model::Rig& rig, const std::vector<RigNodeIndex>& candidates, RigNodeIndex to)
+{
+    const Vec3 at = translationOf(rig.nodes[to].worldMatrix);
+    RigNodeIndex best = kNoNode;
+    double bestDistance = 0.0;
+    for (RigNodeIndex c : candidates) {
+        const double d = glm::length(translationOf(rig.nodes[c].worldMatrix) - at);
+        if (best == kNoNode || d < bestDistance) {
+            best = c;
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+// A node `virtual_parent` attached elsewhere, with the parent it would have had.
+struct Redirected {
+    const InstanceRecord* record;
+    RigNodeIndex node;
+    RigNodeIndex usual;
+};
+
+void linkParents(RigAssembly& a, const NodesByInstance& index, const InstanceRecord& r, const templates::HierarchyEntry& e,
+                 const templates::HierarchyRule& rule, const std::vector<RigNodeIndex>& nodes,
+                 std::vector<Redirected>& redirected)
 {
     const bool chain = rule.chain.value_or(false);
     std::vector<RigNodeIndex> parents;
@@ -87,6 +152,9 @@ void linkParents(RigAssembly& a, const InstanceRecord& r, const templates::Hiera
         }
     const RigNodeIndex rootParent = r.instance->parentJoint == model::kNoId
         ? kNoNode : a.virtualHookFor(e.domain(), r.instance->parentJoint);
+    std::vector<RigNodeIndex> chosen; // `virtual_parent`: the closest of these instead of rootParent
+    if (rule.root.value_or(false) && !nodes.empty())
+        chosen = virtualParentCandidates(a, index, r, e.domain());
     for (std::size_t k = 0; k < nodes.size(); ++k) {
         auto& node = a.rig.nodes[nodes[k]];
         node.setInVirtualHierarchy(true);
@@ -94,8 +162,11 @@ void linkParents(RigAssembly& a, const InstanceRecord& r, const templates::Hiera
             node.virtualParent = nodes[k - 1];
         else if (!parents.empty())
             node.virtualParent = parents[std::min(k, parents.size() - 1)];
-        else if (rule.root.value_or(false))
-            node.virtualParent = rootParent;
+        else if (rule.root.value_or(false)) {
+            node.virtualParent = chosen.empty() ? rootParent : closestOf(a.rig, chosen, nodes[k]);
+            if (!chosen.empty())
+                redirected.push_back({&r, nodes[k], rootParent});
+        }
     }
 }
 
@@ -117,8 +188,21 @@ void buildVirtualHierarchy(RigAssembly& a)
             registerHooks(a, r, e, p.rule, p.nodes);
             pending.push_back(std::move(p));
         }
+    std::vector<Redirected> redirected;
     for (const Pending& p : pending)
-        linkParents(a, *p.record, *p.entry, p.rule, p.nodes);
+        linkParents(a, index, *p.record, *p.entry, p.rule, p.nodes, redirected);
+    // A `virtual_parent` below the instance itself would close a loop: refused.
+    for (const Redirected& r : redirected) {
+        RigNodeIndex at = a.rig.nodes[r.node].virtualParent;
+        for (std::size_t guard = 0; at != kNoNode && at != r.node && guard <= a.rig.nodes.size(); ++guard)
+            at = a.rig.nodes[at].virtualParent;
+        if (at != r.node)
+            continue;
+        a.report(Severity::Warning, r.record->instance, "virtual_parent: '" + a.rig.nodes[a.rig.nodes[r.node].virtualParent].path +
+                                                            "' hangs below '" + a.rig.nodes[r.node].path +
+                                                            "' in the virtual hierarchy (a loop); it attaches to the parent as usual");
+        a.rig.nodes[r.node].virtualParent = r.usual;
+    }
 }
 
 } // namespace rs::rigging

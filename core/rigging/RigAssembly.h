@@ -61,6 +61,9 @@ struct RigAssembly {
     Mat4 post{1.0};
     std::set<CopyKey> mirroredCopies;
     std::set<NodeKey> appliedOverrides;
+    // Per built instance copy: how much its shapes are scaled (ControlSize.cpp).
+    std::unordered_map<model::InstanceId, double> controlScales;
+    double controlScaleOf(model::InstanceId expandedInstance) const;
     const Resolved& structureTag(const templates::TemplateManifest& manifest, const model::TemplateInstance& instance,
                                  const std::string& tag)
     {
@@ -115,6 +118,12 @@ using ShapeSamples = std::map<const templates::Shape*, SampledShape>;
 // reflected), and reports the records that found no node (kept in the guide).
 void applyRigOverrides(RigAssembly& assembly, const model::GuideDocument& guide, const model::RestoreToggles& restore);
 void applyShapes(RigAssembly& assembly, ShapeSamples& samples);
+// Before the shapes: each built instance's control scale, its guide's mean
+// segment over its template's default guide's (ControlSize.cpp).
+// `defaultSegments` (by template id) memoises the default guides' across live
+// rebuilds; may be null.
+class BuilderRegistry;
+void computeControlScales(RigAssembly& assembly, const BuilderRegistry& builders, std::map<std::string, double>* defaultSegments);
 void applyShapeOverrides(RigAssembly& assembly, const model::GuideDocument& guide, const model::RestoreToggles& restore);
 void mirrorBranchShapes(RigAssembly& assembly);
 void buildVirtualHierarchy(RigAssembly& assembly);

@@ -279,6 +279,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     applyRigOverrides(a, guide, restore);
     if (guide.build.cleanup)
         cleanUpRig(a.rig, guide, restore);
+    computeControlScales(a, builders, cache ? &cache->defaultSegments : nullptr);
     compensateSegmentScale(a);
     // The program compiles on another core while the shapes, the hierarchy and
     // the checks run here: they write none of what it reads (see compileProgram).

@@ -1,6 +1,7 @@
 // Finalize stage: gives every controller its curves from the manifest `shapes`
 // entry. A shape is sampled from the library, its Y axis turned per `axis`,
-// scaled so its largest extent is `size`, then placed in the guide: under the
+// scaled so its largest extent is `size` times the instance's control scale
+// (ControlSize.cpp: relative to the character), then placed in the guide: under the
 // `parent` joint, moved to the average of the `point` joints, and aimed at `aim`
 // (a joint or a world axis) with `aim_axis`/`up_axis`/`up`, if `do_aim` allows.
 // The curves are stored in the controller's space. `clone` copies another
@@ -351,7 +352,8 @@ void applyShapes(RigAssembly& a, ShapeSamples& sampled)
         if (cached == sampled.end())
             cached = sampled.emplace(shape, sample(*shape)).first;
         const SampledShape& polylines = cached->second;
-        const double scale = (spec ? spec->size : 1.0) / (polylines.extent > 0.0 ? polylines.extent : 1.0);
+        const double scale = (spec ? spec->size : 1.0) * a.controlScaleOf(r.instance->id) /
+                             (polylines.extent > 0.0 ? polylines.extent : 1.0);
         Mat4 toController(1.0);
         if (spec) {
             Placer placer(a, r);

@@ -2,6 +2,9 @@
 // conditions (with an enum option given by index), and ids that only the
 // builder creates (skin.last.up), which the manifest can still place.
 #include "base/Paths.h"
+#include "edit/GuideEdits.h"
+#include "edit/History.h"
+#include "eval/Pickwalk.h"
 #include "io/TemplateFolders.h"
 #include "rigging/RigBuilder.h"
 #include "rigging/TemplateBuilder.h"
@@ -105,4 +108,88 @@ TEST_F(HierarchyStage, AppliesOptionConditionsIncludingEnumsGivenByIndex)
     ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     EXPECT_EQ(virtualParentOf(rig, "ctrls.b"), "(none)") << "unchain: root on, no parent";
     EXPECT_EQ(virtualParentOf(rig, "skin.up.1"), "(none)") << "orient index 1 is 'copy': chain off";
+}
+
+namespace {
+
+// The biped with one option of one instance set.
+model::Rig bipedWith(const std::string& instance, const std::string& option, const std::string& value)
+{
+    model::GuideDocument guide = test::loadSample("biped");
+    const model::TemplateInstance* found = guide.instanceNamed(instance);
+    EXPECT_NE(found, nullptr) << instance;
+    guide.instance(found->id)->options[option] = value;
+    return rigging::buildRig(guide, test::builtinTemplates());
+}
+
+const model::RigNode* virtualParentOf(const model::Rig& rig, const std::string& path)
+{
+    const model::RigNode& node = test::node(rig, path);
+    return node.virtualParent == model::kNoNode ? nullptr : &rig.nodes[node.virtualParent];
+}
+
+bool mentions(const model::Rig& rig, const std::string& text)
+{
+    for (const auto& d : rig.diagnostics)
+        if (d.message.find(text) != std::string::npos)
+            return true;
+    return false;
+}
+
+} // namespace
+
+TEST(VirtualParent, AttachesTheRootsToTheClosestNodeOfTheNamedInstanceOnTheSameBranch)
+{
+    const model::Rig usual = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig rig = bipedWith("arm", "virtual_parent", "neck");
+    EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
+    for (const std::string side : {"L", "R"}) {
+        const model::RigNode* before = virtualParentOf(usual, "arm." + side + "::ctrls.clavicle");
+        const model::RigNode* after = virtualParentOf(rig, "arm." + side + "::ctrls.clavicle");
+        ASSERT_NE(before, nullptr);
+        ASSERT_NE(after, nullptr);
+        EXPECT_NE(before->key.instance, after->key.instance) << "the arm no longer walks up to the spine";
+        EXPECT_EQ(after->path.substr(0, 6), "neck::") << after->path;
+        // The closest of the neck's controllers to the clavicle, none closer.
+        const Vec3 at = translationOf(test::node(rig, "arm." + side + "::ctrls.clavicle").worldMatrix);
+        for (const auto& n : rig.nodes)
+            if (n.path.rfind("neck::ctrls.", 0) == 0)
+                EXPECT_GE(glm::length(translationOf(n.worldMatrix) - at) + 1e-9,
+                          glm::length(translationOf(after->worldMatrix) - at)) << n.path;
+        // Pickwalk up follows it.
+        const auto from = *rig.findPath("arm." + side + "::ctrls.clavicle");
+        EXPECT_EQ(rig.nodes[eval::pickwalk(rig, from, eval::WalkDirection::Up)].path, after->path);
+    }
+}
+
+TEST(VirtualParent, AnUnknownInstanceOrALoopIsReportedAndTheUsualParentKept)
+{
+    const model::Rig usual = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    const model::Rig unknown = bipedWith("neck", "virtual_parent", "tail");
+    EXPECT_TRUE(mentions(unknown, "virtual_parent: no instance named 'tail'")) << formatAll(unknown.diagnostics);
+    EXPECT_EQ(virtualParentOf(unknown, "neck::ctrls.fk.0")->path, virtualParentOf(usual, "neck::ctrls.fk.0")->path);
+
+    const model::Rig loop = bipedWith("spine", "virtual_parent", "neck"); // the neck hangs below the spine
+    EXPECT_TRUE(mentions(loop, "(a loop)")) << formatAll(loop.diagnostics);
+    for (const auto& n : usual.nodes)
+        if (n.path.rfind("spine::", 0) == 0 && n.virtualParent != model::kNoNode)
+            EXPECT_EQ(virtualParentOf(loop, n.path)->path, usual.nodes[n.virtualParent].path) << n.path;
+}
+
+TEST(VirtualParent, RenamingTheNamedInstanceKeepsTheLinkAndUndoRestoresIt)
+{
+    model::GuideDocument document = test::loadSample("biped");
+    const model::InstanceId arm = document.instanceNamed("arm")->id;
+    const model::InstanceId neck = document.instanceNamed("neck")->id;
+    document.instance(arm)->options["virtual_parent"] = std::string("neck");
+    edit::History history(document);
+    const model::Rig before = rigging::buildRig(document, test::builtinTemplates());
+    ASSERT_TRUE(test::succeeded(edit::renameInstance(history, neck, "collar")));
+    EXPECT_EQ(std::get<std::string>(document.instance(arm)->options.at("virtual_parent")), "collar");
+    const model::Rig after = rigging::buildRig(document, test::builtinTemplates());
+    EXPECT_FALSE(mentions(after, "virtual_parent")) << formatAll(after.diagnostics);
+    const auto& clavicle = test::node(after, "arm.L::ctrls.clavicle");
+    EXPECT_EQ(after.nodes[clavicle.virtualParent].key, before.nodes[test::node(before, "arm.L::ctrls.clavicle").virtualParent].key);
+    history.undo();
+    EXPECT_EQ(std::get<std::string>(document.instance(arm)->options.at("virtual_parent")), "neck");
 }

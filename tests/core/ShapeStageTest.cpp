@@ -48,6 +48,8 @@ protected:
 structure:
   chain: /*
   tip: chain[-1]
+guides:
+  length: {value: 1.0, min: 0.001}
 opts:
   orient: {value: auto, enum: [auto, world]}
 shapes:
@@ -71,7 +73,8 @@ shapes:
         ASSERT_FALSE(hasErrors(d)) << formatAll(d);
     }
 
-    model::Rig build(const std::map<std::string, Value>& options = {})
+    // Five guide joints `spacing` metres apart (the template's default guide: 1 m).
+    model::GuideDocument guideOf(const std::map<std::string, Value>& options = {}, double spacing = 1.0)
     {
         model::GuideDocument guide;
         model::TemplateInstance i;
@@ -80,10 +83,12 @@ shapes:
         i.name = std::string(1, 's');
         i.options = options;
         for (model::JointId j = 1; j <= 5; ++j)
-            i.joints.push_back({j, j - 1, {Vec3(0, j == 1 ? 0 : 1, 0)}, {}, {}});
+            i.joints.push_back({j, j - 1, {Vec3(0, j == 1 ? 0 : spacing, 0)}, {}, {}});
         guide.insertInstance(i, 0);
-        return rigging::buildRig(guide, registry);
+        return guide;
     }
+
+    model::Rig build(const std::map<std::string, Value>& options = {}) { return rigging::buildRig(guideOf(options), registry); }
 
     const model::RigNode& node(const model::Rig& rig, const std::string& id) { return rig.nodes[*rig.findPath(id)]; }
 
@@ -148,4 +153,44 @@ TEST_F(ShapeStage, ReportsAnUnresolvableShapeAddressAndKeepsTheController)
     ASSERT_EQ(rig.diagnostics.size(), 1u) << formatAll(rig.diagnostics);
     EXPECT_EQ(rig.diagnostics[0].message, "instance 's' (test.shaped): shapes.ctrls.0.parent: unknown structure tag 'nowhere'");
     EXPECT_FALSE(node(rig, "s::ctrls.0").curves.empty());
+}
+
+TEST_F(ShapeStage, SizesFollowTheCharacterTheGuideIsPlacedFor)
+{
+    // A guide twice the template's default proportions gets shapes twice the
+    // manifest's sizes; a one-joint instance hung on it (nothing to measure)
+    // takes its parent's scale.
+    auto withProp = [&](double spacing) {
+        model::GuideDocument guide = guideOf({}, spacing);
+        model::TemplateInstance prop;
+        prop.id = 2;
+        prop.templateId = "core.xform";
+        prop.name = "p";
+        prop.parent = 1;
+        prop.parentJoint = 3;
+        prop.joints.push_back({10, model::kNoId, {}, {}, {}});
+        guide.insertInstance(prop, 1);
+        return rigging::buildRig(guide, registry);
+    };
+    const auto normal = withProp(1.0);
+    const auto giant = withProp(2.0);
+    const auto tiny = withProp(0.01);
+    ASSERT_FALSE(hasErrors(giant.diagnostics)) << formatAll(giant.diagnostics);
+    expectNear(boundsOf(node(normal, "s::ctrls.0")).extent(), Vec3(2, 0, 2), "default proportions: the manifest's size");
+    expectNear(boundsOf(node(giant, "s::ctrls.0")).extent(), Vec3(4, 0, 4), "twice the default: twice the size");
+    expectNear(boundsOf(node(tiny, "s::ctrls.0")).extent(), Vec3(0.02, 0, 0.02), "a hundredth: a hundredth");
+    const Vec3 propNormal = boundsOf(node(normal, "p::ctrls.xform")).extent();
+    const Vec3 propGiant = boundsOf(node(giant, "p::ctrls.xform")).extent();
+    EXPECT_NEAR(std::max({propNormal.x, propNormal.y, propNormal.z}), 0.2, 1e-6);
+    expectNear(propGiant, propNormal * 2.0, "the one-joint child takes its parent's scale");
+}
+
+TEST_F(ShapeStage, MoreJointsOfTheSameSpacingKeepTheirSizes)
+{
+    model::GuideDocument guide = guideOf();
+    auto& joints = guide.instance(1)->joints;
+    for (model::JointId j = 6; j <= 12; ++j)
+        joints.push_back({j, j - 1, {Vec3(0, 1, 0)}, {}, {}});
+    const auto rig = rigging::buildRig(guide, registry);
+    expectNear(boundsOf(node(rig, "s::ctrls.0")).extent(), Vec3(2, 0, 2), "a longer chain of the default spacing");
 }

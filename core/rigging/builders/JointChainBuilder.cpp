@@ -28,6 +28,26 @@ std::optional<std::vector<model::JointId>> chainOf(const BuildContext& ctx)
     return templates::StructureResolver(ctx.manifest(), ctx.instance()).chain();
 }
 
+// One link of a chain at `frame`: an offset group, a controller (or none)
+// whose `animatable` channels animators touch (kit::animate) and a skin joint
+// (or none), numbered from 1 in names; the guide joint hooks on the controller
+// (or the offset). Returns what the next link hangs under.
+model::RigNodeIndex addLink(BuildContext& ctx, std::size_t i, const Mat4& frame, model::RigNodeIndex parent,
+                            model::JointId guide, bool controllers, bool skin, std::uint16_t animatable)
+{
+    const std::string index = std::to_string(i);
+    const int number = static_cast<int>(i) + 1;
+    const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, ctx.nodeName(model::NameRole::Offset, "", number), parent, frame);
+    model::RigNodeIndex driver = offset;
+    if (controllers)
+        driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
+    kit::animate(ctx, driver, animatable);
+    if (skin)
+        ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
+    ctx.setHook(guide, driver);
+    return driver;
+}
+
 class JointChainBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
@@ -71,20 +91,10 @@ public:
         const bool skin = ctx.optionBool("do_skin");
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i < chain.size(); ++i) {
-            const std::string index = std::to_string(i);
-            const int number = static_cast<int>(i) + 1;
             const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(chain[i]));
-            const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, ctx.nodeName(model::NameRole::Offset, "", number), parent, frame);
-            model::RigNodeIndex driver = offset;
-            if (controllers)
-                driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
             // A generic chain (props, modules without a builder of their own):
             // each control slides, turns and scales its part.
-            kit::animate(ctx, driver, kit::kTranslate | kit::kRotate | kit::kScale);
-            if (skin)
-                ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
-            ctx.setHook(chain[i], driver);
-            parent = driver;
+            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin, kit::kTranslate | kit::kRotate | kit::kScale);
         }
     }
 };
@@ -120,18 +130,8 @@ public:
         const bool skin = ctx.optionBool("do_skin");
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-            const std::string index = std::to_string(i);
-            const int number = static_cast<int>(i) + 1;
             const Mat4 frame = boneFrame(ctx.guideWorldMatrix(chain[i]), translationOf(ctx.guideWorldMatrix(chain[i + 1])));
-            const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, ctx.nodeName(model::NameRole::Offset, "", number), parent, frame);
-            model::RigNodeIndex driver = offset;
-            if (controllers)
-                driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
-            kit::animate(ctx, driver, kit::kRotate); // a bone turns about its head
-            if (skin)
-                ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
-            ctx.setHook(chain[i], driver);
-            parent = driver;
+            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin, kit::kRotate); // a bone turns about its head
         }
         const Mat4 tipFrame = rigidFrame(ctx.guideWorldMatrix(chain.back()));
         const auto tip = ctx.createNode(model::RigNodeKind::Group, "hooks.tip", ctx.nodeName(model::NameRole::Offset, "tip"), parent,
