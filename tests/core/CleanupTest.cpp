@@ -3,7 +3,7 @@
 // not keyable, hidden), setup groups and joints are hidden, the default values
 // of what is left are recorded; a rigger's lock record wins; without cleanup
 // the rig is as before. The recorded defaults reach the glTF extras and the
-// FBX user properties.
+// FBX user properties (Assimp reads those as node metadata).
 #include "TestSupport.h"
 
 #include "core/FbxReader.h"
@@ -13,10 +13,13 @@
 #include "io/RigExport.h"
 #include "rigging/RigBuilder.h"
 
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
 #include <filesystem>
+#include <functional>
 
 using namespace rs;
 using model::ChannelSettings;
@@ -255,4 +258,32 @@ TEST(Cleanup, TwoBuildsOfACleanedGuideExportByteIdenticalGlbAndFbx)
         const std::string recorded = extension == std::string(".fbx") ? "rig_default_rx" : "\"defaults\"";
         EXPECT_NE(bytes[0].find(recorded), std::string::npos) << extension;
     }
+}
+
+TEST(Cleanup, AssimpReadsTheRecordedDefaultsAsNodeMetadata)
+{
+    const model::Rig rig = build(cleaned(test::loadSample("prop")));
+    io::ExportOptions options;
+    options.controllers = true;
+    const std::string path = test::temporaryPath("cleanup-assimp.fbx");
+    ASSERT_FALSE(hasErrors(io::exportRig(rig, path, options)));
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(path, 0);
+    ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+    std::size_t found = 0;
+    std::function<void(const aiNode*)> walk = [&](const aiNode* node) {
+        const auto index = rig.findPath("world::ctrls.scale");
+        if (index && node->mName.C_Str() == rig.nodes[*index].name && node->mMetaData) {
+            float sx = 0.f, rx = -1.f; // Assimp 5.2 keeps FBX double user properties as floats
+            EXPECT_TRUE(node->mMetaData->Get("rig_default_sx", sx)) << "the world's scale control scales";
+            EXPECT_TRUE(node->mMetaData->Get("rig_default_rx", rx));
+            EXPECT_EQ(sx, 1.f);
+            EXPECT_EQ(rx, 0.f);
+            ++found;
+        }
+        for (unsigned c = 0; c < node->mNumChildren; ++c)
+            walk(node->mChildren[c]);
+    };
+    walk(scene->mRootNode);
+    EXPECT_EQ(found, 1u);
 }
