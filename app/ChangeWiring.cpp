@@ -82,6 +82,8 @@ void MainWindow::follow(const edit::Change& change)
         refreshOverridesPanel();
     if (everything || (!change.preview && change.hasAny(K::Mods | K::Instances)))
         refreshModsPanel(); // instances: an owner renamed, removed or back
+    if (change.hasAny(K::Build | K::Document))
+        syncBuildActions();
     if (change.has(K::Rig))
         m_channelBox->invalidate(); // a rebuilt rig has new channel indices
     if (change.has(K::Mode))

@@ -144,7 +144,8 @@ private:
     void applyRouteColours(viewport::Scene& scene);
     void startRefit(session::RefitJob job); // RefitWiring.cpp
     void finishRefit();
-    void createRestoreActions(QMenu* rigMenu); // OverrideWiring.cpp: Rig > Restore on Build
+    void createRestoreActions(QMenu* rigMenu); // OverrideWiring.cpp: Rig > Restore on Build, Clean Up on Build
+    void syncBuildActions(); // their checks from the guide's build settings (after an undo, an open)
     void createOverridesDock(QDockWidget* tabWith);
     void refreshOverridesPanel();
     void connectChannelOverrides(); // the channel box's Set as Default, Lock, Limit...

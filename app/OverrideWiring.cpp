@@ -11,6 +11,7 @@
 
 #include <QDockWidget>
 #include <QMenu>
+#include <QSignalBlocker>
 
 namespace rs::app {
 
@@ -55,11 +56,36 @@ void MainWindow::createRestoreActions(QMenu* rigMenu)
         connect(a, &QAction::toggled, this, [this, kind](bool on) {
             model::RestoreToggles toggles = m_session.restore();
             toggles.set(kind, on);
-            m_session.setRestore(toggles); // rebuilds a built rig
+            logStatus(m_session.setRestore(toggles)); // one undo step; rebuilds a built rig
+            syncBuildActions();
             refreshOverridesPanel();
         });
         restore->addAction(a);
     }
+    QAction* cleanup = makeAction(this, "rig:cleanup", tr("&Clean Up on Build"), {});
+    cleanup->setCheckable(true);
+    cleanup->setChecked(m_session.cleanup());
+    cleanup->setToolTip(tr("Build the animators' rig: hide setup groups and skin joints, lock and hide every channel "
+                           "the templates do not make animatable, record the controllers' default values (exported)"));
+    connect(cleanup, &QAction::toggled, this, [this](bool on) {
+        logStatus(m_session.setCleanup(on)); // saved in the guide, one undo step; rebuilds a built rig
+        syncBuildActions();
+    });
+    rigMenu->addAction(cleanup);
+}
+
+void MainWindow::syncBuildActions()
+{
+    const model::BuildSettings& settings = m_session.document().build;
+    auto check = [this](const QString& name, bool on) {
+        if (QAction* a = findChild<QAction*>(name); a && a->isChecked() != on) {
+            const QSignalBlocker quiet(a); // showing the settings is no edit
+            a->setChecked(on);
+        }
+    };
+    for (int k = 0; k < model::kOverrideKindCount; ++k)
+        check(QString("restore:") + model::overrideKindName(model::OverrideKind(k)), settings.restore.restores(model::OverrideKind(k)));
+    check("rig:cleanup", settings.cleanup);
 }
 
 void MainWindow::createOverridesDock(QDockWidget* tabWith)

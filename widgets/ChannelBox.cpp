@@ -251,9 +251,12 @@ void ChannelBox::rebuild(const eval::ChannelLayout& layout, model::RigNodeIndex 
     if (node == model::kNoNode)
         return;
     const int first = layout.firstOf(node);
+    int row = -1;
     for (int i = first; i < first + layout.countOf(node); ++i) {
         const eval::Channel& c = layout[i];
-        const int row = i - first;
+        if (c.hidden)
+            continue; // cleanup locked and hid it: not the animator's
+        ++row;
         auto* label = new QLabel(QString::fromStdString(c.name), m_rows);
         label->setObjectName(QString::fromStdString("channelLabel_" + c.name));
         label->setProperty("channelName", QString::fromStdString(c.name));

@@ -18,6 +18,7 @@
 #include "templates/ShapeIcon.h"
 
 #include <chrono>
+#include <optional>
 #include <filesystem>
 #include <cstdio>
 #include <cstdlib>
@@ -39,8 +40,12 @@ std::string usage()
            "                          [--current-pose] [--names unity|MAP.yml] [--fix-names] [--fix-weights] [--force]\n"
            "                          [--proxy-mesh VERTICES] [--no-meshes] [--reference EXPORT.json]\n"
            "                          [--fps FPS] [--rom-clips markers|per-control] [--clip CLIP.yml]... [--no-restore KIND]...\n"
+           "                          [--cleanup|--no-cleanup]\n"
            "       (--no-restore KIND: build without the guide's overrides of that kind (shapes, defaults, limits,\n"
-           "        locks, post, names, pose; repeatable); the records stay in the guide;\n"
+           "        locks, post, names, pose; repeatable), on top of those the guide's build settings leave out;\n"
+           "        the records stay in the guide; --cleanup / --no-cleanup: clean the rig up for animators (hide\n"
+           "        setup groups and skin joints, lock and hide what templates do not make animatable, record the\n"
+           "        controllers' default values, which --controllers exports) or not, whatever the guide says;\n"
            "        --posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
            "        -o exports for engines: --preset gltf (Y-up metres), unreal (FBX Z-up centimetres, a root\n"
            "        joint at the origin), unity (humanoid names); --controllers adds the controllers as tagged\n"
@@ -99,7 +104,8 @@ struct BuildArguments {
     std::string guide, dump;
     bool posed = false;
     bool meshes = true;
-    model::RestoreToggles restore; // --no-restore KIND
+    std::vector<model::OverrideKind> noRestore; // --no-restore KIND: added to the guide's build settings
+    std::optional<bool> cleanup;                // --cleanup / --no-cleanup: replaces the guide's
     io::ExportRequest exportRequest;
 };
 
@@ -125,8 +131,9 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
                           << args[i] << "'\n";
                 return false;
             }
-            b.restore.set(*kind, false);
+            b.noRestore.push_back(*kind);
         }
+        else if (a == "--cleanup" || a == "--no-cleanup") b.cleanup = a == "--cleanup";
         else if (a == "--fps" && hasValue) {
             const auto fps = parseInteger(args[++i]);
             if (!fps || *fps < 1 || *fps > 1000) {
@@ -266,7 +273,7 @@ int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, con
     // A rig built --posed already is in the guide's pose: the pose relative to
     // it is the rest, or --current-pose (and the range of motion) would apply it twice.
     const model::PoseValues none;
-    const model::PoseValues restored = rigging::restoredPose(guide, b.restore);
+    const model::PoseValues restored = rigging::restoredPose(guide, guide.build.restore);
     const model::PoseValues& pose = b.posed ? none : restored;
     const Diagnostics d = io::runExport(rig, pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -290,12 +297,16 @@ int runBuild(const std::vector<std::string>& args)
     print(guide.diagnostics());
     if (!guide)
         return 1;
+    for (const model::OverrideKind kind : b.noRestore)
+        guide->build.restore.set(kind, false);
+    if (b.cleanup)
+        guide->build.cleanup = *b.cleanup;
     const auto start = std::chrono::steady_clock::now();
-    model::Rig rig = rigging::buildRig(*guide, *templates, rigging::BuilderRegistry::builtin(), {}, nullptr, b.restore);
+    model::Rig rig = rigging::buildRig(*guide, *templates, rigging::BuilderRegistry::builtin(), {}, nullptr, guide->build.restore);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     print(rig.diagnostics);
     if (b.posed && !hasErrors(rig.diagnostics)) {
-        const model::PoseValues pose = rigging::restoredPose(*guide, b.restore);
+        const model::PoseValues pose = rigging::restoredPose(*guide, guide->build.restore);
         auto withPose = eval::posedRig(rig, pose);
         print(withPose.diagnostics());
         if (!withPose)

@@ -27,6 +27,7 @@ enum class ChangeKind : std::uint32_t {
     Models = 1u << 14,    // the character's models (added, removed, reloaded)
     Weights = 1u << 15,   // skin weights (the bindings named in Change::bindings; all when empty)
     Mods = 1u << 16,      // the guide's mods (added, edited, removed)
+    Build = 1u << 17,     // the guide's build settings (restore toggles, cleanup)
 };
 
 constexpr std::uint32_t operator|(ChangeKind a, ChangeKind b) { return std::uint32_t(a) | std::uint32_t(b); }

@@ -40,7 +40,7 @@ private:
 bool Change::touchesGuide() const
 {
     return hasAny(ChangeKind::Document | ChangeKind::Instances | ChangeKind::Joints | ChangeKind::Options |
-                  ChangeKind::Shapes | ChangeKind::Names | ChangeKind::Overrides | ChangeKind::Mods);
+                  ChangeKind::Shapes | ChangeKind::Names | ChangeKind::Overrides | ChangeKind::Mods | ChangeKind::Build);
 }
 
 void Change::merge(const Change& other)

@@ -48,6 +48,7 @@ ChannelLayout::ChannelLayout(const model::Rig& rig)
                 c.max = node.channels.maximum[i];
                 c.locked = !animatable || node.channels.isLocked(i);
                 c.keyable = node.channels.isKeyable(i);
+                c.hidden = node.channels.isHidden(i);
                 m_channels.push_back(std::move(c));
             }
             static const std::vector<std::string> kOrders = {"xyz", "yzx", "zxy", "xzy", "yxz", "zyx"};
@@ -178,6 +179,8 @@ model::PoseValues valuesFromPose(const model::Rig& rig, const ChannelLayout& lay
 {
     for (std::size_t i = 0; i < layout.size(); ++i) {
         const Channel& c = layout[i];
+        if (c.locked)
+            continue; // poseFromValues ignored its value: the record waits for the lock (or cleanup) to go
         const NodeKey& id = rig.nodes[c.node].key;
         if (std::abs(pose[i] - c.defaultValue) > 1e-12) {
             values[id][c.name] = pose[i];

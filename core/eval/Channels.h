@@ -27,6 +27,7 @@ struct Channel {
     bool limited = false;
     bool locked = false;            // animators cannot change it (tools keep it too)
     bool keyable = true;            // false: shown, set by hand, never keyed
+    bool hidden = false;            // not shown to animators (cleanup's lock and hide)
     const std::vector<std::string>* labels = nullptr; // enum labels (points into the rig)
     bool isEnum() const { return labels && !labels->empty(); }
 };
@@ -71,8 +72,8 @@ model::RotateOrder rotateOrderOf(const Pose& pose, int first);
 // The document keeps the rigger's test pose by node id and channel name, only
 // where it differs from the default, so it survives rebuilds.
 Pose poseFromValues(const model::Rig& rig, const ChannelLayout& layout, const model::PoseValues& values);
-// `values` with every channel of `pose` written in (defaults erased); entries
-// for nodes this rig does not have are kept.
+// `values` with every unlocked channel of `pose` written in (defaults erased);
+// entries for nodes this rig does not have, and for locked channels, are kept.
 model::PoseValues valuesFromPose(const model::Rig& rig, const ChannelLayout& layout, const Pose& pose,
                                  model::PoseValues values = {});
 

@@ -96,6 +96,7 @@ void addControllers(const model::Rig& rig, ExportScene& scene, std::vector<model
         c.name = node.name;
         c.id = node.path;
         c.shape = node.shape;
+        c.defaults = node.defaultValues;
         // The nearest controller above it in the controllers' virtual hierarchy.
         for (auto p = node.virtualParent; p != model::kNoNode && c.parent < 0; p = rig.nodes[p].virtualParent)
             c.parent = index[p];
@@ -241,8 +242,12 @@ ExportScene converted(ExportScene scene, const Convention& convention)
         j.bindLocal = conjugate(j.bindLocal, basis, s);
         j.poseLocal = conjugate(j.poseLocal, basis, s);
     }
-    for (auto& c : scene.controllers)
+    for (auto& c : scene.controllers) {
         c.poseLocal = conjugate(c.poseLocal, basis, s);
+        for (auto& [channel, value] : c.defaults) // channel box values: only distances change unit
+            if (channel == "tx" || channel == "ty" || channel == "tz")
+                value *= s;
+    }
     const glm::mat3 rotation = glm::mat3(Mat3(basis));
     for (auto& mesh : scene.meshes) {
         for (auto& p : mesh.positions)

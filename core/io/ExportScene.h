@@ -104,6 +104,14 @@ struct ExportController {
     std::string shape;
     int parent = -1;                 // index into ExportScene::controllers, -1: at the scene root
     Mat4 poseLocal{1.0};
+    // The default value of each animatable channel, recorded by cleanup
+    // (model::RigNode::defaultValues; empty without it): "tx".."sz" in metres,
+    // degrees and factors along the controller's own rest axes as Rigsmith's
+    // channel box shows them (distances in the file's unit), then custom
+    // attributes in their own units. glTF writes them
+    // in the node's extras as rig.defaults ({"rig": {"defaults": {"rx": 0, ...}}}),
+    // FBX as user properties rig_default_<channel> (double, flag "U").
+    std::vector<std::pair<std::string, double>> defaults;
 };
 
 // Bits of ExportTrack::animated / held.

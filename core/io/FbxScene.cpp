@@ -228,6 +228,8 @@ ModelIds addSceneObjects(Document& doc, const ExportScene& scene)
             propertyString(*p70, "rig_id", controller.id, "U");
         if (!controller.shape.empty())
             propertyString(*p70, "rig_shape", controller.shape, "U");
+        for (const auto& [channel, value] : controller.defaults) // cleanup's record: what reset returns to
+            propertyDouble(*p70, "rig_default_" + channel, value, "U");
         addAttribute(doc, id, controller.name, false);
         doc.connect(id, controller.parent < 0 ? 0 : ids.controllers[std::size_t(controller.parent)]);
         ids.controllers.push_back(id);

@@ -93,6 +93,12 @@ tinygltf::Value controllerExtras(const ExportController& c)
                                 {"id", tinygltf::Value(c.id)}};
     if (!c.shape.empty())
         rig["shape"] = tinygltf::Value(c.shape);
+    if (!c.defaults.empty()) { // cleanup's record: what reset returns to
+        tinygltf::Value::Object defaults;
+        for (const auto& [channel, value] : c.defaults)
+            defaults[channel] = tinygltf::Value(value);
+        rig["defaults"] = tinygltf::Value(defaults);
+    }
     return tinygltf::Value(tinygltf::Value::Object{{"rig", tinygltf::Value(rig)}});
 }
 

@@ -3,6 +3,7 @@
 #include "io/AtomicFile.h"
 #include "io/GuidePose.h"
 #include "io/ModFile.h"
+#include "io/BuildSettingsFile.h"
 #include "io/OverrideFile.h"
 #include "io/YamlSupport.h"
 
@@ -236,6 +237,7 @@ Result<GuideDocument> readGuideText(const std::string& text, const std::string& 
         }
         else if (key == "overrides") readOverrides(r, kv.second, doc.overrides);
         else if (key == "mods") modsNode = kv.second; // read once the instances are: names resolve to ids
+        else if (key == "build") readBuildSettings(r, kv.second, doc.build);
         else if (key == "reference_model") { // an older guide's one see-through model: now one of its models
             if (auto s = r.string(kv.second, "reference_model"); s && !s->empty() &&
                 std::find(doc.models.begin(), doc.models.end(), *s) == doc.models.end())
@@ -304,6 +306,7 @@ std::string writeGuideText(const GuideDocument& doc, const std::string& director
                 << ", lowercase: " << (n.lowercase ? "on" : "off") << "}\n";
         }
     }
+    writeBuildSettings(out, doc.build);
     if (!doc.models.empty()) {
         out << "models:\n";
         for (const std::string& model : doc.models) {

@@ -31,7 +31,12 @@ std::string channelsText(const model::ChannelSettings& c)
             limits += std::string(limits.empty() ? "" : ", ") + model::channelName(i) + ": [" + fixed(c.minimum[i]) + ", " +
                       fixed(c.maximum[i]) + "]";
     }
-    return std::string("{order: ") + model::rotateOrderName(c.rotateOrder) + ", locked: [" + locked + "], limits: {" + limits + "}}";
+    std::string hidden; // cleanup's lock and hide; nothing without it
+    for (int i = 0; i < model::ChannelSettings::kCount; ++i)
+        if (c.isHidden(i))
+            hidden += std::string(hidden.empty() ? "" : ", ") + model::channelName(i);
+    return std::string("{order: ") + model::rotateOrderName(c.rotateOrder) + ", locked: [" + locked + "], limits: {" + limits + "}" +
+           (hidden.empty() ? "" : ", hidden: [" + hidden + "]") + "}";
 }
 
 std::string list(std::initializer_list<double> values)
@@ -218,8 +223,13 @@ std::string writeRigDump(const model::Rig& rig)
                 out << (l == 0 ? ", labels: [" : ", ") << quoteIfNeeded(a.labels[l]) << (l + 1 == a.labels.size() ? "]" : "");
             out << "}\n";
         }
-        if (n.kind == model::RigNodeKind::Controller && n.channels != model::ChannelSettings::controllerDefaults())
+        model::ChannelSettings shown = n.channels; // what builders declare animatable shows as cleanup's locks
+        shown.animatable = model::ChannelSettings::controllerDefaults().animatable;
+        if (n.kind == model::RigNodeKind::Controller && shown != model::ChannelSettings::controllerDefaults())
             out << "    channels: " << channelsText(n.channels) << "\n";
+        for (std::size_t i = 0; i < n.defaultValues.size(); ++i)
+            out << (i == 0 ? "    defaults: {" : ", ") << quoteIfNeeded(n.defaultValues[i].first) << ": "
+                << fixed(n.defaultValues[i].second) << (i + 1 == n.defaultValues.size() ? "}\n" : "");
         if (n.scaleCompensate)
             out << "    scale_compensate: true\n";
         if (n.twin != model::kNoNode)

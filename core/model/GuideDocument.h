@@ -8,6 +8,7 @@
 // The document is plain data; edits go through rs::edit so undo stays in step.
 #include "base/Identity.h"
 #include "base/Math.h"
+#include "model/BuildSettings.h"
 #include "model/Mesh.h"
 #include "model/Mod.h"
 #include "model/Naming.h"
@@ -106,6 +107,7 @@ public:
     // applied in this order; edited through rs::edit. Mods whose nodes a build
     // does not make are reported and kept.
     Mods mods;
+    BuildSettings build;             // restore toggles and cleanup (model/BuildSettings.h)
     // The character's models (any format io::importModel reads), bound to the
     // rig by skin weights kept beside the guide (`<guide>.weights`); drawn
     // see-through for placing guides until bound. Absolute paths in memory;

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
@@ -78,12 +79,20 @@ std::optional<RotateOrder> parseRotateOrder(const std::string& name);
 // i: 0-2 translate, 3-5 rotate, 6-8 scale. Defaults are 0 and scale 1.
 struct ChannelSettings {
     static constexpr int kCount = 9;
+    // Masks of ChannelSettings bits.
+    static constexpr std::uint16_t kTranslateChannels = 0x007, kRotateChannels = 0x038, kScaleChannels = 0x1c0;
+    static constexpr std::uint16_t kNoChannels = 0, kAllChannels = 0x1ff;
     RotateOrder rotateOrder = RotateOrder::Xyz;
     std::uint16_t locked = 0;           // bit i: channel i cannot be animated
     std::uint16_t limited = 0;          // bit i: channel i is clamped to [minimum[i], maximum[i]]
     std::array<double, kCount> minimum{};
     std::array<double, kCount> maximum{};
     std::uint16_t unkeyable = 0;        // bit i: channel i is shown but not keyed
+    // Bit i: animators should touch channel i. Each builder declares it per
+    // controller (translate and rotate unless it says otherwise); cleanup
+    // (rigging/CleanupStage.h) locks and hides every other channel.
+    std::uint16_t animatable = kTranslateChannels | kRotateChannels;
+    std::uint16_t hidden = 0;           // bit i: channel i is not shown (cleanup's lock and hide)
     // What reset returns to (a default-value override): 0, scale 1.
     std::array<double, kCount> defaults{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0};
 
@@ -93,6 +102,8 @@ struct ChannelSettings {
     bool isLocked(int channel) const { return (locked >> channel) & 1u; }
     bool isLimited(int channel) const { return (limited >> channel) & 1u; }
     bool isKeyable(int channel) const { return !((unkeyable >> channel) & 1u); }
+    bool isAnimatable(int channel) const { return (animatable >> channel) & 1u; }
+    bool isHidden(int channel) const { return (hidden >> channel) & 1u; }
     void lock(int first, int count = 1);
     void limit(int channel, double low, double high);
     bool operator==(const ChannelSettings&) const = default;
@@ -128,6 +139,11 @@ struct RigNode {
     // The curves are the twin's reflected (a mirrored branch copy): shape
     // edits are made on the twin and this side follows.
     bool shapeFromTwin = false;
+    // Cleanup's record (rigging/CleanupStage.h): the default value of each
+    // channel an animator may touch (transform channels in channel box units
+    // tx..sz, then custom attributes), what reset returns to and what exports
+    // write as custom properties. Empty when the build did not clean up.
+    std::vector<std::pair<std::string, double>> defaultValues;
 
     const RigAttribute* attribute(const std::string& attributeName) const;
 

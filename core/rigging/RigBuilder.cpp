@@ -1,5 +1,6 @@
 #include "rigging/RigBuilder.h"
 
+#include "rigging/CleanupStage.h"
 #include "rigging/Fragment.h"
 #include "rigging/ModStage.h"
 #include "rigging/RigAssembly.h"
@@ -151,7 +152,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* buildCache)
 {
-    return buildRig(guide, templates, builders, progress, buildCache, model::RestoreToggles{});
+    return buildRig(guide, templates, builders, progress, buildCache, guide.build.restore);
 }
 
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
@@ -278,6 +279,8 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     applyRigMods(a, guide); // before the overrides: an override may adjust a channel a mod made
     report(0.88, "overrides");
     applyRigOverrides(a, guide, restore);
+    if (guide.build.cleanup)
+        cleanUpRig(a.rig, guide, restore);
     computeControlScales(a, builders, cache ? &cache->defaultSegments : nullptr);
     compensateSegmentScale(a);
     // The program compiles on another core while the shapes, the hierarchy and

@@ -32,8 +32,11 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* cache);
 // The same, restoring only the override kinds `restore` keeps on (the rest are
-// built as the templates make them; their records stay in the guide). The test
-// pose is not part of the rig: `restoredPose` gives what a build restores.
+// built as the templates make them; their records stay in the guide); the
+// overloads above restore what the guide's build settings say
+// (guide.build.restore). The guide's cleanup setting applies to every overload
+// (rigging/CleanupStage.h). The test pose is not part of the rig:
+// `restoredPose` gives what a build restores.
 model::Rig buildRig(const model::GuideDocument& guide, const templates::TemplateRegistry& templates,
                     const BuilderRegistry& builders, const BuildProgress& progress, BuildCache* cache,
                     const model::RestoreToggles& restore);

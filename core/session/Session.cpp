@@ -155,7 +155,7 @@ void Session::rebuild(bool reportDiagnostics, bool explicitBuild)
         m_buildCache->clear();
     m_rig = rigging::buildRig(m_document, *m_templates, rigging::BuilderRegistry::builtin(),
                               explicitBuild ? m_progress : rigging::BuildProgress{}, // live rebuilds show no progress
-                              m_buildCache.get(), m_restore);
+                              m_buildCache.get(), m_document.build.restore);
     m_rigStale = false;
     compileRig(m_buildCache->takeProgram());
     restoreSelection(selected, selectedCvs);
@@ -215,7 +215,7 @@ void Session::poseFromDocument()
 {
     if (!m_program)
         return;
-    m_pose = eval::poseFromValues(*m_rig, m_program->channels(), rigging::restoredPose(m_document, m_restore));
+    m_pose = eval::poseFromValues(*m_rig, m_program->channels(), rigging::restoredPose(m_document, m_document.build.restore));
     m_program->evaluate(m_pose, m_evaluation);
 }
 

@@ -358,9 +358,14 @@ public:
     // nullopt when it applies or no rig is built. As the build decides: a
     // shape record of an authored side (branch "") applies to its copies.
     std::optional<std::string> orphanReason(const NodeKey& key) const;
-    // Which override kinds builds restore (all by default); changing them rebuilds.
-    void setRestore(const model::RestoreToggles& restore);
-    const model::RestoreToggles& restore() const { return m_restore; }
+    // The guide's build settings (model/BuildSettings.h, saved with it): which
+    // override kinds builds restore (all by default) and whether they clean
+    // the rig up. Each change is one undo step (ChangeKind::Build) and
+    // rebuilds a built rig; refused when nothing changes.
+    Status setRestore(const model::RestoreToggles& restore);
+    const model::RestoreToggles& restore() const { return m_document.build.restore; }
+    Status setCleanup(bool cleanup);
+    bool cleanup() const { return m_document.build.cleanup; }
 
     // --- mods (SessionMods.cpp): the guide's mods (model/Mod.h) by index in
     // document order, one undo step each (change kind Mods); a built rig is
@@ -442,7 +447,6 @@ private:
     Selection m_selection;
     Mode m_mode = Mode::Guide;
     bool m_cvMode = false;
-    model::RestoreToggles m_restore;
 
     std::optional<eval::Pose> m_dragStart;
     std::optional<edit::GuideDrag> m_guideDrag;

@@ -3,6 +3,7 @@
 // event; the live rebuild then applies it.
 #include "session/Session.h"
 
+#include "edit/BuildSettingsEdits.h"
 #include "edit/OverrideEdits.h"
 
 namespace rs::session {
@@ -76,13 +77,24 @@ Status Session::setChannelLimit(int channel, std::optional<model::ChannelLimit> 
     return edit::setOverride(m_history, node.key, record, (limit ? "Limit " : "Unlimit ") + node.name + "." + c.name);
 }
 
-void Session::setRestore(const model::RestoreToggles& restore)
+Status Session::setRestore(const model::RestoreToggles& restore)
 {
-    if (restore == m_restore)
-        return;
-    m_restore = restore;
-    if (m_rig)
-        build();
+    model::BuildSettings settings = m_document.build;
+    std::string what = "Restore on build";
+    for (int k = 0; k < model::kOverrideKindCount; ++k) {
+        const auto kind = model::OverrideKind(k);
+        if (restore.restores(kind) != settings.restore.restores(kind))
+            what = std::string(restore.restores(kind) ? "Restore " : "Do not restore ") + model::overrideKindName(kind) + " on build";
+    }
+    settings.restore = restore;
+    return edit::setBuildSettings(m_history, settings, what);
+}
+
+Status Session::setCleanup(bool cleanup)
+{
+    model::BuildSettings settings = m_document.build;
+    settings.cleanup = cleanup;
+    return edit::setBuildSettings(m_history, settings, cleanup ? "Clean up on build" : "Do not clean up on build");
 }
 
 } // namespace rs::session

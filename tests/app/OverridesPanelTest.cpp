@@ -178,6 +178,36 @@ TEST(ChannelBoxOverrides, RestoreMenuTurnsAKindOffAndOnAndRebuilds)
     EXPECT_TRUE(t.compiled(t.left, "tx").locked);
 }
 
+TEST(ChannelBoxOverrides, CleanUpOnBuildHidesWhatAnimatorsShouldNotTouchAndUndoUnchecksIt)
+{
+    Built t;
+    QAction* cleanup = t.w.action("rig:cleanup");
+    ASSERT_NE(cleanup, nullptr);
+    EXPECT_FALSE(cleanup->isChecked()) << "off by default";
+    const std::size_t steps = t.w.session().history().size();
+    cleanup->trigger();
+    EXPECT_TRUE(t.w.session().cleanup());
+    EXPECT_EQ(t.w.session().history().size(), steps + 1);
+    t.left = *t.w.session().rig()->findPath("arm.L::ctrls.fk.0");
+    EXPECT_TRUE(t.compiled(t.left, "tx").locked);
+    EXPECT_TRUE(t.compiled(t.left, "tx").hidden);
+    EXPECT_FALSE(t.compiled(t.left, "rx").locked);
+    t.selectBoth();
+    EXPECT_EQ(t.label("tx"), nullptr) << "a hidden channel has no row";
+    EXPECT_NE(t.label("rx"), nullptr);
+    t.w.action("undo")->trigger();
+    QApplication::processEvents();
+    EXPECT_FALSE(t.w.session().cleanup());
+    EXPECT_FALSE(cleanup->isChecked()) << "the menu follows the undo";
+    t.left = *t.w.session().rig()->findPath("arm.L::ctrls.fk.0");
+    EXPECT_FALSE(t.compiled(t.left, "tx").locked);
+    // An undone restore toggle unchecks its action too.
+    t.w.action("restore:names")->trigger();
+    EXPECT_FALSE(t.w.action("restore:names")->isChecked());
+    t.w.action("undo")->trigger();
+    EXPECT_TRUE(t.w.action("restore:names")->isChecked());
+}
+
 TEST(OverridesPanel, ListsRecordsByInstanceFiltersAndAClickSelectsTheNode)
 {
     Built t;

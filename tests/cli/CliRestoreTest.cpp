@@ -58,3 +58,32 @@ TEST(Cli, NoRestoreLeavesOneKindOfOverrideOut)
     EXPECT_NE(bad.errors.find("--no-restore wants shapes, defaults, limits, locks, post, names or pose, not 'colours'"),
               std::string::npos) << bad.errors;
 }
+
+TEST(Cli, NoRestoreAddsToTheGuidesSettingsAndCleanupFlagsReplaceItsOwn)
+{
+    const fs::path folder = freshFolder("guide-settings");
+    const fs::path guide = overriddenBiped(folder);
+    {
+        std::ofstream out(guide, std::ios::app);
+        out << "build:\n  cleanup: on\n  no_restore: [pose]\n";
+    }
+    // The guide leaves the pose out and cleans up; --no-restore names adds to it.
+    const auto both = runCli({"build", guide.string(), "--posed", "--no-restore", "names", "--dump", (folder / "both.yml").string()},
+                             folder);
+    ASSERT_EQ(both.exitCode, 0) << both.errors;
+    EXPECT_NE(both.errors.find("posed with 0 posed nodes"), std::string::npos) << both.errors;
+    const std::string cleaned = readText(folder / "both.yml");
+    EXPECT_EQ(cleaned.find("upperarm_ctl_L"), std::string::npos);
+    EXPECT_NE(cleaned.find("hidden: [tx, ty, tz"), std::string::npos) << "cleaned up as the guide says";
+    EXPECT_NE(cleaned.find("defaults: {"), std::string::npos);
+
+    const auto raw = runCli({"build", guide.string(), "--no-cleanup", "--dump", (folder / "raw.yml").string()}, folder);
+    ASSERT_EQ(raw.exitCode, 0) << raw.errors;
+    EXPECT_EQ(readText(folder / "raw.yml").find("defaults: {"), std::string::npos) << "--no-cleanup wins over the guide";
+    EXPECT_NE(readText(folder / "raw.yml").find("upperarm_ctl_L"), std::string::npos);
+
+    const fs::path sample = RIGSMITH_SOURCE_DIR "/resources/samples/prop.yml";
+    const auto on = runCli({"build", sample.string(), "--cleanup", "--dump", (folder / "prop.yml").string()}, folder);
+    ASSERT_EQ(on.exitCode, 0) << on.errors;
+    EXPECT_NE(readText(folder / "prop.yml").find("defaults: {"), std::string::npos) << "--cleanup on a guide without it";
+}

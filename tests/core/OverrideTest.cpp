@@ -153,6 +153,33 @@ TEST(Overrides, EachRestoreToggleTurnsItsKindOff)
     EXPECT_EQ(off.nodes[0].worldMatrix, plain.nodes[0].worldMatrix);
 }
 
+TEST(Overrides, TheGuidesRestoreTogglesTurnEachKindOffAndSurviveASaveReopen)
+{
+    const model::GuideDocument authored = overriddenBiped();
+    model::GuideDocument bare = authored;
+    bare.overrides.clear();
+    const model::Rig plain = build(bare);
+    using K = model::OverrideKind;
+    for (K kind : {K::Shapes, K::Defaults, K::Limits, K::Locks, K::Post, K::Names, K::Pose}) {
+        model::GuideDocument guide = authored;
+        guide.build.restore.set(kind, false);
+        auto reopened = io::readGuideText(io::writeGuideText(guide), "toggles.yml");
+        ASSERT_TRUE(reopened.ok()) << formatAll(reopened.diagnostics());
+        ASSERT_EQ(reopened->build, guide.build);
+        // The build overloads without toggles take the guide's.
+        const model::Rig rig = rigging::buildRig(*reopened, test::builtinTemplates());
+        const Seen s = seenOf(rig, plain);
+        const std::string name = model::overrideKindName(kind);
+        EXPECT_EQ(s.shapes, kind != K::Shapes) << name;
+        EXPECT_EQ(s.defaults, kind != K::Defaults) << name;
+        EXPECT_EQ(s.limits, kind != K::Limits) << name;
+        EXPECT_EQ(s.locks, kind != K::Locks) << name;
+        EXPECT_EQ(s.post, kind != K::Post) << name;
+        EXPECT_EQ(s.names, kind != K::Names) << name;
+        EXPECT_EQ(rigging::restoredPose(*reopened, reopened->build.restore).empty(), kind == K::Pose) << name;
+    }
+}
+
 TEST(Overrides, AnOrphanIsReportedKeptAndAppliedAgainWhenItsNodeComesBack)
 {
     model::GuideDocument guide = overriddenBiped();

@@ -113,6 +113,18 @@ Control addControl(BuildContext& ctx, const std::string& key, const std::string&
     return c;
 }
 
+void animate(BuildContext& ctx, model::RigNodeIndex node, std::uint16_t channels)
+{
+    if (node != model::kNoNode && ctx.node(node).kind == model::RigNodeKind::Controller)
+        ctx.channels(node).animatable = channels;
+}
+
+void animate(BuildContext& ctx, const Control& control, std::uint16_t channels)
+{
+    if (control.ctrl != control.offset)
+        animate(ctx, control.ctrl, channels);
+}
+
 model::RigNodeIndex addSkin(BuildContext& ctx, const std::string& key, const std::string& token, std::optional<int> index,
                             model::RigNodeIndex parent, const Mat4& world, model::JointId source)
 {

@@ -3,6 +3,7 @@
 // the offset-group + controller + skin-joint pattern every template repeats.
 #include "rigging/TemplateBuilder.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -41,6 +42,21 @@ struct Control {
 // Tags "roots.<key>" and "ctrls.<key>"; names from `token` and `index`.
 Control addControl(BuildContext& ctx, const std::string& key, const std::string& token, std::optional<int> index,
                    model::RigNodeIndex parent, const Mat4& world, model::JointId source = model::kNoId);
+// The transform channels an animator touches on a controller (masks of
+// model::ChannelSettings bits). Each builder declares them for every
+// controller it makes, as data of its template: cleanup (rigging/CleanupStage.h)
+// locks and hides every other transform channel. Custom attributes on a
+// controller are all animatable.
+constexpr std::uint16_t kTranslate = model::ChannelSettings::kTranslateChannels;
+constexpr std::uint16_t kRotate = model::ChannelSettings::kRotateChannels;
+constexpr std::uint16_t kScale = model::ChannelSettings::kScaleChannels;
+constexpr std::uint16_t kNothing = model::ChannelSettings::kNoChannels;
+// Declares `channels` animatable on `node` (nothing when it is not a
+// controller: the offset group of an instance without controllers).
+void animate(BuildContext& ctx, model::RigNodeIndex node, std::uint16_t channels);
+// The same for a control made by addControl.
+void animate(BuildContext& ctx, const Control& control, std::uint16_t channels);
+
 // A skin joint "skin.<key>" when the instance has `do_skin`; kNoNode otherwise.
 model::RigNodeIndex addSkin(BuildContext& ctx, const std::string& key, const std::string& token, std::optional<int> index,
                             model::RigNodeIndex parent, const Mat4& world, model::JointId source = model::kNoId);

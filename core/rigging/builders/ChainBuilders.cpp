@@ -54,7 +54,9 @@ public:
             const double t = span > 1e-12 ? std::clamp((at - along[s]) / span, 0.0, 1.0) : 0.0;
             Mat4 frame = frames[s];
             frame[3] = Vec4(glm::mix(points[s], points[s + 1], t), 1.0);
-            parent = kit::addControl(ctx, "spline." + std::to_string(c), "", c + 1, parent, frame, chain[s]).ctrl;
+            const kit::Control control = kit::addControl(ctx, "spline." + std::to_string(c), "", c + 1, parent, frame, chain[s]);
+            kit::animate(ctx, control, kit::kTranslate | kit::kRotate); // a curve's controls: placed and turned
+            parent = control.ctrl;
             targets.push_back(parent);
         }
         const model::AttributeRef stretch = ctx.addAttribute(targets.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);

@@ -63,10 +63,13 @@ public:
         Mat4 chinFrame = frame;
         chinFrame[3] = Vec4(chin, 1.0);
         const auto jaw = kit::addControl(ctx, "jaw", "jaw", {}, ctx.hookNode(), frame, chain[0]);
+        kit::animate(ctx, jaw, kit::kTranslate | kit::kRotate); // opens, and slides forward or sideways
         kit::addSkin(ctx, "jaw", "jaw", {}, jaw.ctrl, frame, chain[0]);
         RigNodeIndex end = jaw.ctrl;
         if (ctx.optionBool("chin")) { // the chin control shapes the chin on top of the jaw's turn
-            end = kit::addControl(ctx, "chin", "chin", {}, jaw.ctrl, chinFrame, chain[1]).ctrl;
+            const kit::Control chinControl = kit::addControl(ctx, "chin", "chin", {}, jaw.ctrl, chinFrame, chain[1]);
+            kit::animate(ctx, chinControl, kit::kTranslate | kit::kRotate);
+            end = chinControl.ctrl;
             kit::addSkin(ctx, "chin", "chin", {}, end, chinFrame, chain[1]);
         }
         ctx.setHook(chain[0], jaw.ctrl);
@@ -112,6 +115,7 @@ public:
         const Mat4 frame = kit::aimFrame(centre, forward, kSide);
 
         const auto eye = kit::addControl(ctx, "eye", "eye", {}, ctx.hookNode(), frame, centreJoint);
+        kit::animate(ctx, eye, kit::kTranslate | kit::kRotate); // the eyeball's place; the gaze is the target's
         const RigNodeIndex aim = kit::addSetup(ctx, RigNodeKind::Joint, "mch.aim", "aim", {}, eye.ctrl, frame, centreJoint);
         kit::addSkin(ctx, "eye", "eye", {}, aim, frame, centreJoint);
         ctx.setHook(centreJoint, aim);
@@ -127,10 +131,12 @@ public:
             const bool pair = branches && branches->size() > 1;
             const Vec3 between = pair ? Vec3(0.0, target.y, target.z) : target; // on the mirror plane
             const auto look = kit::addControl(ctx, "look", "look", {}, ctx.hookNode(), translationMatrix(between), centreJoint);
+            kit::animate(ctx, look, kit::kTranslate | kit::kRotate);
             ctx.defineSpace("eye_look", look.ctrl);
             targetParent = look.ctrl;
         }
         const auto aimTarget = kit::addControl(ctx, "target", "target", {}, targetParent, translationMatrix(target), pupilJoint);
+        kit::animate(ctx, aimTarget, kit::kTranslate); // a point the eye looks at
         ctx.addConstraint("cns.aim", {aim}, {aimTarget.ctrl}, model::AimConstraint{.aim = model::Axis::X, .up = model::Axis::Y});
 
         // Lids: each turns about the eye's centre. A follow group takes
@@ -168,6 +174,7 @@ public:
                                                          .response = model::DriveClamped{.low = 0.0, .high = 1.0}});
             }
             const auto control = kit::addControl(ctx, lid, lid, {}, parent, lidFrame, joints.front());
+            kit::animate(ctx, control, kit::kRotate); // a lid turns about the eye's centre
             kit::addSkin(ctx, lid, lid, {}, control.ctrl, lidFrame, joints.front());
             ctx.setHook(joints.front(), control.ctrl);
         }
@@ -210,8 +217,10 @@ public:
         Mat4 mainFrame = frames[points.size() / 2];
         mainFrame[3] = Vec4(middle, 1.0);
         const auto brow = kit::addControl(ctx, "brow", "brow", {}, ctx.hookNode(), mainFrame, chain[points.size() / 2]);
+        kit::animate(ctx, brow, kit::kTranslate | kit::kRotate);
         for (std::size_t i = 0; i < chain.size(); ++i) {
             const auto control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, brow.ctrl, frames[i], chain[i]);
+            kit::animate(ctx, control, kit::kTranslate | kit::kRotate);
             kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, control.ctrl, frames[i], chain[i]);
             ctx.setHook(chain[i], control.ctrl);
         }
@@ -262,6 +271,7 @@ public:
             const RigNodeIndex follow =
                 kit::addSetup(ctx, RigNodeKind::Group, "mch." + part.key, part.key + "_follow", {}, ctx.hookNode(), frame, part.guide);
             const auto control = kit::addControl(ctx, part.key, part.key, {}, follow, frame, part.guide);
+            kit::animate(ctx, control, kit::kTranslate | kit::kRotate); // lips and corners move, lips curl
             kit::addSkin(ctx, part.key, part.key, {}, control.ctrl, frame, part.guide);
         }
         const std::string domain = ctx.optionBool("do_ctrl") ? "ctrls." : "roots.";

@@ -71,6 +71,7 @@ public:
             const std::string token = isBase ? "base" : "";
             const std::optional<int> number = isBase ? std::nullopt : std::optional<int>(int(i) + (base ? 0 : 1));
             const auto control = kit::addControl(ctx, "fk." + std::to_string(i), token, number, parent, frames[i], chain[i]);
+            kit::animate(ctx, control, kit::kRotate); // knuckles turn
             kit::addSkin(ctx, std::to_string(i), token, number, control.ctrl, frames[i], chain[i]);
             ctx.setHook(chain[i], control.ctrl);
             controls.push_back(control);
@@ -160,6 +161,7 @@ public:
         // An attribute control: it carries the fingers and never moves itself.
         if (control.ctrl != control.offset)
             ctx.channels(control.ctrl).lock(0, model::ChannelSettings::kCount);
+        kit::animate(ctx, control, kit::kNothing);
         for (const HandAttribute& a : kHandAttributes)
             ctx.addAttribute(control.ctrl, a.name, 0.0, a.low, a.high);
         ctx.setHook(joint, control.ctrl);

@@ -1,5 +1,6 @@
 #include "rigging/builders/Builders.h"
 
+#include "rigging/builders/BuilderKit.h"
 #include "templates/Structure.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -27,11 +28,12 @@ std::optional<std::vector<model::JointId>> chainOf(const BuildContext& ctx)
     return templates::StructureResolver(ctx.manifest(), ctx.instance()).chain();
 }
 
-// One link of a chain at `frame`: an offset group, a controller (or none) and
-// a skin joint (or none), numbered from 1 in names; the guide joint hooks on
-// the controller (or the offset). Returns what the next link hangs under.
+// One link of a chain at `frame`: an offset group, a controller (or none)
+// whose `animatable` channels animators touch (kit::animate) and a skin joint
+// (or none), numbered from 1 in names; the guide joint hooks on the controller
+// (or the offset). Returns what the next link hangs under.
 model::RigNodeIndex addLink(BuildContext& ctx, std::size_t i, const Mat4& frame, model::RigNodeIndex parent,
-                            model::JointId guide, bool controllers, bool skin)
+                            model::JointId guide, bool controllers, bool skin, std::uint16_t animatable)
 {
     const std::string index = std::to_string(i);
     const int number = static_cast<int>(i) + 1;
@@ -39,6 +41,7 @@ model::RigNodeIndex addLink(BuildContext& ctx, std::size_t i, const Mat4& frame,
     model::RigNodeIndex driver = offset;
     if (controllers)
         driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
+    kit::animate(ctx, driver, animatable);
     if (skin)
         ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
     ctx.setHook(guide, driver);
@@ -89,7 +92,9 @@ public:
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i < chain.size(); ++i) {
             const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(chain[i]));
-            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin);
+            // A generic chain (props, modules without a builder of their own):
+            // each control slides, turns and scales its part.
+            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin, kit::kTranslate | kit::kRotate | kit::kScale);
         }
     }
 };
@@ -126,7 +131,7 @@ public:
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
             const Mat4 frame = boneFrame(ctx.guideWorldMatrix(chain[i]), translationOf(ctx.guideWorldMatrix(chain[i + 1])));
-            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin);
+            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin, kit::kRotate); // a bone turns about its head
         }
         const Mat4 tipFrame = rigidFrame(ctx.guideWorldMatrix(chain.back()));
         const auto tip = ctx.createNode(model::RigNodeKind::Group, "hooks.tip", ctx.nodeName(model::NameRole::Offset, "tip"), parent,

@@ -187,7 +187,9 @@ void LimbBuilder::generate(BuildContext& ctx) const
             if (autoClavicle.follow != model::kNoNode)
                 attach = autoClavicle.follow;
         }
-        attach = kit::addControl(ctx, rootOption(), rootOption(), {}, attach, frame, g.root).ctrl;
+        const kit::Control root = kit::addControl(ctx, rootOption(), rootOption(), {}, attach, frame, g.root);
+        kit::animate(ctx, root, kit::kRotate); // a clavicle or pelvis turns
+        attach = root.ctrl;
         rootCtrl = attach;
         kit::addSkin(ctx, rootOption(), rootOption(), {}, attach, frame, g.root);
     }
@@ -199,7 +201,9 @@ void LimbBuilder::generate(BuildContext& ctx) const
     std::vector<RigNodeIndex> fk;
     RigNodeIndex parent = limbGroup;
     for (std::size_t i = 0; i < k; ++i) {
-        parent = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], g.limb[i]).ctrl;
+        const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], g.limb[i]);
+        kit::animate(ctx, control, kit::kRotate); // FK: rotation only
+        parent = control.ctrl;
         fk.push_back(parent);
     }
 
@@ -208,7 +212,9 @@ void LimbBuilder::generate(BuildContext& ctx) const
     // The IK control hangs under a space group that follows the space `ik_space` picks.
     const auto ikSpace = ctx.createNode(RigNodeKind::Group, "spaces.ik", ctx.nodeName(model::NameRole::Group, "ik_space"), world,
                                         ikFrame, g.limb[k - 1]);
-    const auto ikCtrl = kit::addControl(ctx, "ik", "ik", {}, ikSpace, ikFrame, g.limb[k - 1]).ctrl;
+    const kit::Control ikControl = kit::addControl(ctx, "ik", "ik", {}, ikSpace, ikFrame, g.limb[k - 1]);
+    kit::animate(ctx, ikControl, kit::kTranslate | kit::kRotate);
+    const auto ikCtrl = ikControl.ctrl;
     double chainLength = 0.0;
     for (std::size_t i = 1; i < k; ++i)
         chainLength += glm::length(g.points[i] - g.points[i - 1]);
@@ -218,6 +224,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const auto poleCtrl = kit::addControl(ctx, "pole", "pole", {}, poleSpace, poleFrame, g.limb[1]).ctrl;
     if (ctx.node(poleCtrl).kind == model::RigNodeKind::Controller)
         ctx.channels(poleCtrl).lock(3, 6); // only its position matters
+    kit::animate(ctx, poleCtrl, kit::kTranslate);
     const auto pinCtrl = limb::addPinControl(ctx, poleSpace, g.points[1], g.limb[1]);
     RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
     if (legLike())
@@ -239,6 +246,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const auto settings = kit::addControl(ctx, "switch", "switch", {}, blend.back(), switchFrame, g.limb[k - 1]).ctrl;
     if (ctx.node(settings).kind == model::RigNodeKind::Controller)
         ctx.channels(settings).lock(0, model::ChannelSettings::kCount); // a settings holder: custom channels only
+    kit::animate(ctx, settings, kit::kNothing);
     const AttributeRef weight = ctx.addAttribute(settings, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
     // What only the IK does lives on the IK control: stretch, soft IK, volume and the pin.
     const AttributeRef stretch = ctx.addAttribute(ikCtrl, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
@@ -259,7 +267,9 @@ void LimbBuilder::generate(BuildContext& ctx) const
     std::vector<RigNodeIndex> fkShown = fk;
     RigNodeIndex end = blend.back();
     if (legLike()) { // the ball joint: FK toe control or the reverse foot's toe tap
-        const auto toeFk = kit::addControl(ctx, "fk.ball", "toe", {}, fk.back(), frames[k], g.end).ctrl;
+        const kit::Control toeControl = kit::addControl(ctx, "fk.ball", "toe", {}, fk.back(), frames[k], g.end);
+        kit::animate(ctx, toeControl, kit::kRotate);
+        const auto toeFk = toeControl.ctrl;
         fkShown.push_back(toeFk);
         const auto ikBall = kit::addSetup(ctx, RigNodeKind::Joint, "ik.ball", "ik_toe", {}, ik.back(), frames[k], g.end);
         ctx.addConstraint("cns.ik_ball", {ikBall}, {toeTap}, model::OrientConstraint{});

@@ -151,6 +151,7 @@ RigNodeIndex addPinControl(BuildContext& ctx, RigNodeIndex poleSpace, const Vec3
     const auto pin = kit::addControl(ctx, "pin", "pin", {}, poleSpace, kit::uprightFrame(mid), source).ctrl;
     if (ctx.node(pin).kind == RigNodeKind::Controller)
         ctx.channels(pin).lock(3, 6); // a position: rotation and scale mean nothing
+    kit::animate(ctx, pin, kit::kTranslate);
     return pin;
 }
 

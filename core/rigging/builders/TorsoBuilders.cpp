@@ -49,24 +49,30 @@ public:
 
         const auto cog = kit::addControl(ctx, "cog", "cog", {}, ctx.hookNode(), hipsFrame, chain.front());
         const auto hips = kit::addControl(ctx, "hips", "hips", {}, cog.ctrl, hipsFrame, chain.front());
+        kit::animate(ctx, cog, kit::kTranslate | kit::kRotate);
+        kit::animate(ctx, hips, kit::kTranslate | kit::kRotate);
         const model::AttributeRef blendWeight = ctx.addAttribute(cog.ctrl, "ik_blend", ctx.optionFloat("ik_blend"), 0.0, 1.0);
 
         // FK: one control per joint, each under the previous one.
         std::vector<RigNodeIndex> fk;
         RigNodeIndex parent = cog.ctrl;
         for (std::size_t i = 0; i < n; ++i) {
-            parent = kit::addControl(ctx, "fk." + std::to_string(i), "fk", int(i) + 1, parent, frames[i], chain[i]).ctrl;
+            const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "fk", int(i) + 1, parent, frames[i], chain[i]);
+            kit::animate(ctx, control, kit::kRotate); // FK: rotation only
+            parent = control.ctrl;
             fk.push_back(parent);
         }
         // IK-style torso: the hips, an optional mid and the chest control drive a
         // spline through the chain; the mid follows the hips and chest halfway.
         const auto ikChest = kit::addControl(ctx, "ik_chest", "ik_chest", {}, cog.ctrl, kit::uprightFrame(points.back()), chain.back());
+        kit::animate(ctx, ikChest, kit::kTranslate | kit::kRotate);
         const model::AttributeRef stretch = ctx.addAttribute(ikChest.ctrl, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
         const model::AttributeRef volume = ctx.addAttribute(ikChest.ctrl, "volume", ctx.optionBool("volume") ? 1.0 : 0.0, 0.0, 1.0);
         std::vector<RigNodeIndex> targets{hips.ctrl};
         if (ctx.optionBool("mid")) {
             const auto [at, segment] = kit::alongChain(points, 0.5);
             const auto mid = kit::addControl(ctx, "ik_mid", "ik_mid", {}, cog.ctrl, kit::uprightFrame(at), chain[segment]);
+            kit::animate(ctx, mid, kit::kTranslate | kit::kRotate);
             ctx.addConstraint("cns.mid", {mid.offset}, {hips.ctrl, ikChest.ctrl}, model::ParentConstraint{.weights = {0.5, 0.5}});
             targets.push_back(mid.ctrl);
         }
@@ -155,7 +161,9 @@ public:
         RigNodeIndex parent = ctx.hookNode();
         std::vector<RigNodeIndex> fk;
         for (std::size_t i = 0; i < head; ++i) {
-            parent = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]).ctrl;
+            const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
+            kit::animate(ctx, control, kit::kRotate); // FK: rotation only
+            parent = control.ctrl;
             fk.push_back(parent);
             if (!spline) {
                 kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
@@ -168,7 +176,11 @@ public:
                                                ctx.nodeName(model::NameRole::Group, "head_point_space"), parent, frames[head], chain[head]);
         const auto spaceGroup = ctx.createNode(RigNodeKind::Group, "spaces.head", ctx.nodeName(model::NameRole::Group, "head_space"),
                                                pointGroup, frames[head], chain[head]);
-        const auto headCtrl = kit::addControl(ctx, "head", "head", {}, spaceGroup, frames[head], chain[head]).ctrl;
+        const kit::Control headControl = kit::addControl(ctx, "head", "head", {}, spaceGroup, frames[head], chain[head]);
+        // The head turns on the neck; on a spline neck it also goes where the
+        // animator puts it (the neck bends and stretches to follow).
+        kit::animate(ctx, headControl, spline ? kit::kTranslate | kit::kRotate : kit::kRotate);
+        const auto headCtrl = headControl.ctrl;
         if (spline) {
             // A spline from the neck's base control to the head carries the
             // neck joints: the neck bends and stretches to wherever the head
@@ -221,6 +233,7 @@ public:
         const model::JointId joint = ctx.structure("xform")->front();
         const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(joint));
         const auto control = kit::addControl(ctx, "xform", "", {}, ctx.hookNode(), frame, joint);
+        kit::animate(ctx, control, kit::kTranslate | kit::kRotate | kit::kScale); // a prop's part: moved, turned, scaled
         kit::addSkin(ctx, "xform", "", {}, control.ctrl, frame, joint);
         ctx.setHook(joint, control.ctrl);
     }

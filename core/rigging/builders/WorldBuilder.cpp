@@ -56,10 +56,15 @@ public:
         ctx.setHidden(setupGroup);
         const auto modelGroup = group("model", rootGroup);
 
+        // Seed 004: world and move translate and turn; only the scale control scales.
         const auto worldNode = control("world", ctrlGroup, worldFrame, world);
+        kit::animate(ctx, worldNode, kit::kTranslate | kit::kRotate);
         model::RigNodeIndex top = control("move", worldNode, worldFrame, world);
-        if (ctx.optionBool("do_scale"))
+        kit::animate(ctx, top, kit::kTranslate | kit::kRotate);
+        if (ctx.optionBool("do_scale")) {
             top = control("scale", top, worldFrame, world);
+            kit::animate(ctx, top, kit::kTranslate | kit::kRotate | kit::kScale);
+        }
         const auto post = ctx.createNode(RigNodeKind::Group, "grps.post", ctx.nodeName(NameRole::Group, "post"), top, worldFrame);
         // Seed 004's post transform: the rigger's overall scale of the character,
         // set once (not animated) and applied below the animators' controls.
@@ -70,8 +75,10 @@ public:
                                                  .factor = 1.0,
                                                  .response = model::DriveClamped{.low = 0.0001, .high = 1000.0}});
         model::RigNodeIndex anchor = post;
-        if (ctx.optionBool("do_fly"))
+        if (ctx.optionBool("do_fly")) {
             anchor = control("fly", post, rootFrame, root);
+            kit::animate(ctx, anchor, kit::kTranslate | kit::kRotate);
+        }
 
         ctx.setHook(world, worldNode);
         ctx.setHook(root, anchor);
