@@ -101,27 +101,27 @@ TEST(RangeOfMotion, EverySampleMovesEveryExercisedControlWithoutStretchOnTheFram
         ASSERT_FALSE(scene.clips.empty());
         std::set<std::string> names;
         for (const io::ExportClip& clip : scene.clips) {
-        SCOPED_TRACE(clip.name);
-        EXPECT_EQ(clip.framesPerSecond, 30.0);
-        for (double t : clip.times)
-            EXPECT_NEAR(t * 30.0, std::round(t * 30.0), 1e-9) << "a key off the 30 fps grid at " << t;
-        EXPECT_LE(worstStretch(scene, clip), 0.01);
+            SCOPED_TRACE(clip.name);
+            EXPECT_EQ(clip.framesPerSecond, 30.0);
+            for (double t : clip.times)
+                EXPECT_NEAR(t * 30.0, std::round(t * 30.0), 1e-9) << "a key off the 30 fps grid at " << t;
+            EXPECT_LE(worstStretch(scene, clip), 0.01);
 
-        // One named range per exercised controller; each moves some joint.
-        ASSERT_FALSE(clip.markers.empty());
-        const auto worlds = jointWorlds(scene, clip);
-        for (const auto& marker : clip.markers) {
-            EXPECT_TRUE(names.insert(marker.name).second) << marker.name;
-            ASSERT_TRUE(rig.findPath(marker.control)) << marker.control;
-            EXPECT_EQ(rig.nodes[*rig.findPath(marker.control)].kind, model::RigNodeKind::Controller);
-            double moved = 0.0;
-            for (std::size_t k = 0; k < clip.times.size(); ++k)
-                if (clip.times[k] >= marker.start - 1e-9 && clip.times[k] <= marker.end + 1e-9)
-                    for (std::size_t j = 0; j < scene.joints.size(); ++j) {
-                        const auto& before = worlds[std::size_t(std::lround(marker.start * 3.0))][j]; // keys 1/3 s apart
-                        moved = std::max(moved, maxAbsDifference(worlds[k][j], before));
-                    }
-            EXPECT_GT(moved, 1e-3) << marker.name << " moves no joint (a dead segment)";
+            // One named range per exercised controller; each moves some joint.
+            ASSERT_FALSE(clip.markers.empty());
+            const auto worlds = jointWorlds(scene, clip);
+            for (const auto& marker : clip.markers) {
+                EXPECT_TRUE(names.insert(marker.name).second) << marker.name;
+                ASSERT_TRUE(rig.findPath(marker.control)) << marker.control;
+                EXPECT_EQ(rig.nodes[*rig.findPath(marker.control)].kind, model::RigNodeKind::Controller);
+                double moved = 0.0;
+                for (std::size_t k = 0; k < clip.times.size(); ++k)
+                    if (clip.times[k] >= marker.start - 1e-9 && clip.times[k] <= marker.end + 1e-9)
+                        for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+                            const auto& before = worlds[std::size_t(std::lround(marker.start * 3.0))][j]; // keys 1/3 s apart
+                            moved = std::max(moved, maxAbsDifference(worlds[k][j], before));
+                        }
+                EXPECT_GT(moved, 1e-3) << marker.name << " moves no joint (a dead segment)";
         }
 
         // A written channel changes; one left out equals the node's transform.
@@ -265,17 +265,17 @@ TEST(RangeOfMotion, TheGlbWritesOnlyChannelsThatChangeWithMarkersInExtras)
     ASSERT_GT(m.animations.size(), 1u);
     std::size_t markers = 0;
     for (const auto& animation : m.animations) {
-    for (const auto& channel : animation.channels) {
-        const auto& sampler = animation.samplers[std::size_t(channel.sampler)];
-        const auto& output = m.accessors[std::size_t(sampler.output)];
-        const auto& view = m.bufferViews[std::size_t(output.bufferView)];
-        const float* values = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset + output.byteOffset);
-        const std::size_t width = channel.target_path == "rotation" ? 4 : 3;
-        bool varies = false;
-        for (std::size_t i = width; i < output.count * width; ++i)
-            varies = varies || values[i] != values[i % width];
-        EXPECT_TRUE(varies || output.count == 1) << "a constant " << channel.target_path << " channel of node "
-                                                 << m.nodes[std::size_t(channel.target_node)].name;
+        for (const auto& channel : animation.channels) {
+            const auto& sampler = animation.samplers[std::size_t(channel.sampler)];
+            const auto& output = m.accessors[std::size_t(sampler.output)];
+            const auto& view = m.bufferViews[std::size_t(output.bufferView)];
+            const float* values = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset + output.byteOffset);
+            const std::size_t width = channel.target_path == "rotation" ? 4 : 3;
+            bool varies = false;
+            for (std::size_t i = width; i < output.count * width; ++i)
+                varies = varies || values[i] != values[i % width];
+            EXPECT_TRUE(varies || output.count == 1) << "a constant " << channel.target_path << " channel of node "
+                                                     << m.nodes[std::size_t(channel.target_node)].name;
     }
     ASSERT_TRUE(animation.extras.Has("markers"));
     markers += animation.extras.Get("markers").ArrayLen();
