@@ -98,10 +98,13 @@ ExportDialog::ExportDialog(QWidget* parent) : QDialog(parent)
     m_framesPerSecond->setSuffix(tr(" fps"));
     m_framesPerSecond->setToolTip(tr("The range of motion's keys sit on whole frames at this rate"));
     m_clipPerControl = checkBox(this, "exportClipPerControl", tr("One clip per controller"),
-                                tr("The range of motion as one clip per controller instead of one clip with a marker "
-                                   "per controller (engines that bake long clips drift, Godot 3 among them)"));
+                                tr("The range of motion as one clip per controller instead of clips of a minute at "
+                                   "most with a marker per controller"));
     form->addRow(tr("Range of motion"), m_framesPerSecond);
     form->addRow(QString(), m_clipPerControl);
+    m_texturesBeside = checkBox(this, "exportTexturesBeside", tr("Textures beside the FBX"),
+                                tr("Copy each texture beside the FBX and name it relatively instead of embedding it"));
+    form->addRow(tr("Textures"), m_texturesBeside);
 
     m_progress = new QProgressBar(this);
     m_progress->setObjectName("exportProgress");
@@ -152,6 +155,7 @@ io::ExportRequest ExportDialog::request() const
     r.proxyVertices = std::size_t(m_proxyVertices->value());
     r.framesPerSecond = double(m_framesPerSecond->value());
     r.clipPerControl = m_clipPerControl->isChecked();
+    r.embedTextures = !m_texturesBeside->isChecked();
     return r;
 }
 

@@ -53,6 +53,7 @@ private:
     QSpinBox* m_proxyVertices = nullptr;
     QSpinBox* m_framesPerSecond = nullptr;
     QCheckBox* m_clipPerControl = nullptr;
+    QCheckBox* m_texturesBeside = nullptr;
     QProgressBar* m_progress = nullptr;
     QPlainTextEdit* m_report = nullptr;
     QPushButton* m_export = nullptr;

@@ -41,6 +41,7 @@ std::string usage()
            "                          [--proxy-mesh VERTICES] [--no-meshes] [--reference EXPORT.json]\n"
            "                          [--fps FPS] [--rom-clips markers|per-control] [--clip CLIP.yml]... [--no-restore KIND]...\n"
            "                          [--cleanup|--no-cleanup]\n"
+           "                          [--textures embedded|relative]\n"
            "       (--no-restore KIND: build without the guide's overrides of that kind (shapes, defaults, limits,\n"
            "        locks, post, names, pose; repeatable), on top of those the guide's build settings leave out;\n"
            "        the records stay in the guide; --cleanup / --no-cleanup: clean the rig up for animators (hide\n"
@@ -50,12 +51,13 @@ std::string usage()
            "        -o exports for engines: --preset gltf (Y-up metres), unreal (FBX Z-up centimetres, a root\n"
            "        joint at the origin), unity (humanoid names); --controllers adds the controllers as tagged\n"
            "        nodes, --rom a range-of-motion clip from the guide's test pose (keys on whole frames at --fps,\n"
-           "        30 by default; a marker per controller, or one clip per controller with --rom-clips per-control),\n"
+           "        30 by default; a marker per controller, in clips of a minute at most, or one clip per controller\n"
+           "        with --rom-clips per-control),\n"
            "        --current-pose the guide's pose on the nodes (with --posed the rig already is in it);\n"
            "        --names export names from a name map; the export validator's errors refuse -o unless\n"
            "        --force; --fix-names and --fix-weights apply its safe fixes; the guide's models' meshes are\n"
            "        exported with their weights (GUIDE.weights, from skin bind), normals, UVs and materials\n"
-           "        unless --no-meshes; a mesh without weights is an error (--force: rigid on the root);\n"
+           "        (an FBX's textures inside it, or with --textures relative copied beside it) unless --no-meshes; a mesh without weights is an error (--force: rigid on the root);\n"
            "        --proxy-mesh binds a generated mesh of about VERTICES vertices; --reference writes\n"
            "        what was exported as JSON)\n"
            "       rigsmith-cli new GUIDE.yml [--name NAME]   (an empty guide)\n"
@@ -148,6 +150,13 @@ bool parseBuildArguments(const std::vector<std::string>& args, BuildArguments& b
                 return false;
             }
             e.clipPerControl = layout == "per-control";
+        } else if (a == "--textures" && hasValue) {
+            const std::string& mode = args[++i];
+            if (mode != "embedded" && mode != "relative") {
+                std::cerr << "rigsmith-cli: --textures wants embedded or relative, not '" << mode << "'\n";
+                return false;
+            }
+            e.embedTextures = mode == "embedded";
         }
         else if (a == "--preset" && hasValue) {
             const auto preset = io::presetNamed(args[++i]);

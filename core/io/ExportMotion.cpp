@@ -7,6 +7,9 @@
 #include <algorithm>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace rs::io {
 
@@ -214,17 +217,68 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
     return clip;
 }
 
+// The longest range-of-motion clip in the default layout. Engines keep clip
+// time in 32-bit floats: Godot 3 bakes a glTF clip at 15 fps by adding
+// float(1/15) to a float time, which drifts 0.3 ms by 64 s, 1.9 ms by 170 s
+// and 23 ms by 380 s; each key of a limb turning at 4.7 rad/s (90 degrees in
+// framesPerKey) is then played drift x velocity change off, 1.6 cm at a toe
+// 170 s into the biped's 380 s clip. Longer ranges are split at controller
+// boundaries into consecutive clips (range_of_motion_1, _2...).
+constexpr double kLongestClipSeconds = 60.0;
+
+// Consecutive runs of `parts` (first and last part index), each at least one
+// part and at most kLongestClipSeconds long where its parts allow, of about
+// equal lengths (no short last clip of one finger).
+std::vector<std::pair<std::size_t, std::size_t>> clipRuns(const std::vector<RangeOfMotionPart>& parts, double secondsPerKey)
+{
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    if (parts.empty())
+        return runs;
+    const double total = double(parts.back().lastKey - parts.front().firstKey) * secondsPerKey;
+    const double count = std::ceil(total / (kLongestClipSeconds - 10.0)); // room for a part across a cut
+    const double target = total / std::max(1.0, count);
+    auto seconds = [&](std::size_t from, std::size_t to) { // from part `from`'s first key to part `to`'s last
+        return double(parts[to].lastKey - parts[from].firstKey) * secondsPerKey;
+    };
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        // A run ends once the range so far has reached its share (runs x target).
+        const bool full = !runs.empty() && seconds(0, runs.back().second) >= target * double(runs.size()) - 1e-9;
+        if (!runs.empty() && !full && seconds(runs.back().first, p) <= kLongestClipSeconds)
+            runs.back().second = p;
+        else
+            runs.emplace_back(p, p);
+    }
+    return runs;
+}
+
 void addRangeOfMotion(const model::Rig& rig, const ExportOptions& options, const eval::RigProgram& program,
                       const Sampler& sampler, ExportScene& scene, const RangeOfMotionPlan& plan)
 {
     const double fps = options.framesPerSecond > 0.0 ? options.framesPerSecond : 30.0;
     const int step = framesPerKey(fps);
     if (!options.clipPerControl) {
-        ExportClip clip = sampleClip("range_of_motion", plan, 0, plan.keys.size() - 1, program, sampler, fps);
-        for (const auto& part : plan.parts)
-            clip.markers.push_back({rig.nodes[part.control].name, rig.nodes[part.control].path,
-                                    double(part.firstKey * std::size_t(step)) / fps, double(part.lastKey * std::size_t(step)) / fps});
-        scene.clips.push_back(std::move(clip));
+        const auto runs = clipRuns(plan.parts, double(step) / fps);
+        if (runs.size() <= 1) {
+            ExportClip clip = sampleClip("range_of_motion", plan, 0, plan.keys.size() - 1, program, sampler, fps);
+            for (const auto& part : plan.parts)
+                clip.markers.push_back({rig.nodes[part.control].name, rig.nodes[part.control].path,
+                                        double(part.firstKey * std::size_t(step)) / fps,
+                                        double(part.lastKey * std::size_t(step)) / fps});
+            scene.clips.push_back(std::move(clip));
+            return;
+        }
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            const std::size_t firstKey = plan.parts[runs[r].first].firstKey;
+            const std::size_t lastKey = plan.parts[runs[r].second].lastKey;
+            ExportClip clip = sampleClip("range_of_motion_" + std::to_string(r + 1), plan, firstKey, lastKey, program, sampler, fps);
+            for (std::size_t p = runs[r].first; p <= runs[r].second; ++p) {
+                const auto& part = plan.parts[p];
+                clip.markers.push_back({rig.nodes[part.control].name, rig.nodes[part.control].path,
+                                        double((part.firstKey - firstKey) * std::size_t(step)) / fps,
+                                        double((part.lastKey - firstKey) * std::size_t(step)) / fps});
+            }
+            scene.clips.push_back(std::move(clip));
+        }
         return;
     }
     for (const auto& part : plan.parts) {

@@ -57,6 +57,7 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
     options.testPose = &pose;
     options.framesPerSecond = request.framesPerSecond;
     options.clipPerControl = request.clipPerControl;
+    options.embedTextures = request.embedTextures;
 
     Diagnostics report;
     NameMap names;

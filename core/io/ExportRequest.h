@@ -34,6 +34,7 @@ struct ExportRequest {
     std::string referencePath;      // when set, also writes exportReferenceJson there
     double framesPerSecond = 30.0;  // the range of motion's frame grid (ExportOptions::framesPerSecond)
     bool clipPerControl = false;    // the range of motion as one clip per controller (ExportOptions::clipPerControl)
+    bool embedTextures = true;      // FBX textures inside the file, or beside it (ExportOptions::embedTextures)
     std::vector<std::string> clips; // keyed clip files (io/ClipFile.h), exported with cubic keys
 };
 

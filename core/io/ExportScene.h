@@ -59,6 +59,7 @@ struct ExportOptions {
     const std::vector<ExportMaterial>* materials = nullptr; // what the meshes' `material` indexes
     std::string generator = "Rigsmith";
     bool stampTime = false;                       // FBX: the real time in the header (else fixed: byte-identical files)
+    bool embedTextures = true;                    // FBX: images inside the file; false: beside it, named relatively
     // Called with the fraction done (0..1); returning false cancels the export.
     std::function<bool(double)> progress;
     // Where the range of motion starts: the guide's test pose, relative to this
@@ -69,7 +70,10 @@ struct ExportOptions {
     // (> 0; io/RangeOfMotion.h says how many frames apart).
     double framesPerSecond = 30.0;
     // One clip per exercised controller ("rom_<controller name>", each from
-    // time 0) instead of one clip with a marker per controller.
+    // time 0) instead of one clip with a marker per controller
+    // ("range_of_motion"; a range longer than a minute is split at controller
+    // boundaries into range_of_motion_1, _2..., each from time 0, because
+    // engines keep clip time in 32-bit floats: io/ExportMotion.cpp).
     bool clipPerControl = false;
     // Authored clips: keyed poses played with cubic (spline) keys
     // (ExportTrack::cubic), written after the range of motion.

@@ -55,8 +55,13 @@ struct ModelIds {
 
 // Skeleton (LimbNode models and attributes), controllers (Null models with
 // their user properties), meshes with geometry, skin, clusters, materials,
-// textures and the bind pose.
-ModelIds addSceneObjects(Document& doc, const ExportScene& scene);
+// textures and the bind pose. A texture's image is embedded (the Video's
+// Content) when `embedTextures`, else only named (RelativeFilename: the file
+// the writer puts beside the FBX, io/FbxExport.h).
+ModelIds addSceneObjects(Document& doc, const ExportScene& scene, bool embedTextures = true);
+// The file name each material's image has in the FBX (unique among the
+// scene's, in material order); empty for a material without one.
+std::vector<std::string> imageFileNames(const ExportScene& scene);
 // One AnimationStack / AnimationLayer per clip with its curve nodes and
 // curves, and the matching Take in `takes`.
 void addClips(Document& doc, const ExportScene& scene, const ModelIds& ids, Node& takes);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace rs::io {
 
@@ -124,7 +125,7 @@ Result<std::string> fbxBytes(const ExportScene& scene, const Convention& convent
         return Result<std::string>::refused("FBX version " + std::to_string(options.version) + " is not written: use 7400 or 7500");
     fbx::Document doc;
     const std::int64_t documentId = doc.newId();
-    const fbx::ModelIds ids = fbx::addSceneObjects(doc, scene);
+    const fbx::ModelIds ids = fbx::addSceneObjects(doc, scene, options.embedTextures);
     Node takes("Takes");
     fbx::addClips(doc, scene, ids, takes);
     double lastTime = 0.0;
@@ -155,6 +156,22 @@ Diagnostics writeFbx(const ExportScene& scene, const std::string& path, const Co
         for (auto& d : report)
             d.where.file = path;
         return report;
+    }
+    if (!options.embedTextures) {
+        // The images first, so a written FBX never names a missing file.
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        const std::vector<std::string> files = fbx::imageFileNames(scene);
+        for (std::size_t m = 0; m < files.size(); ++m) {
+            if (files[m].empty())
+                continue;
+            const std::filesystem::path name(files[m]);
+            if (name.filename() != name || name == "." || name == "..")
+                return {makeError({path, 0, 0}, "texture '" + files[m] + "' of material '" + scene.materials[m].name +
+                                                     "' is not a plain file name: it cannot be written beside the FBX")};
+            Diagnostics written = writeFileAtomically((folder / name).string(), scene.materials[m].image).takeDiagnostics();
+            if (hasErrors(written))
+                return written;
+        }
     }
     return writeFileAtomically(path, *bytes).takeDiagnostics();
 }

@@ -18,7 +18,8 @@
 //    vertex, UVs by polygon vertex, one material for all), a Skin Deformer
 //    with one Cluster per weighing joint (Indexes, Weights, Transform =
 //    inverse(joint bind world), TransformLink = joint bind world), its
-//    Material (DiffuseColor) with an embedded Texture / Video; one `BindPose`
+//    Material (DiffuseColor) with a Texture / Video, the image embedded or
+//    (FbxWriteOptions::embedTextures false) beside the file; one `BindPose`
 //    Pose with the bind world matrix of every joint and mesh (so a posed
 //    export keeps its rest pose in importers);
 //  - animation: io/FbxAnimation.h, FbxAnimation.cpp; one Take per clip;
@@ -39,11 +40,17 @@ struct FbxWriteOptions {
     std::uint32_t version = 7400;           // 7400 or 7500 (64-bit record offsets)
     std::optional<std::time_t> creationTime; // stamped in the header; none: the fixed time
     std::string generator = "Rigsmith";
+    // True: each texture's image inside the file (the Video's Content). False:
+    // writeFbx writes each image beside the file (atomically, under the name
+    // the FBX gives it: io/FbxDocument.h imageFileNames), which the FBX names
+    // by RelativeFilename; an existing file of that name is replaced.
+    bool embedTextures = true;
 };
 
 // The file's bytes for `scene` in the file's convention (converted()); `convention` is declared.
 Result<std::string> fbxBytes(const ExportScene& scene, const Convention& convention, const FbxWriteOptions& options = {});
-// Writes them atomically (io/AtomicFile.h); errors name `path`.
+// Writes them atomically (io/AtomicFile.h), with the images beside them unless
+// embedded; errors name `path` (or the image's file).
 Diagnostics writeFbx(const ExportScene& scene, const std::string& path, const Convention& convention,
                      const FbxWriteOptions& options = {});
 

@@ -151,12 +151,14 @@ std::string uniqueImageName(const std::string& name, std::set<std::string>& take
 
 // Materials (diffuse colour) with their base colour texture: a Texture linked
 // to the material's DiffuseColor and a Video holding the image's bytes as its
-// Content. Texture and Video carry the same file name (Blender pairs them by it).
-std::vector<std::int64_t> addMaterials(Document& doc, const ExportScene& scene)
+// Content when embedded, else naming the file beside the FBX. Texture and
+// Video carry the same file name (Blender pairs them by it).
+std::vector<std::int64_t> addMaterials(Document& doc, const ExportScene& scene, bool embedTextures)
 {
     std::vector<std::int64_t> ids;
-    std::set<std::string> taken;
-    for (const ExportMaterial& source : scene.materials) {
+    const std::vector<std::string> files = imageFileNames(scene);
+    for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+        const ExportMaterial& source = scene.materials[m];
         const std::int64_t id = doc.newId();
         ids.push_back(id);
         Node& material = doc.addObject("Material", id, source.name, "Material", "");
@@ -168,7 +170,7 @@ std::vector<std::int64_t> addMaterials(Document& doc, const ExportScene& scene)
         propertyDouble(p70, "DiffuseFactor", 1.0, "A");
         if (source.image.empty())
             continue;
-        const std::string file = uniqueImageName(source.imageName, taken);
+        const std::string& file = files[m];
         const std::int64_t texture = doc.newId(), video = doc.newId();
         Node& t = doc.addObject("Texture", texture, file, "Texture", "");
         t.child("Type").addString("TextureVideoClip");
@@ -182,7 +184,8 @@ std::vector<std::int64_t> addMaterials(Document& doc, const ExportScene& scene)
         v.child("UseMipMap").addInt32(0);
         v.child("Filename").addString(file);
         v.child("RelativeFilename").addString(file);
-        v.child("Content").addRaw(source.image);
+        if (embedTextures)
+            v.child("Content").addRaw(source.image);
         doc.connect(video, texture);
         doc.connect(texture, id, "DiffuseColor");
     }
@@ -210,7 +213,16 @@ void addBindPose(Document& doc, const ExportScene& scene, const std::vector<std:
 
 } // namespace
 
-ModelIds addSceneObjects(Document& doc, const ExportScene& scene)
+std::vector<std::string> imageFileNames(const ExportScene& scene)
+{
+    std::vector<std::string> names;
+    std::set<std::string> taken;
+    for (const ExportMaterial& material : scene.materials)
+        names.push_back(material.image.empty() ? std::string() : uniqueImageName(material.imageName, taken));
+    return names;
+}
+
+ModelIds addSceneObjects(Document& doc, const ExportScene& scene, bool embedTextures)
 {
     ModelIds ids;
     for (const ExportJoint& joint : scene.joints) {
@@ -234,7 +246,7 @@ ModelIds addSceneObjects(Document& doc, const ExportScene& scene)
         doc.connect(id, controller.parent < 0 ? 0 : ids.controllers[std::size_t(controller.parent)]);
         ids.controllers.push_back(id);
     }
-    const std::vector<std::int64_t> materials = addMaterials(doc, scene);
+    const std::vector<std::int64_t> materials = addMaterials(doc, scene, embedTextures);
     std::vector<std::int64_t> meshModels;
     for (const SkinnedMesh& mesh : scene.meshes) {
         const bool hasMaterial = mesh.material >= 0 && std::size_t(mesh.material) < materials.size();

@@ -59,6 +59,7 @@ Diagnostics exportRigOrThrow(const model::Rig& rig, const std::string& path, con
     const ExportScene scene = converted(std::move(*prepared.scene), convention);
     FbxWriteOptions fbxOptions;
     fbxOptions.generator = options.generator;
+    fbxOptions.embedTextures = options.embedTextures;
     if (options.stampTime)
         fbxOptions.creationTime = std::time(nullptr);
     Diagnostics written = fbx ? writeFbx(scene, path, convention, fbxOptions) : writeGltf(scene, path, options.generator);

@@ -42,6 +42,12 @@ TEST(ExportDialog, ExportsTheBuiltRigWithTheChosenPresetAndOptions)
     EXPECT_EQ(request.preset, io::ExportPreset::Unreal);
     EXPECT_TRUE(request.controllers && request.rangeOfMotion && !request.currentPose);
     EXPECT_EQ(request.proxyVertices, 3000u);
+    EXPECT_TRUE(request.embedTextures) << "textures inside the FBX unless asked";
+    auto* beside = dialog->findChild<QCheckBox*>("exportTexturesBeside");
+    ASSERT_TRUE(beside);
+    beside->setChecked(true);
+    EXPECT_FALSE(dialog->request().embedTextures);
+    beside->setChecked(false);
 
     QTest::mouseClick(button, Qt::LeftButton);
     EXPECT_EQ(dialog->findChild<QProgressBar*>("exportProgress")->value(), 1000);

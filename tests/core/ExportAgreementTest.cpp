@@ -38,9 +38,15 @@ public:
         if (!m_scene)
             return;
         collect(m_scene->mRootNode);
-        if (m_scene->mNumAnimations == 0)
+        play(0);
+    }
+    // Plays the file's `index`-th clip (none: every node at its transform).
+    void play(unsigned index)
+    {
+        m_channels.clear();
+        if (index >= m_scene->mNumAnimations)
             return;
-        const aiAnimation& clip = *m_scene->mAnimations[0];
+        const aiAnimation& clip = *m_scene->mAnimations[index];
         m_ticksPerSecond = clip.mTicksPerSecond > 0.0 ? clip.mTicksPerSecond : 1.0;
         for (unsigned c = 0; c < clip.mNumChannels; ++c)
             m_channels[clip.mChannels[c]->mNodeName.C_Str()] = clip.mChannels[c];
@@ -153,14 +159,14 @@ TEST_P(ExportAgreement, AssimpPlaysTheGlbAndTheFbxAlikeBetweenKeys)
     const std::string fbx = test::temporaryPath(GetParam() + "-agree.fbx");
     ASSERT_FALSE(hasErrors(io::exportRig(rig, glb, options)));
     ASSERT_FALSE(hasErrors(io::exportRig(rig, fbx, options)));
-    const AssimpPlayer gltf(glb), other(fbx);
+    AssimpPlayer gltf(glb), other(fbx);
     ASSERT_NE(gltf.scene(), nullptr);
     ASSERT_NE(other.scene(), nullptr);
-    ASSERT_EQ(gltf.scene()->mNumAnimations, 1u);
-    ASSERT_EQ(other.scene()->mNumAnimations, 1u);
-
     const auto prepared = io::prepareExport(rig, options);
     ASSERT_TRUE(prepared.scene);
+    // One animation per clip (the range of motion in clips of a minute), in the scene's order.
+    ASSERT_EQ(gltf.scene()->mNumAnimations, prepared.scene->clips.size());
+    ASSERT_EQ(other.scene()->mNumAnimations, prepared.scene->clips.size());
     std::vector<const aiNode*> gltfJoints, fbxJoints;
     for (const auto& joint : prepared.scene->joints) {
         gltfJoints.push_back(gltf.node(joint.name));
@@ -168,31 +174,40 @@ TEST_P(ExportAgreement, AssimpPlaysTheGlbAndTheFbxAlikeBetweenKeys)
         ASSERT_NE(gltfJoints.back(), nullptr) << joint.name << " in the glb";
         ASSERT_NE(fbxJoints.back(), nullptr) << joint.name << " in the FBX";
     }
-    const std::vector<double> times = gltf.keyTimes();
-    ASSERT_GT(times.size(), 10u);
-    EXPECT_NEAR(times.back(), prepared.scene->clips[0].times.back(), 1e-4);
-
     double worst = 0.0, travel = 0.0;
     std::string where;
     std::vector<Vec3> start;
-    for (std::size_t k = 0; k + 1 < times.size(); ++k)
-        for (int q = 0; q < 4 || (q == 4 && k + 2 == times.size()); ++q) {
-            const double t = times[k] + (times[k + 1] - times[k]) * q / 4.0;
-            const std::vector<Vec3> as = gltf.worldPositions(gltfJoints, t), bs = other.worldPositions(fbxJoints, t);
-            for (std::size_t j = 0; j < as.size(); ++j) {
-                const Vec3 a = as[j], b = bs[j];
-                if (start.size() < as.size())
-                    start.push_back(a);
-                travel = std::max(travel, glm::length(a - start[j]));
-                if (const double d = glm::length(a - b); d > worst) {
-                    worst = d;
-                    where = prepared.scene->joints[j].name + " at " + std::to_string(t) + " s";
+    std::size_t keys = 0;
+    for (unsigned c = 0; c < prepared.scene->clips.size(); ++c) {
+        const io::ExportClip& clip = prepared.scene->clips[c];
+        EXPECT_NE(std::string(other.scene()->mAnimations[c]->mName.C_Str()).find(clip.name), std::string::npos)
+            << other.scene()->mAnimations[c]->mName.C_Str();
+        gltf.play(c);
+        other.play(c);
+        const std::vector<double> times = gltf.keyTimes();
+        ASSERT_GT(times.size(), 10u);
+        EXPECT_NEAR(times.back(), clip.times.back(), 1e-4);
+        keys += times.size();
+        for (std::size_t k = 0; k + 1 < times.size(); ++k)
+            for (int q = 0; q < 4 || (q == 4 && k + 2 == times.size()); ++q) {
+                const double t = times[k] + (times[k + 1] - times[k]) * q / 4.0;
+                const std::vector<Vec3> as = gltf.worldPositions(gltfJoints, t), bs = other.worldPositions(fbxJoints, t);
+                for (std::size_t j = 0; j < as.size(); ++j) {
+                    const Vec3 a = as[j], b = bs[j];
+                    if (start.size() < as.size())
+                        start.push_back(a);
+                    travel = std::max(travel, glm::length(a - start[j]));
+                    if (const double d = glm::length(a - b); d > worst) {
+                        worst = d;
+                        where = prepared.scene->joints[j].name + " at " + std::to_string(t) + " s of " + clip.name;
+                    }
                 }
             }
-        }
+    }
     EXPECT_GT(travel, 0.1) << "the clip moves the joints";
     EXPECT_LE(worst, kTolerance) << where;
-    std::printf("%zu key times, %zu joints, joints travel up to %.3f m, worst %.2e m (%s)\n", times.size(), gltfJoints.size(),
+    std::printf("%zu clips, %zu key times, %zu joints, joints travel up to %.3f m, worst %.2e m (%s)\n",
+                prepared.scene->clips.size(), keys, gltfJoints.size(),
                 travel, worst, where.c_str());
 }
 

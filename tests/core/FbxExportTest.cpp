@@ -200,3 +200,56 @@ TEST(FbxExport, Version75FilesWithWideOffsetsReadBack)
     wide.version = 7300;
     EXPECT_FALSE(io::fbxBytes(*prepared.scene, {}, wide)) << "only 7400 and 7500 are written";
 }
+
+// Issue 21: a texture travels inside the FBX (the Video's Content) or, with
+// embedTextures off, as a file written beside it that the FBX names relatively.
+TEST(FbxExport, TexturesAreEmbeddedOrWrittenBesideTheFileAndNamedRelatively)
+{
+    std::vector<io::SkinnedMesh> meshes{io::proxyMesh(*model::extractSkeleton(biped()), 500)};
+    meshes[0].material = 0;
+    std::vector<io::ExportMaterial> materials(1);
+    materials[0].name = "skin";
+    materials[0].imageName = "skin.png";
+    materials[0].image = std::string("\x89PNG not really an image\0with a zero", 36);
+    materials[0].mimeType = "image/png";
+    io::ExportOptions options;
+    options.meshes = &meshes;
+    options.materials = &materials;
+    const std::filesystem::path folder = test::temporaryPath("fbx-textures");
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder / "relative");
+    auto videoOf = [](const std::string& path) {
+        static test::FbxFile file; // the records the returned pointer lives in
+        file = test::readFbx(test::readFileBytes(path));
+        EXPECT_TRUE(file.error.empty()) << file.error;
+        const auto videos = file.find("Objects")->all("Video");
+        EXPECT_EQ(videos.size(), 1u);
+        return videos.empty() ? nullptr : videos[0];
+    };
+
+    ASSERT_FALSE(hasErrors(io::exportRig(biped(), (folder / "embedded.fbx").string(), options)));
+    const test::FbxRecord* embedded = videoOf((folder / "embedded.fbx").string());
+    ASSERT_TRUE(embedded && embedded->find("Content"));
+    EXPECT_EQ(embedded->find("Content")->properties[0].text, materials[0].image);
+    EXPECT_FALSE(std::filesystem::exists(folder / "skin.png")) << "embedded: nothing beside the file";
+
+    options.embedTextures = false;
+    const std::string relativePath = (folder / "relative" / "rig.fbx").string();
+    ASSERT_FALSE(hasErrors(io::exportRig(biped(), relativePath, options)));
+    const test::FbxRecord* relative = videoOf(relativePath);
+    ASSERT_TRUE(relative);
+    EXPECT_EQ(relative->find("Content"), nullptr) << "no image bytes inside the file";
+    EXPECT_EQ(relative->find("RelativeFilename")->properties[0].text, "skin.png");
+    EXPECT_EQ(test::readFileBytes((folder / "relative" / "skin.png").string()), materials[0].image);
+    EXPECT_LT(std::filesystem::file_size(relativePath), std::filesystem::file_size(folder / "embedded.fbx"));
+
+    // A name that would leave the folder is refused, and nothing is written.
+    materials[0].imageName = "../escaped.png";
+    const std::string refusedPath = (folder / "relative" / "refused.fbx").string();
+    const Diagnostics refused = io::exportRig(biped(), refusedPath, options);
+    ASSERT_TRUE(hasErrors(refused));
+    EXPECT_NE(formatAll(refused).find("'../escaped.png' of material 'skin' is not a plain file name"), std::string::npos)
+        << formatAll(refused);
+    EXPECT_FALSE(std::filesystem::exists(folder / "escaped.png"));
+    EXPECT_FALSE(std::filesystem::exists(refusedPath));
+}

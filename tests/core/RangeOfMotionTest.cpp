@@ -98,29 +98,30 @@ TEST(RangeOfMotion, EverySampleMovesEveryExercisedControlWithoutStretchOnTheFram
         SCOPED_TRACE(name);
         const model::Rig& rig = sample(name);
         const io::ExportScene scene = romScene(rig);
-        ASSERT_EQ(scene.clips.size(), 1u);
-        const io::ExportClip& clip = scene.clips[0];
-        EXPECT_EQ(clip.framesPerSecond, 30.0);
-        for (double t : clip.times)
-            EXPECT_NEAR(t * 30.0, std::round(t * 30.0), 1e-9) << "a key off the 30 fps grid at " << t;
-        EXPECT_LE(worstStretch(scene, clip), 0.01);
-
-        // One named range per exercised controller; each moves some joint.
-        ASSERT_FALSE(clip.markers.empty());
+        ASSERT_FALSE(scene.clips.empty());
         std::set<std::string> names;
-        const auto worlds = jointWorlds(scene, clip);
-        for (const auto& marker : clip.markers) {
-            EXPECT_TRUE(names.insert(marker.name).second) << marker.name;
-            ASSERT_TRUE(rig.findPath(marker.control)) << marker.control;
-            EXPECT_EQ(rig.nodes[*rig.findPath(marker.control)].kind, model::RigNodeKind::Controller);
-            double moved = 0.0;
-            for (std::size_t k = 0; k < clip.times.size(); ++k)
-                if (clip.times[k] >= marker.start - 1e-9 && clip.times[k] <= marker.end + 1e-9)
-                    for (std::size_t j = 0; j < scene.joints.size(); ++j) {
-                        const auto& before = worlds[std::size_t(std::lround(marker.start * 3.0))][j]; // keys 1/3 s apart
-                        moved = std::max(moved, maxAbsDifference(worlds[k][j], before));
-                    }
-            EXPECT_GT(moved, 1e-3) << marker.name << " moves no joint (a dead segment)";
+        for (const io::ExportClip& clip : scene.clips) {
+            SCOPED_TRACE(clip.name);
+            EXPECT_EQ(clip.framesPerSecond, 30.0);
+            for (double t : clip.times)
+                EXPECT_NEAR(t * 30.0, std::round(t * 30.0), 1e-9) << "a key off the 30 fps grid at " << t;
+            EXPECT_LE(worstStretch(scene, clip), 0.01);
+
+            // One named range per exercised controller; each moves some joint.
+            ASSERT_FALSE(clip.markers.empty());
+            const auto worlds = jointWorlds(scene, clip);
+            for (const auto& marker : clip.markers) {
+                EXPECT_TRUE(names.insert(marker.name).second) << marker.name;
+                ASSERT_TRUE(rig.findPath(marker.control)) << marker.control;
+                EXPECT_EQ(rig.nodes[*rig.findPath(marker.control)].kind, model::RigNodeKind::Controller);
+                double moved = 0.0;
+                for (std::size_t k = 0; k < clip.times.size(); ++k)
+                    if (clip.times[k] >= marker.start - 1e-9 && clip.times[k] <= marker.end + 1e-9)
+                        for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+                            const auto& before = worlds[std::size_t(std::lround(marker.start * 3.0))][j]; // keys 1/3 s apart
+                            moved = std::max(moved, maxAbsDifference(worlds[k][j], before));
+                        }
+                EXPECT_GT(moved, 1e-3) << marker.name << " moves no joint (a dead segment)";
         }
 
         // A written channel changes; one left out equals the node's transform.
@@ -129,7 +130,44 @@ TEST(RangeOfMotion, EverySampleMovesEveryExercisedControlWithoutStretchOnTheFram
             for (unsigned bit : {io::kTranslationChannel, io::kRotationChannel, io::kScaleChannel})
                 EXPECT_EQ((track.animated & bit) != 0, changes(track, bit)) << "track of joint " << track.node;
         }
+        }
     }
+}
+
+// Engines keep clip time in 32-bit floats (Godot 3 bakes at 15 fps by adding
+// float(1/15) to a float time: 1.9 ms off 170 s into a clip), so the default
+// layout splits a long range at controller boundaries into clips of a minute
+// at most, each from time 0 on the start pose, every controller's range kept.
+TEST(RangeOfMotion, LongRangesAreSplitIntoClipsOfAMinuteAtMostAtControllerBoundaries)
+{
+    const model::Rig& rig = sample("biped");
+    const io::ExportScene scene = romScene(rig);
+    io::ExportOptions perControl;
+    perControl.clipPerControl = true;
+    const std::size_t controllers = romScene(rig, perControl).clips.size();
+    ASSERT_GT(scene.clips.size(), 1u) << "the biped's range lasts minutes";
+    std::size_t markers = 0;
+    const auto worlds0 = jointWorlds(scene, scene.clips.front());
+    for (std::size_t c = 0; c < scene.clips.size(); ++c) {
+        const io::ExportClip& clip = scene.clips[c];
+        EXPECT_EQ(clip.name, "range_of_motion_" + std::to_string(c + 1));
+        EXPECT_EQ(clip.times.front(), 0.0);
+        EXPECT_LE(clip.times.back(), 60.0 + 1e-9) << clip.name;
+        EXPECT_DOUBLE_EQ(clip.markers.front().start, 0.0);
+        EXPECT_DOUBLE_EQ(clip.markers.back().end, clip.times.back());
+        markers += clip.markers.size();
+        const auto worlds = jointWorlds(scene, clip);
+        double first = 0.0, last = 0.0;
+        for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+            first = std::max(first, maxAbsDifference(worlds.front()[j], worlds0.front()[j]));
+            last = std::max(last, maxAbsDifference(worlds.back()[j], worlds0.front()[j]));
+        }
+        EXPECT_LT(first, 1e-5) << clip.name << " starts on the start pose";
+        EXPECT_LT(last, 1e-5) << clip.name << " ends on it";
+    }
+    EXPECT_EQ(markers, controllers);
+    EXPECT_EQ(romScene(sample("prop")).clips.size(), 1u) << "a short range stays one clip";
+    EXPECT_EQ(romScene(sample("prop")).clips[0].name, "range_of_motion");
 }
 
 TEST(RangeOfMotion, ExercisesFkControlsInFkAndSwitchesBackAfter)
@@ -180,7 +218,7 @@ TEST(RangeOfMotion, StartsFromTheGuidesTestPoseAndSettings)
     io::ExportOptions options;
     options.testPose = &pose;
     const io::ExportScene scene = romScene(rig, options);
-    ASSERT_EQ(scene.clips.size(), 1u);
+    ASSERT_FALSE(scene.clips.empty());
     const auto& clip = scene.clips[0];
 
     auto program = eval::RigProgram::compile(rig);
@@ -224,23 +262,26 @@ TEST(RangeOfMotion, TheGlbWritesOnlyChannelsThatChangeWithMarkersInExtras)
     tinygltf::TinyGLTF loader;
     std::string error, warning;
     ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &error, &warning, path)) << error;
-    ASSERT_EQ(m.animations.size(), 1u);
-    const auto& animation = m.animations[0];
-    for (const auto& channel : animation.channels) {
-        const auto& sampler = animation.samplers[std::size_t(channel.sampler)];
-        const auto& output = m.accessors[std::size_t(sampler.output)];
-        const auto& view = m.bufferViews[std::size_t(output.bufferView)];
-        const float* values = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset + output.byteOffset);
-        const std::size_t width = channel.target_path == "rotation" ? 4 : 3;
-        bool varies = false;
-        for (std::size_t i = width; i < output.count * width; ++i)
-            varies = varies || values[i] != values[i % width];
-        EXPECT_TRUE(varies || output.count == 1) << "a constant " << channel.target_path << " channel of node "
-                                                 << m.nodes[std::size_t(channel.target_node)].name;
+    ASSERT_GT(m.animations.size(), 1u);
+    std::size_t markers = 0;
+    for (const auto& animation : m.animations) {
+        for (const auto& channel : animation.channels) {
+            const auto& sampler = animation.samplers[std::size_t(channel.sampler)];
+            const auto& output = m.accessors[std::size_t(sampler.output)];
+            const auto& view = m.bufferViews[std::size_t(output.bufferView)];
+            const float* values = reinterpret_cast<const float*>(m.buffers[0].data.data() + view.byteOffset + output.byteOffset);
+            const std::size_t width = channel.target_path == "rotation" ? 4 : 3;
+            bool varies = false;
+            for (std::size_t i = width; i < output.count * width; ++i)
+                varies = varies || values[i] != values[i % width];
+            EXPECT_TRUE(varies || output.count == 1) << "a constant " << channel.target_path << " channel of node "
+                                                     << m.nodes[std::size_t(channel.target_node)].name;
     }
     ASSERT_TRUE(animation.extras.Has("markers"));
-    EXPECT_GT(animation.extras.Get("markers").ArrayLen(), 10u);
+    markers += animation.extras.Get("markers").ArrayLen();
     EXPECT_EQ(animation.extras.Get("fps").GetNumberAsDouble(), 30.0);
+    }
+    EXPECT_GT(markers, 10u);
 }
 
 TEST(RigExport, UnityPresetRefusesTheQuadrupedNamingTheBonesItCannotMapUnlessForced)

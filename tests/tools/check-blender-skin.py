@@ -4,8 +4,11 @@
 # mesh, a UV layer, a material with the expected name, and for a textured
 # material an image with pixels (the texture travelled inside the file); then
 # that both files give the same UV at the same place (a V flipped in one
-# format would not match).
-# usage: blender -b --factory-startup --python check-blender-skin.py -- FILE.glb FILE.fbx
+# format would not match). --textures embedded (the default) wants the FBX's
+# images packed from inside the file; --textures relative wants them read from
+# files beside the FBX (written by `rigsmith-cli build --textures relative`),
+# with the FBX holding no image bytes.
+# usage: blender -b --factory-startup --python check-blender-skin.py -- FILE.glb FILE.fbx [--textures embedded|relative]
 import sys
 
 import numpy
@@ -13,7 +16,14 @@ numpy.bool = bool  # Debian 12's numpy 1.24 removed the alias Blender 3.4's impo
 
 import bpy
 
+import os
+
 args = sys.argv[sys.argv.index('--') + 1:]
+textures = 'embedded'
+if '--textures' in args:
+    at = args.index('--textures')
+    textures = args[at + 1]
+    del args[at:at + 2]
 failures = []
 
 
@@ -35,6 +45,15 @@ def surface(path):
             for node in (material.node_tree.nodes if material and material.use_nodes else []):
                 if node.type == 'TEX_IMAGE' and node.image:
                     images.append((node.image.name, tuple(node.image.size)))
+                    if path.lower().endswith('.fbx'):
+                        where = bpy.path.abspath(node.image.filepath)
+                        beside = os.path.dirname(os.path.abspath(where)) == os.path.dirname(os.path.abspath(path))
+                        print(f'CHECK {path}: image {node.image.name} packed {node.image.packed_file is not None}, file {where}')
+                        if textures == 'embedded' and node.image.packed_file is None:
+                            failures.append(f'{path}: image {node.image.name} is not embedded')
+                        if textures == 'relative' and (node.image.packed_file is not None or not beside or
+                                                       not os.path.isfile(where)):
+                            failures.append(f'{path}: image {node.image.name} is not read from a file beside the FBX ({where})')
         uv = mesh.uv_layers.active.data
         pairs = set()
         for loop in mesh.loops:
@@ -65,6 +84,8 @@ for name in sorted(set(glb) & set(fbx)):
     print(f'CHECK {name}: {len(pairs_a)} / {len(pairs_b)} (place, UV) pairs, {share:.4%} differ')
     if share > 0.001:
         failures.append(f'{name}: the files disagree on {missing} (place, UV) pairs')
+if not any(glb[name][1] for name in glb):
+    failures.append(f'no texture in {args[0]}: the check needs a textured character')
 for f in failures:
     print('ERROR', f)
 sys.exit(1 if failures else 0)
