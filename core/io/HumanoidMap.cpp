@@ -1,8 +1,9 @@
 #include "io/HumanoidMap.h"
 
 #include <array>
-#include <cctype>
+#include <map>
 #include <set>
+#include <variant>
 
 namespace rs::io {
 
