@@ -12,6 +12,8 @@
 #include <QStyle>
 #include <QStyleOptionSpinBox>
 
+#include <cstdio>
+
 using namespace rs;
 using namespace rs::test;
 
@@ -56,10 +58,22 @@ TEST(LiveRebuild, AGuideJointDragMovesTheBuiltRigBeforeTheMouseIsReleased)
     ASSERT_EQ(w.session().selection().joint, arm.joints[2].id);
     QTest::keyClick(view, Qt::Key_W);
     view->setGizmoWorldSpace(true);
+    // What a full upload sends: a display toggle redraws everything.
+    std::uint64_t beforeFull = view->sceneVerticesUploaded();
+    w.action("display:axes")->trigger();
+    QTest::qWaitFor([&] { return view->sceneVerticesUploaded() > beforeFull; }, 3000);
+    beforeFull = view->sceneVerticesUploaded();
+    w.action("display:axes")->trigger();
+    QTest::qWaitFor([&] { return view->sceneVerticesUploaded() > beforeFull; }, 3000);
+    const std::uint64_t full = view->sceneVerticesUploaded() - beforeFull;
+    ASSERT_GT(full, 1000u);
     const std::uint64_t sent = view->sceneVerticesUploaded();
     QPoint at;
     ASSERT_TRUE(pressAndDragGizmo(view, 1, at));
-    QApplication::processEvents();
+    QTest::qWaitFor([&] { return view->sceneVerticesUploaded() > sent; }, 3000); // the next frame
+    std::printf("scene vertices: a full upload %llu, the drag's frames %llu\n", (unsigned long long)full,
+                (unsigned long long)(view->sceneVerticesUploaded() - sent));
+    EXPECT_LT(view->sceneVerticesUploaded() - sent, full) << "the drag's frames send the arm and what hangs from it, not the scene";
     EXPECT_FALSE(w.session().isRigStale());
     EXPECT_GT(nodeWorld(w, ikElbow).y - before.y, 0.02) << "the built elbow follows the dragged guide joint, button still down";
     EXPECT_EQ(w.session().history().size(), 0u) << "nothing committed yet";
