@@ -9,7 +9,41 @@
 #include "OutlinerView.h"
 #include "TemplateLibrary.h"
 
+#include <algorithm>
+
 namespace rs::app {
+
+namespace {
+
+// The instances whose drawing a change can alter, when it names them and
+// alters nothing else the viewport draws: each named instance, what hangs
+// below it (hooked on its joints, sized by its guide) and above it (a builder
+// may read its children's nodes). None (draw all again) for anything else: a
+// selection, a mode, a posed rig (a pose reaches across instances), a new
+// document or template library, instances added or removed.
+std::optional<std::vector<model::InstanceId>> instancesDrawnAnew(const edit::Change& change,
+                                                                 const model::GuideDocument& document, bool rigMode)
+{
+    using K = edit::ChangeKind;
+    std::uint32_t local = K::Joints | K::Options | K::Shapes | K::Rig | K::History;
+    if (!rigMode)
+        local |= std::uint32_t(K::Evaluation);
+    if (change.instances.empty() || (change.kinds & ~local) != 0)
+        return std::nullopt;
+    std::vector<model::InstanceId> out;
+    for (model::InstanceId id : change.instances) {
+        const std::vector<model::InstanceId> below = document.subtree(id);
+        out.insert(out.end(), below.begin(), below.end());
+        for (const model::TemplateInstance* i = document.instance(id); i && i->parent != model::kNoId;
+             i = document.instance(i->parent))
+            out.push_back(i->parent);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+} // namespace
 
 void MainWindow::connectOptions()
 {
@@ -92,8 +126,10 @@ void MainWindow::follow(const edit::Change& change)
     if (change.hasAny(K::Document | K::Rig | K::Templates))
         refreshPaintPanel(); // new skin joints
     if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Shapes | K::Names |  K::Selection |
-                      K::Rig | K::Evaluation | K::Mode | K::Templates | K::Models | K::Weights))
+                      K::Rig | K::Evaluation | K::Mode | K::Templates | K::Models | K::Weights)) {
+        m_sceneChanged = instancesDrawnAnew(change, m_session.document(), m_session.mode() == EditorMode::Rig);
         refreshScene();
+    }
     if (change.hasAny(K::Document | K::Instances | K::Joints | K::Options | K::Selection | K::Mode))
         refreshTransformPanel();
 }

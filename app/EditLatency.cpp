@@ -119,6 +119,7 @@ int reportEditLatency(MainWindow& window, int drags)
     }
     window.session().selectGuideJoints({joint}, false);
     timeToFrame(view, [] {}); // the first frame pays for shader and buffer setup
+    const std::uint64_t sceneVertices = view->sceneVerticesUploaded(); // the whole scene, once
     // The floor: a repaint with nothing changed (the GL driver and Qt's compositing).
     std::vector<double> idle;
     for (int i = 0; i < 20; ++i)
@@ -150,6 +151,7 @@ int reportEditLatency(MainWindow& window, int drags)
         frames.push_back({d, true, commits.back(), edits.back(), cpu});
     }
     const CpuTime cpuEnd = cpuNow();
+    const std::uint64_t sceneVerticesSent = view->sceneVerticesUploaded() - sceneVertices;
     window.session().discardAutosave(); // a measurement leaves no recovery behind
     std::vector<double> all = moves;
     all.insert(all.end(), commits.begin(), commits.end());
@@ -188,6 +190,10 @@ int reportEditLatency(MainWindow& window, int drags)
                                 {"viewport_px", {int(view->width() * view->devicePixelRatio()), int(view->height() * view->devicePixelRatio())}},
                                 {"window_px", {window.width(), window.height()}},
                                 {"build_ms", ms(window.session().lastBuildMilliseconds())},
+                                // The scene layers' vertices: a full upload, and what an edit's frame sent on average
+                                // (the dragged joint's instance and those hanging from it or above it).
+                                {"scene_vertices", sceneVertices},
+                                {"scene_vertices_per_frame", sceneVerticesSent / std::max<std::size_t>(1, all.size())},
                                 {"slowest_frames", slowest},
                                 // The most CPU one frame took: what the worst frame would be without contention.
                                 {"worst_frame_gui_cpu_ms", ms(worstGuiCpu)},

@@ -136,7 +136,7 @@ Diagnostics EditorSession::exportRig(const io::ExportRequest& request, std::func
     io::ExportCharacter character{document().bindings, {}}; // the guide's models' meshes, bound
     for (const session::LoadedModel& m : models())
         character.models.push_back({m.path, m.model.get()});
-    return io::runExport(*rig(), model::testPose(document().overrides), request, std::move(progress), character.models.empty() ? nullptr : &character);
+    return io::runExport(document(), *rig(), model::testPose(document().overrides), request, std::move(progress), character.models.empty() ? nullptr : &character);
 }
 
 model::InstanceId EditorSession::instanceNamed(const QString& name) const

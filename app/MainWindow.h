@@ -222,6 +222,9 @@ private:
     };
     std::map<std::size_t, RouteColours> m_routeColours;
     bool m_showRoutes = false;
+    // What the change being followed lets the viewport send again (ChangeWiring's
+    // instancesDrawnAnew); taken by refreshScene, none meaning everything.
+    std::optional<std::vector<model::InstanceId>> m_sceneChanged;
     struct RefitRun;
     std::shared_ptr<RefitRun> m_refit; // the re-fit running on its worker thread
     QFileSystemWatcher* m_modelWatcher = nullptr;

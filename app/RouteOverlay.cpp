@@ -7,6 +7,7 @@
 
 #include "ActionKit.h"
 #include "SkinChunkPanel.h"
+#include "templates/Color.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -55,7 +56,8 @@ void MainWindow::createRouteOverlay()
         display->addAction(show);
     QList<QPair<QColor, QString>> legend;
     for (const Step& s : kSteps) // the renderer's linear colours, shown as sRGB
-        legend.push_back({QColor::fromRgbF(std::pow(s.colour.r, 1.0f / 2.2f), std::pow(s.colour.g, 1.0f / 2.2f), std::pow(s.colour.b, 1.0f / 2.2f)),
+        legend.push_back({QColor::fromRgbF(float(templates::linearToSrgb(s.colour.r)), float(templates::linearToSrgb(s.colour.g)),
+                                           float(templates::linearToSrgb(s.colour.b))),
                           tr(s.text)});
     m_chunkPanel->setRouteLegend(legend);
     connect(show, &QAction::toggled, this, [this](bool on) {

@@ -119,7 +119,7 @@ void MainWindow::refreshScene()
     viewport::applyDisplay(scene, m_display, rigMode);
     if (m_showRoutes && !isPainting())
         applyRouteColours(scene);
-    m_viewport->setScene(std::move(scene));
+    m_viewport->setScene(std::move(scene), std::exchange(m_sceneChanged, std::nullopt));
     const auto* rig = m_session.rig();
     const bool hasNode = rig && pose && s.node != model::kNoNode && s.node < rig->nodes.size();
     if (rigMode) {

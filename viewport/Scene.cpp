@@ -93,9 +93,10 @@ void addCvs(Scene& scene, const model::RigNode& node, model::RigNodeIndex index,
         const model::ControllerCurve& curve = node.curves[k];
         SceneCurve hull;
         hull.node = index;
+        hull.owner = node.owner;
         hull.color = kHullColor;
         for (std::size_t i = 0; i < curve.cvs.size(); ++i) {
-            SceneCv cv{{index, int(k), int(i)}, glm::dvec3(node.worldMatrix * glm::dvec4(curve.cvs[i], 1.0)), false};
+            SceneCv cv{{index, int(k), int(i)}, node.owner, glm::dvec3(node.worldMatrix * glm::dvec4(curve.cvs[i], 1.0)), false};
             cv.selected = std::find(selected.begin(), selected.end(), cv.cv) != selected.end();
             hull.points.push_back(cv.position);
             scene.cvs.push_back(cv);
@@ -106,7 +107,7 @@ void addCvs(Scene& scene, const model::RigNode& node, model::RigNodeIndex index,
     }
 }
 
-void addAxes(Scene& scene, const glm::dmat4& world)
+void addAxes(Scene& scene, const glm::dmat4& world, model::InstanceId owner)
 {
     const glm::dvec3 origin(world[3]);
     const glm::dvec3 colors[] = {{0.95, 0.25, 0.25}, {0.3, 0.9, 0.3}, {0.3, 0.5, 1.0}};
@@ -116,6 +117,7 @@ void addAxes(Scene& scene, const glm::dmat4& world)
         if (length < 1e-12)
             continue;
         SceneCurve c;
+        c.owner = owner;
         c.color = colors[axis];
         c.points = {origin, origin + direction / length * Scene::kAxisLength};
         scene.axes.push_back(std::move(c));
@@ -137,7 +139,7 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
             const glm::dmat4 jointWorld = guide.jointWorldMatrix(joint.id);
             j.position = translationOf(jointWorld);
             if (scene.showGuides) {
-                addAxes(scene, jointWorld);
+                addAxes(scene, jointWorld, instance.id);
                 if (&joint == &instance.joints.front())
                     scene.labels.push_back({j.position, instance.name});
             }
@@ -176,6 +178,7 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                     continue; // a shape override hides it
                 SceneCurve c;
                 c.node = i;
+                c.owner = node.owner;
                 c.color = curve.color;
                 c.selected = i == selection.node ||
                              std::find(selection.nodes.begin(), selection.nodes.end(), i) != selection.nodes.end() ||
@@ -198,7 +201,7 @@ Scene makeScene(const model::GuideDocument& guide, const model::Rig* rig, const 
                 j.parentPosition = translationOf(world(node.virtualParent));
             }
             if (posed)
-                addAxes(scene, nodeWorld);
+                addAxes(scene, nodeWorld, node.owner);
             scene.skinJoints.push_back(j);
         }
     }

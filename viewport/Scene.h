@@ -27,6 +27,7 @@ struct SceneJoint {
 
 struct SceneCurve {
     model::RigNodeIndex node = model::kNoNode;
+    model::InstanceId owner = model::kNoId; // the instance it is drawn for (kNoId: none, the rig root)
     std::vector<glm::dvec3> points; // world-space polyline
     glm::dvec3 color{1.0, 1.0, 0.0};
     bool selected = false;
@@ -35,6 +36,7 @@ struct SceneCurve {
 // CV mode: a control point of a selected controller's shape.
 struct SceneCv {
     model::CurveCv cv;
+    model::InstanceId owner = model::kNoId; // the controller's instance
     glm::dvec3 position{0.0}; // world
     bool selected = false;
 };
@@ -134,6 +136,16 @@ struct Scene {
     // Set by the viewport each time it is given a new scene: the renderer sends
     // the scene's vertices again only when it changed (0: always).
     std::uint64_t revision = 0;
+    // What changed since revision `since` (set by the viewport from what its
+    // caller says a change touched): with `all` false, only what these instances
+    // own (joints, curves, CVs, axes by their `owner`) may differ from the scene
+    // of revision `since`, and the renderer sends only their vertices again.
+    struct Delta {
+        bool all = true;
+        std::uint64_t since = 0;
+        std::vector<model::InstanceId> instances; // sorted, unique
+    };
+    Delta delta;
 
     // Bounds of everything drawn; false when the scene is empty.
     bool bounds(glm::dvec3& lo, glm::dvec3& hi) const;

@@ -5,6 +5,7 @@
 
 #include "eval/Pickwalk.h"
 
+#include <algorithm>
 #include <QMouseEvent>
 #include <QNativeGestureEvent>
 #include <QPainter>
@@ -67,13 +68,26 @@ void ViewportWidget::update()
 }
 
 std::uint64_t ViewportWidget::verticesUploaded() const { return m_renderer ? m_renderer->verticesUploaded() : 0; }
+std::uint64_t ViewportWidget::sceneVerticesUploaded() const { return m_renderer ? m_renderer->sceneVerticesUploaded() : 0; }
 std::uint64_t ViewportWidget::meshVerticesUploaded() const { return m_renderer ? m_renderer->meshVerticesUploaded() : 0; }
 std::uint64_t ViewportWidget::weightVerticesUploaded() const { return m_renderer ? m_renderer->weightVerticesUploaded() : 0; }
 
-void ViewportWidget::setScene(Scene scene)
+void ViewportWidget::setScene(Scene scene, std::optional<std::vector<model::InstanceId>> changed)
 {
+    const std::uint64_t previous = m_sceneRevision;
+    const bool rendered = m_renderer && m_renderer->sceneRevision() == previous;
+    Scene::Delta delta; // all, unless only named instances changed since what the renderer holds
+    if (changed && previous != 0 && rendered) {
+        delta = {false, previous, std::move(*changed)};
+    } else if (changed && previous != 0 && !m_scene.delta.all) { // the previous scene was never drawn: both changes
+        delta = m_scene.delta;
+        delta.instances.insert(delta.instances.end(), changed->begin(), changed->end());
+        std::sort(delta.instances.begin(), delta.instances.end());
+        delta.instances.erase(std::unique(delta.instances.begin(), delta.instances.end()), delta.instances.end());
+    }
     m_scene = std::move(scene);
     m_scene.revision = ++m_sceneRevision;
+    m_scene.delta = std::move(delta);
     update();
 }
 

@@ -62,10 +62,14 @@ public:
     // surface's). Call through a ViewportWidget pointer.
     void update();
 
-    void setScene(Scene scene);
+    // A new scene to draw. With `changed` (the instances a change touched,
+    // sorted, unique), only what they own differs from the previous scene, and
+    // the renderer sends only their vertices (Scene::delta); without it, all.
+    void setScene(Scene scene, std::optional<std::vector<model::InstanceId>> changed = std::nullopt);
     const Scene& scene() const { return m_scene; }
     // Vertices the renderer has sent to the GPU (0 before the first frame).
     std::uint64_t verticesUploaded() const;
+    std::uint64_t sceneVerticesUploaded() const; // of them, the scene layers (Renderer::sceneVerticesUploaded)
     // Mesh vertices and vertex weights sent so far: posing sends neither.
     std::uint64_t meshVerticesUploaded() const;
     std::uint64_t weightVerticesUploaded() const;

@@ -284,7 +284,7 @@ int exportBuiltRig(const model::Rig& rig, const model::GuideDocument& guide, con
     const model::PoseValues none;
     const model::PoseValues restored = rigging::restoredPose(guide, guide.build.restore);
     const model::PoseValues& pose = b.posed ? none : restored;
-    const Diagnostics d = io::runExport(rig, pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
+    const Diagnostics d = io::runExport(guide, rig, pose, request, {}, loaded.models.empty() ? nullptr : &loaded.character);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     status = report(d, status);
     if (status == 0 && !request.path.empty())

@@ -1,5 +1,7 @@
 #include "eval/Channels.h"
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -117,7 +119,7 @@ double ChannelLayout::clamp(int channel, double value) const
 
 void sinCosDegrees(double degrees, double& sine, double& cosine)
 {
-    const double x = degrees * (glm::pi<double>() / 180.0);
+    const double x = glm::radians(degrees);
     sine = std::sin(x); // one sincos call once inlined
     cosine = std::cos(x);
 }

@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/ClipFile.h"
+#include "io/HumanoidMap.h"
 #include "io/NameMap.h"
 #include "io/RigExport.h"
 #include "model/Skeleton.h"
@@ -38,7 +39,7 @@ bool addCharacter(const model::Rig& rig, const ExportRequest& request, const Exp
     return true;
 }
 
-Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
+Diagnostics runExportOrThrow(const model::GuideDocument& guide, const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
                              std::function<bool(double)> progress, const ExportCharacter* character)
 {
     if (request.proxyVertices > kMaxProxyVertices)
@@ -46,6 +47,7 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
                                                      " vertices is too large (at most " + std::to_string(kMaxProxyVertices) + ")")};
     ExportOptions options;
     options.preset = request.preset;
+    options.guide = &guide;
     options.controllers = request.controllers;
     options.rangeOfMotion = request.rangeOfMotion;
     options.fixNames = request.fixNames;
@@ -62,7 +64,7 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
     Diagnostics report;
     NameMap names;
     if (request.names == "unity") {
-        names = unityHumanoidMap();
+        names = unityHumanoidMap(guide, rig);
     } else if (!request.names.empty()) {
         auto read = readNameMap(request.names);
         report = read.diagnostics();
@@ -115,11 +117,11 @@ Diagnostics runExportOrThrow(const model::Rig& rig, const model::PoseValues& pos
 
 } // namespace
 
-Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
+Diagnostics runExport(const model::GuideDocument& guide, const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
                       std::function<bool(double)> progress, const ExportCharacter* character)
 {
     try { // the reference JSON and the meshes are made here, outside exportRig's guard
-        return runExportOrThrow(rig, pose, request, std::move(progress), character);
+        return runExportOrThrow(guide, rig, pose, request, std::move(progress), character);
     } catch (const std::exception& e) {
         return {makeError({request.path, 0, 0}, std::string("export failed: ") + e.what())};
     }

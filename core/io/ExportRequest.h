@@ -45,13 +45,14 @@ struct ExportCharacter {
     std::vector<CharacterModel> models;
 };
 
-// `pose` is the guide's test pose relative to `rig`'s rest: put on the nodes
+// `guide` is the guide `rig` was built from (the Unity humanoid map resolves
+// through its instances). `pose` is the guide's test pose relative to `rig`'s rest: put on the nodes
 // with currentPose, and where the range of motion starts. For a rig already
 // rebuilt in that pose (eval::posedRig) pass an empty pose, or it is applied twice. `progress` as in
 // ExportOptions. With a `character`, its meshes are exported bound to the
 // rig; its errors (a mesh without weights...) refuse the export unless forced,
 // like the validator's.
-Diagnostics runExport(const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
+Diagnostics runExport(const model::GuideDocument& guide, const model::Rig& rig, const model::PoseValues& pose, const ExportRequest& request,
                       std::function<bool(double)> progress = {}, const ExportCharacter* character = nullptr);
 
 } // namespace rs::io

@@ -3,6 +3,7 @@
 #include "eval/RigProgram.h"
 #include "io/ExportCheck.h"
 #include "io/ExportMotion.h"
+#include "io/HumanoidMap.h"
 #include "model/Value.h"
 #include "model/Skeleton.h"
 
@@ -39,26 +40,27 @@ void addUnrealRoot(model::Skeleton& skeleton, std::vector<SkinnedMesh>& meshes)
             ++influence.joint;
 }
 
-// The Unity preset's humanoid map names bones by rig node id: each one this
-// rig has no deform joint for is a bone Unity's avatar leaves unmapped.
-Diagnostics checkUnityMap(const model::Rig& rig, const model::Skeleton& skeleton)
+// The Unity preset's humanoid bones (resolved through the guide's instances):
+// each one this rig has no deform joint for is a bone Unity's avatar leaves unmapped.
+Diagnostics checkUnityMap(const model::Rig& rig, const model::Skeleton& skeleton, const std::vector<HumanoidBone>& bones,
+                          bool hasGuide)
 {
-    std::vector<std::pair<std::string, std::string>> missing; // bone, the node id it wanted
-    std::size_t bones = 0;
-    for (const auto& [id, bone] : unityHumanoidMap().names) {
-        ++bones;
-        const auto node = rig.findPath(id);
+    std::vector<std::pair<std::string, std::string>> missing; // bone, what it wanted
+    for (const HumanoidBone& bone : bones) {
+        const auto node = bone.node ? rig.find(*bone.node) : std::nullopt;
         const bool inSkeleton = node && std::any_of(skeleton.joints.begin(), skeleton.joints.end(),
                                                     [&](const model::SkeletonJoint& j) { return j.node == *node; });
         if (!inSkeleton)
-            missing.push_back({bone, id});
+            missing.push_back({bone.bone, bone.node ? "no joint '" + bone.wanted + "'" : "no " + bone.wanted});
     }
+    if (!hasGuide)
+        return {makeError({}, "preset unity: the humanoid map is found through the rig's guide, and none was given")};
     if (missing.empty())
         return {};
     std::string list;
     for (std::size_t i = 0; i < missing.size(); ++i)
-        list += (i ? ", " : "") + missing[i].first + " (no joint '" + missing[i].second + "')";
-    return {makeError({}, "preset unity: " + std::to_string(missing.size()) + " of " + std::to_string(bones) +
+        list += (i ? ", " : "") + missing[i].first + " (" + missing[i].second + ")";
+    return {makeError({}, "preset unity: " + std::to_string(missing.size()) + " of " + std::to_string(bones.size()) +
                               " Unity humanoid bones have no joint in this rig, so a humanoid avatar would map only part of "
                               "it and play its animation on the wrong joints: " + list +
                               "; forcing the export writes it anyway (rigsmith-cli --force, or \"Export despite errors\" in the editor), "
@@ -162,8 +164,14 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
     }
     model::Skeleton skeleton = extracted.take();
     std::vector<SkinnedMesh> meshes = options.meshes ? *options.meshes : std::vector<SkinnedMesh>{};
-    const NameMap unity = options.preset == ExportPreset::Unity && !options.names ? unityHumanoidMap() : NameMap{};
-    if (const NameMap* names = options.names ? options.names : &unity; !names->names.empty())
+    const bool unityPreset = options.preset == ExportPreset::Unity && !options.names;
+    const std::vector<HumanoidBone> humanoid =
+        unityPreset && options.guide ? unityHumanoidBones(*options.guide, rig) : std::vector<HumanoidBone>{};
+    NameMap unity;
+    for (const HumanoidBone& bone : humanoid)
+        if (bone.node)
+            unity.byKey[*bone.node] = bone.bone;
+    if (const NameMap* names = options.names ? options.names : &unity; !names->empty())
         skeleton = applyNameMap(rig, std::move(skeleton), *names);
     if (options.preset == ExportPreset::Unreal)
         addUnrealRoot(skeleton, meshes);
@@ -180,8 +188,8 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
                 return out; // not forceable: there is no clip to write
             }
         }
-    if (options.preset == ExportPreset::Unity && !options.names) {
-        Diagnostics unmapped = checkUnityMap(rig, skeleton);
+    if (unityPreset) {
+        Diagnostics unmapped = checkUnityMap(rig, skeleton, humanoid, options.guide != nullptr);
         out.report.insert(out.report.end(), unmapped.begin(), unmapped.end());
     }
     if (hasErrors(out.report)) {

@@ -29,7 +29,7 @@ namespace rs::io {
 enum class ExportPreset {
     Gltf,   // Y-up, metres
     Unreal, // Z-up, centimetres (FBX; glTF keeps its Y-up metres), a `root` joint at the origin
-    Unity,  // Y-up, metres, humanoid names (unityHumanoidMap) unless a map is given
+    Unity,  // Y-up, metres, humanoid names (io/HumanoidMap.h, resolved on `guide`) unless a map is given
 };
 std::optional<ExportPreset> presetNamed(const std::string& name); // "gltf", "unreal", "unity"
 const char* presetName(ExportPreset preset);
@@ -49,6 +49,9 @@ struct ExportMaterial {
 struct ExportOptions {
     ExportPreset preset = ExportPreset::Gltf;
     const NameMap* names = nullptr;               // export names; replaces the preset's map
+    // The guide the rig was built from: the Unity preset finds its humanoid
+    // bones through the guide's instances (template, side, tag), never by name.
+    const model::GuideDocument* guide = nullptr;
     bool fixNames = false;                        // apply the validator's safe renames
     bool fixWeights = false;                      // limit to 4 influences and normalise
     bool force = false;                           // write despite validator errors (reported as warnings)
@@ -212,7 +215,8 @@ struct PreparedExport {
 };
 // Refuses (an error in the report, unless forced) when the export is invalid
 // or when the preset cannot map the rig: the Unity preset names humanoid
-// bones the rig has no joint for (each is listed with the joint it wanted).
+// bones the rig has no joint for (each is listed with the joint it wanted;
+// without options.guide no bone can be found).
 PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options);
 
 // The axes and units a file is written in.

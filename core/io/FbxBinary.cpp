@@ -114,7 +114,7 @@ std::string objectName(std::string_view name, std::string_view className)
     return out;
 }
 
-std::string serialise(const std::deque<Node>& topLevel, std::uint32_t version, std::string& error)
+Result<std::string> serialise(const std::deque<Node>& topLevel, std::uint32_t version)
 {
     Writer w(version);
     w.out.append(kMagic, sizeof kMagic); // with its terminating \0
@@ -126,10 +126,8 @@ std::string serialise(const std::deque<Node>& topLevel, std::uint32_t version, s
         if (!w.error.empty())
             break;
     }
-    if (!w.error.empty()) {
-        error = w.error;
-        return {};
-    }
+    if (!w.error.empty())
+        return Result<std::string>::refused(w.error);
     w.nullRecord();
     w.out.append(reinterpret_cast<const char*>(kFooterId), 16);
     w.out.append(4, '\0');

@@ -20,6 +20,7 @@
 //            (16 bytes when already aligned), uint32 version, 120 zero bytes,
 //            the 16-byte closing magic.
 // Object names use FBX's binary separator: "name\x00\x01Class".
+#include "base/Result.h"
 #include <cstdint>
 #include <deque>
 #include <span>
@@ -75,7 +76,7 @@ std::string objectName(std::string_view name, std::string_view className);
 
 // The whole file: header, the top-level records, the closing null record and
 // the footer. Record names must be shorter than 256 bytes and, before 7500,
-// the file smaller than 4 GiB; `error` says which broke and the result is empty.
-std::string serialise(const std::deque<Node>& topLevel, std::uint32_t version, std::string& error);
+// the file smaller than 4 GiB; a refusal says which broke.
+Result<std::string> serialise(const std::deque<Node>& topLevel, std::uint32_t version);
 
 } // namespace rs::io::fbx

@@ -140,11 +140,7 @@ Result<std::string> fbxBytes(const ExportScene& scene, const Convention& convent
     top.push_back(std::move(doc.objects));
     top.push_back(std::move(doc.connections));
     top.push_back(std::move(takes));
-    std::string error;
-    std::string bytes = fbx::serialise(top, options.version, error);
-    if (!error.empty())
-        return Result<std::string>::refused(error);
-    return bytes;
+    return fbx::serialise(top, options.version);
 }
 
 Diagnostics writeFbx(const ExportScene& scene, const std::string& path, const Convention& convention,

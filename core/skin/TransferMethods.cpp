@@ -6,6 +6,7 @@
 #include "skin/TransferInpaint.h"
 #include "skin/TransferQuery.h"
 
+#include <glm/trigonometric.hpp>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -70,7 +71,7 @@ Result<model::MeshWeights> transferWeights(const TransferSource& source, const m
     std::vector<std::uint8_t> route(n, kClosestPoint), matched(inpainting ? n : 0, 0);
     const Query query{d, queryOptions};
     const float matchDistance2 = inpainting ? float(std::pow(inpaintDistance(options, target), 2.0)) : 0.0f;
-    const float matchCosine = float(std::cos(options.inpaintAngleDegrees * 3.14159265358979 / 180.0));
+    const float matchCosine = float(std::cos(glm::radians(double(options.inpaintAngleDegrees))));
     // Inpainting: the closest points are about a fifth of the work (BM_TransferInpainting), the solve the rest.
     const double queryShare = inpainting ? 0.2 : 1.0;
     // One parallel loop over every target vertex in chunks of kChunk (no

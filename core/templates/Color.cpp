@@ -1,5 +1,7 @@
 #include "templates/Color.h"
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -220,11 +222,23 @@ std::string formatColor(const Color& color)
 Color shiftHue(const Color& color, double degrees)
 {
     // Rotation about the grey axis in RGB space: exact for 120-degree steps.
-    const double a = degrees * M_PI / 180.0;
+    const double a = glm::radians(degrees);
     const double c = std::cos(a), s = std::sin(a);
     const double k = (1.0 - c) / 3.0, q = std::sqrt(1.0 / 3.0) * s;
     auto mix = [&](double x, double y, double z) { return std::clamp(x * (c + k) + y * (k - q) + z * (k + q), 0.0, 1.0); };
     return {mix(color.r, color.g, color.b), mix(color.g, color.b, color.r), mix(color.b, color.r, color.g)};
+}
+
+double srgbToLinear(double srgb)
+{
+    const double c = std::clamp(srgb, 0.0, 1.0);
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+double linearToSrgb(double linear)
+{
+    const double c = std::clamp(linear, 0.0, 1.0);
+    return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
 } // namespace rs::templates

@@ -92,7 +92,7 @@ TEST(ExportDialog, TheUnityPresetRefusesTheQuadrupedListingTheBonesUntilForced)
     auto* report = dialog->findChild<QPlainTextEdit*>("exportReport");
 
     QTest::mouseClick(button, Qt::LeftButton);
-    EXPECT_TRUE(report->toPlainText().contains("LeftUpperArm (no joint 'arm.L::skin.limb.0')")) << report->toPlainText().toStdString();
+    EXPECT_TRUE(report->toPlainText().contains("LeftUpperArm (no left arm.limb instance)")) << report->toPlainText().toStdString();
     EXPECT_TRUE(report->toPlainText().contains("Not exported")) << report->toPlainText().toStdString();
     EXPECT_FALSE(std::filesystem::exists(glb));
 

@@ -23,6 +23,7 @@ const std::string kSource = RIGSMITH_SOURCE_DIR;
 const std::string kHuman = "/usr/share/assimp/models/Collada/human.zae";
 
 struct BoundHuman {
+    model::GuideDocument guide;
     model::Rig rig;
     std::shared_ptr<const model::Model> model;
     io::ExportCharacter character;
@@ -38,7 +39,8 @@ const BoundHuman* boundHuman()
         auto h = std::make_unique<BoundHuman>();
         templates::TemplateRegistry templates;
         io::scanTemplates(templates, {kSource + "/templates"}, kSource + "/resources/icons");
-        h->rig = rigging::buildRig(io::readGuideFile(kSource + "/tests/data/Skin/human/guide.yml").take(), templates);
+        h->guide = io::readGuideFile(kSource + "/tests/data/Skin/human/guide.yml").take();
+        h->rig = rigging::buildRig(h->guide, templates);
         h->model = std::make_shared<const model::Model>(imported.take());
         auto bindings = skin::bindModels({{kHuman, h->model}}, skin::skinBones(h->rig).take(), {});
         if (!bindings)
@@ -60,7 +62,7 @@ void BM_ExportBoundHuman(benchmark::State& state)
     io::ExportRequest request;
     request.path = (std::filesystem::temp_directory_path() / (state.range(0) == 0 ? "bench-human.glb" : "bench-human.fbx")).string();
     for (auto _ : state) {
-        const Diagnostics report = io::runExport(human->rig, {}, request, {}, &human->character);
+        const Diagnostics report = io::runExport(human->guide, human->rig, {}, request, {}, &human->character);
         if (hasErrors(report)) {
             state.SkipWithError(formatAll(report).c_str());
             break;

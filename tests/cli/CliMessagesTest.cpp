@@ -79,3 +79,15 @@ TEST(Cli, AddingToAGuideWithAMissingTemplateWarnsAboutTheInstance)
     EXPECT_NE(run.errors.find(guide.string() + ": warning: instance 'neck': unknown template 'neck.gone'"), std::string::npos)
         << run.errors;
 }
+
+TEST(Cli, TheUnityPresetExportsABipedWhoseSpineIsRenamed)
+{
+    // The humanoid map finds Hips by the spine.torso template's skin.0, not by the instance's name.
+    const fs::path folder = freshFolder("unity-renamed");
+    const fs::path guide = editedBiped(folder, "torso.yml", "    name: spine\n", "    name: torso\n");
+    const fs::path glb = folder / "torso.glb";
+    const CliRun run = runCli({"build", guide.string(), "-o", glb.string(), "--preset", "unity"}, folder);
+    EXPECT_EQ(run.exitCode, 0) << run.errors;
+    EXPECT_EQ(run.errors.find("no joint"), std::string::npos) << run.errors;
+    EXPECT_NE(readText(glb).find("\"Hips\""), std::string::npos) << "the torso's first joint is Unity's Hips";
+}

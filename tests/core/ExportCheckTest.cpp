@@ -4,6 +4,7 @@
 #include "core/TestSupport.h"
 #include "io/ExportCheck.h"
 #include "io/RigExport.h"
+#include "io/HumanoidMap.h"
 #include "io/NameMap.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -102,8 +103,10 @@ TEST(ExportCheck, TheExportRefusesErrorsUnlessForced)
 
 TEST(NameMap, UnityHumanoidNamesTheBipedAndStaysValid)
 {
-    const model::Rig rig = sampleRig("biped");
-    const auto skeleton = io::applyNameMap(rig, model::extractSkeleton(rig).take(), io::unityHumanoidMap());
+    const model::GuideDocument guide = test::loadSample("biped");
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
+    const io::NameMap unity = io::unityHumanoidMap(guide, rig);
+    const auto skeleton = io::applyNameMap(rig, model::extractSkeleton(rig).take(), unity);
     std::set<std::string> names;
     for (const auto& joint : skeleton.joints)
         names.insert(joint.name);
@@ -114,7 +117,6 @@ TEST(NameMap, UnityHumanoidNamesTheBipedAndStaysValid)
     EXPECT_TRUE(io::checkSkeleton(rig, skeleton).problems.empty());
     // The export writes them.
     const std::string path = test::temporaryPath("unity.glb");
-    const io::NameMap unity = io::unityHumanoidMap();
     io::ExportOptions options;
     options.names = &unity;
     ASSERT_TRUE(io::exportRig(rig, path, options).empty());

@@ -192,6 +192,8 @@ TEST(RigExport, UnityPresetUsesHumanoidNames)
 {
     io::ExportOptions options;
     options.preset = io::ExportPreset::Unity;
+    const model::GuideDocument guide = test::loadSample("biped");
+    options.guide = &guide;
     const std::string path = test::temporaryPath("unity.glb");
     ASSERT_TRUE(io::exportRig(biped(), path, options).empty());
     const auto m = readGlb(path);

@@ -113,10 +113,12 @@ void expectWeightsMatch(const aiScene& scene, const io::ExportScene& expected, d
 TEST_P(ExportRoundTrip, AssimpReadsTheSameSkeletonAndWeights)
 {
     const auto& [sample, extension, preset] = GetParam();
-    const model::Rig rig = rigging::buildRig(test::loadSample(sample), test::builtinTemplates());
+    const model::GuideDocument guide = test::loadSample(sample);
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
     const std::vector<io::SkinnedMesh> meshes{io::proxyMesh(*model::extractSkeleton(rig), 3000)};
     io::ExportOptions options;
     options.preset = preset;
+    options.guide = &guide;
     options.meshes = &meshes;
     // The humanoid map finds no arms on the quadruped and the prop: refused unless forced (RangeOfMotionTest).
     options.force = preset == io::ExportPreset::Unity && sample != "biped";

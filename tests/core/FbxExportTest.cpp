@@ -48,9 +48,9 @@ TEST(FbxBinary, RecordsOfEveryPropertyTypeParseBackIn74And75)
         b.child("Empty");            // no properties: ends with a null record
         b.child("Leaf").addInt32(1); // properties, no children: no null record
         b.child("Nested").child("Deeper").addString("x");
-        std::string error;
-        const std::string bytes = io::fbx::serialise(top, version, error);
-        ASSERT_TRUE(error.empty()) << error;
+        auto serialised = io::fbx::serialise(top, version);
+        ASSERT_TRUE(serialised.ok()) << formatAll(serialised.diagnostics());
+        const std::string bytes = serialised.take();
         const test::FbxFile file = test::readFbx(bytes);
         ASSERT_TRUE(file.error.empty()) << version << ": " << file.error;
         EXPECT_EQ(file.version, version);

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <set>
 
 using namespace rs;
@@ -106,6 +108,30 @@ TEST(IncrementalBuild, EveryKindOfGuideEditGivesTheFullBuildOnEverySample)
                     guide.instance(id)->options.erase(option.name);
                     buildAndCompare(guide, cache, label + "option " + option.name + " back");
                 }
+            // The first float option and the first enum option set to another value, then back.
+            const auto floatOption = std::find_if(manifest->opts.begin(), manifest->opts.end(), [](const auto& o) {
+                return std::holds_alternative<double>(o.value);
+            });
+            if (floatOption != manifest->opts.end()) {
+                const double v = std::get<double>(floatOption->value);
+                const double other = floatOption->max && v + 0.25 > *floatOption->max ? v - 0.25 : v + 0.25;
+                guide.instance(id)->options[floatOption->name] = Value(other);
+                buildAndCompare(guide, cache, label + "float option " + floatOption->name);
+                guide.instance(id)->options.erase(floatOption->name);
+                buildAndCompare(guide, cache, label + "float option " + floatOption->name + " back");
+            }
+            const auto enumOption = std::find_if(manifest->opts.begin(), manifest->opts.end(), [](const auto& o) {
+                return o.isEnum() && o.enumLabels.size() > 1 && std::holds_alternative<long long>(o.value);
+            });
+            if (enumOption != manifest->opts.end()) {
+                const long long v = std::get<long long>(enumOption->value);
+                const long long other = enumOption->enumLabels.front().first == v ? enumOption->enumLabels[1].first
+                                                                                  : enumOption->enumLabels.front().first;
+                guide.instance(id)->options[enumOption->name] = Value(other);
+                buildAndCompare(guide, cache, label + "enum option " + enumOption->name);
+                guide.instance(id)->options.erase(enumOption->name);
+                buildAndCompare(guide, cache, label + "enum option " + enumOption->name + " back");
+            }
             // A joint turned (not moved): the instance's frames change, its children's hooks too.
             guide.instance(id)->joints.back().local.rotateDegrees.z += 7.0;
             buildAndCompare(guide, cache, label + "joint turned");

@@ -32,9 +32,15 @@ using namespace rs;
 
 namespace {
 
+const model::GuideDocument& bipedGuide()
+{
+    static const model::GuideDocument guide = test::loadSample("biped");
+    return guide;
+}
+
 const model::Rig& biped()
 {
-    static const model::Rig rig = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    static const model::Rig rig = rigging::buildRig(bipedGuide(), test::builtinTemplates());
     return rig;
 }
 
@@ -369,7 +375,7 @@ TEST(RigExport, AClipFileExportsBesideTheRangeOfMotionWithCubicKeys)
     request.path = test::temporaryPath("clip-file.glb");
     request.rangeOfMotion = true;
     request.clips = {std::string(RIGSMITH_TEST_DATA) + "/Export/keyed-clip/wave.yml"};
-    const Diagnostics report = io::runExport(biped(), {}, request);
+    const Diagnostics report = io::runExport(bipedGuide(), biped(), {}, request);
     ASSERT_FALSE(hasErrors(report)) << formatAll(report);
     tinygltf::Model m;
     tinygltf::TinyGLTF loader;
@@ -384,7 +390,7 @@ TEST(RigExport, AClipFileExportsBesideTheRangeOfMotionWithCubicKeys)
 
     request.clips = {std::string(RIGSMITH_TEST_DATA) + "/Export/keyed-clip/backwards.yml"};
     request.path = test::temporaryPath("clip-file-refused.glb");
-    EXPECT_TRUE(hasErrors(io::runExport(biped(), {}, request)));
+    EXPECT_TRUE(hasErrors(io::runExport(bipedGuide(), biped(), {}, request)));
     EXPECT_FALSE(std::filesystem::exists(request.path)) << "a bad clip writes nothing";
 }
 

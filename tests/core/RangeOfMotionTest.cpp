@@ -286,12 +286,16 @@ TEST(RangeOfMotion, TheGlbWritesOnlyChannelsThatChangeWithMarkersInExtras)
 
 TEST(RigExport, UnityPresetRefusesTheQuadrupedNamingTheBonesItCannotMapUnlessForced)
 {
+    const model::GuideDocument quadruped = test::loadSample("quadruped"), biped = test::loadSample("biped");
     io::ExportOptions options;
     options.preset = io::ExportPreset::Unity;
     auto refused = io::prepareExport(sample("quadruped"), options);
+    EXPECT_NE(formatAll(refused.report).find("found through the rig's guide"), std::string::npos) << "no guide, no humanoid map";
+    options.guide = &quadruped;
+    refused = io::prepareExport(sample("quadruped"), options);
     EXPECT_FALSE(refused.scene);
     const std::string message = formatAll(refused.report);
-    EXPECT_NE(message.find("LeftUpperArm (no joint 'arm.L::skin.limb.0')"), std::string::npos) << message;
+    EXPECT_NE(message.find("LeftUpperArm (no left arm.limb instance)"), std::string::npos) << message;
     EXPECT_NE(message.find("--force"), std::string::npos);
 
     options.force = true;
@@ -303,6 +307,7 @@ TEST(RigExport, UnityPresetRefusesTheQuadrupedNamingTheBonesItCannotMapUnlessFor
 
     // The biped maps every bone; glTF is unaffected on the quadruped.
     options.force = false;
+    options.guide = &biped;
     EXPECT_TRUE(io::prepareExport(sample("biped"), options).scene);
     EXPECT_TRUE(io::prepareExport(sample("quadruped"), io::ExportOptions{}).scene);
 }

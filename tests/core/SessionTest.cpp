@@ -239,17 +239,20 @@ void expectLiveRigIsAFullBuild(session::Session& s, const std::string& what)
 
 TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
 {
-    for (const std::string sample : {"biped", "quadruped", "prop"}) {
+    int cvDrags = 0, floatOptions = 0;
+    for (const std::string sample : {"biped", "quadruped", "prop", "face"}) {
         session::Session s(templatesForSession());
         s.replaceDocument(test::loadSample(sample));
         s.build();
         // The last instance with a controller of its own: a finger, a tail, a lid.
         model::InstanceId leaf = model::kNoId;
         std::string controllerTag;
+        NodeKey leafControl;
         for (const auto& node : s.rig()->nodes)
             if (node.kind == model::RigNodeKind::Controller && !node.shapeFromTwin) {
                 leaf = node.key.instance;
                 controllerTag = node.key.tag;
+                leafControl = node.key;
             }
         ASSERT_NE(leaf, model::kNoId);
         const model::InstanceId root = s.document().instances().front().id;
@@ -266,6 +269,23 @@ TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
         s.endGuideDrag("Move");
         expectLiveRigIsAFullBuild(s, label + "drag commit");
 
+        // A CV drag of the leaf's controller: previews, then the commit.
+        if (const auto control = s.rig()->find(leafControl); control && !s.rig()->nodes[*control].curves.empty()) {
+            s.selectControllers({*control}, false);
+            s.setCvMode(true);
+            s.selectCvs({{*control, 0, 0}}, false);
+            const auto frame = s.cvFrame();
+            ASSERT_TRUE(frame.has_value()) << label;
+            s.beginCvDrag();
+            s.dragCvsTo(raised(*frame, 0.02));
+            expectLiveRigIsAFullBuild(s, label + "CV drag preview");
+            s.dragCvsTo(raised(*frame, 0.04));
+            ASSERT_TRUE(test::succeeded(s.endCvDrag("Move")));
+            expectLiveRigIsAFullBuild(s, label + "CV drag commit");
+            ++cvDrags;
+            s.setCvMode(false);
+        }
+
         // Options and guide parameters of the leaf's template.
         const auto* manifest = s.templates().find(s.document().instance(leaf)->templateId);
         ASSERT_NE(manifest, nullptr);
@@ -273,6 +293,15 @@ TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
             if (std::holds_alternative<bool>(option.value)) {
                 ASSERT_TRUE(test::succeeded(s.setOption(leaf, option.name, Value(!std::get<bool>(option.value)))));
                 expectLiveRigIsAFullBuild(s, label + "option " + option.name);
+                break;
+            }
+        for (const auto& option : manifest->opts)
+            if (std::holds_alternative<double>(option.value)) {
+                const double v = std::get<double>(option.value);
+                const double other = option.max && v + 0.25 > *option.max ? v - 0.25 : v + 0.25;
+                ASSERT_TRUE(test::succeeded(s.setOption(leaf, option.name, Value(other))));
+                expectLiveRigIsAFullBuild(s, label + "float option " + option.name);
+                ++floatOptions;
                 break;
             }
         for (const auto& guide : manifest->guides)
@@ -320,6 +349,8 @@ TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
             s.history().redo();
         expectLiveRigIsAFullBuild(s, label + "redo all");
     }
+    EXPECT_EQ(cvDrags, 4) << "a CV drag on every sample's leaf controller";
+    EXPECT_GE(floatOptions, 1);
 }
 
 TEST(Session, MirroredGuideJointsAreTheAuthoredBranchReflected)

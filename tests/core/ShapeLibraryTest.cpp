@@ -71,6 +71,18 @@ TEST(Color, ParsesCssNamesAndHex)
     EXPECT_EQ(formatColor(shiftHue(*parseColor("red"), 120.0)), "#00ff00");
 }
 
+TEST(Color, ConvertsBetweenSrgbAndLinearByTheSrgbTransferFunction)
+{
+    EXPECT_DOUBLE_EQ(srgbToLinear(0.0), 0.0);
+    EXPECT_DOUBLE_EQ(srgbToLinear(1.0), 1.0);
+    EXPECT_NEAR(srgbToLinear(0.5), 0.2140, 1e-4);     // the sRGB curve, not a 2.2 gamma (0.2176)
+    EXPECT_NEAR(srgbToLinear(0.04045), 0.04045 / 12.92, 1e-12); // the linear toe
+    EXPECT_NEAR(linearToSrgb(0.2140), 0.5, 1e-4);
+    for (double v : {0.001, 0.02, 0.3, 0.7, 0.99})
+        EXPECT_NEAR(linearToSrgb(srgbToLinear(v)), v, 1e-12) << v;
+    EXPECT_DOUBLE_EQ(linearToSrgb(1.5), 1.0) << "clamped";
+}
+
 TEST(ShapeLibrary, ShipsAtLeastFortyShapesEachWithAnUpToDateIcon)
 {
     const auto& shapes = test::builtinTemplates().shapes();

@@ -92,14 +92,14 @@ TEST(SkinnedExport, AMeshWithoutWeightsIsAnErrorNamingItUnlessForced)
     io::ExportRequest request;
     request.path = test::temporaryPath("unbound-eyes.glb");
     std::filesystem::remove(request.path);
-    const Diagnostics refused = io::runExport(h.rig, {}, request, {}, &character);
+    const Diagnostics refused = io::runExport(h.guide, h.rig, {}, request, {}, &character);
     ASSERT_TRUE(hasErrors(refused));
     EXPECT_NE(formatAll(refused).find("mesh 'human-highpolyeyesMesh' of human.zae: it has no skin weights"), std::string::npos)
         << formatAll(refused);
     EXPECT_FALSE(std::filesystem::exists(request.path));
 
     request.force = true;
-    const Diagnostics forced = io::runExport(h.rig, {}, request, {}, &character);
+    const Diagnostics forced = io::runExport(h.guide, h.rig, {}, request, {}, &character);
     EXPECT_FALSE(hasErrors(forced)) << formatAll(forced);
     EXPECT_NE(formatAll(forced).find("exported anyway (forced)"), std::string::npos);
     EXPECT_TRUE(std::filesystem::exists(request.path));
@@ -182,13 +182,14 @@ TEST_P(SkinnedExportRoundTrip, AssimpReadsBothMeshesWithTheirWeightsUvsAndMateri
     io::ExportRequest request;
     request.path = test::temporaryPath(std::string("human-") + io::presetName(preset) + extension);
     request.preset = preset;
-    const Diagnostics report = io::runExport(h.rig, {}, request, {}, &h.character);
+    const Diagnostics report = io::runExport(h.guide, h.rig, {}, request, {}, &h.character);
     ASSERT_FALSE(hasErrors(report)) << formatAll(report);
 
     // What was exported, in the file's convention.
     const io::CharacterExport bound = io::characterExport(h.rig, h.character.bindings, h.character.models);
     io::ExportOptions options;
     options.preset = preset;
+    options.guide = &h.guide;
     options.meshes = &bound.meshes;
     options.materials = &bound.materials;
     auto prepared = io::prepareExport(h.rig, options);

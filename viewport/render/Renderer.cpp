@@ -3,10 +3,13 @@
 #include "GlProgram.h"
 
 #include "MeshRenderer.h"
+#include "SceneLayers.h"
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace rs::viewport {
@@ -38,9 +41,6 @@ void main() {
 }
 )";
 
-struct Vertex {
-    float x, y, z, r, g, b;
-};
 std::vector<Vertex> gridVertices();
 
 void push(std::vector<Vertex>& out, const glm::dvec3& p, const glm::dvec3& c)
@@ -48,19 +48,18 @@ void push(std::vector<Vertex>& out, const glm::dvec3& p, const glm::dvec3& c)
     out.push_back({float(p.x), float(p.y), float(p.z), float(c.x), float(c.y), float(c.z)});
 }
 
-const glm::dvec3 kGuideColor(0.95, 0.55, 0.2);
-const glm::dvec3 kSelectedColor(1.0, 1.0, 1.0);
-const glm::dvec3 kCvColor(0.85, 0.45, 1.0);         // CV mode, as Maya's violet CVs
-const glm::dvec3 kSelectedCvColor(1.0, 0.95, 0.2);
-const glm::dvec3 kSkinColor(0.3, 0.9, 0.9);
+const glm::dvec3 kSelectedCvColor(1.0, 0.95, 0.2); // weight painting's selected vertices
 
 } // namespace
 
 // What is drawn, each in its own persistent vertex buffer: the grid is
 // uploaded once, the reference model when the model changes, the scene's
-// layers when the scene changes (not when only the camera moves), the gizmo
-// (a few hundred vertices) every frame.
+// layers when the scene changes (not when only the camera moves; of a change
+// that names its instances, Scene::delta, only their vertices), the gizmo (a
+// few hundred vertices) every frame.
 enum Layer { Grid, Lines, Curves, SkinPoints, MirrorPoints, GuidePoints, Hulls, CvPoints, Overlay, OverlayPoints, kLayerCount };
+constexpr Layer layerOf(SceneLayer layer) { return Layer(int(Lines) + int(layer)); }
+static_assert(int(CvPoints) - int(Lines) + 1 == kSceneLayerCount);
 
 struct Renderer::GlState {
     GLuint program = 0;
@@ -70,8 +69,82 @@ struct Renderer::GlState {
         GLsizei count = 0;
     };
     Buffer buffers[kLayerCount];
-    std::uint64_t sceneRevision = ~std::uint64_t(0); // what the scene layers hold
+    // What each scene layer's buffer holds: its vertices and each owner's range.
+    struct Resident {
+        std::vector<Vertex> vertices;
+        std::vector<model::InstanceId> owners;
+        std::vector<std::size_t> offsets, counts;
+    };
+    Resident resident[kSceneLayerCount];
+    static constexpr std::uint64_t kNothing = ~std::uint64_t(0);
+    std::uint64_t sceneRevision = kNothing;         // what the scene layers hold
     std::uint64_t uploads = 0;                      // vertex uploads so far (tests, measurements)
+    std::uint64_t sceneUploads = 0;                 // of them, the scene layers'
+
+    void makeResident(SceneLayer layer, LayerBlocks blocks)
+    {
+        Resident& r = resident[layer];
+        r = {};
+        for (std::size_t i = 0; i < blocks.owners.size(); ++i) {
+            r.owners.push_back(blocks.owners[i]);
+            r.offsets.push_back(r.vertices.size());
+            r.counts.push_back(blocks.blocks[i].size());
+            r.vertices.insert(r.vertices.end(), blocks.blocks[i].begin(), blocks.blocks[i].end());
+        }
+        upload(layerOf(layer), r.vertices);
+        sceneUploads += r.vertices.size();
+    }
+    // The blocks of `changed` owners replace theirs: in place when every size
+    // is kept (glBufferSubData of those ranges), else the layer is sent again.
+    void update(SceneLayer layer, LayerBlocks blocks, const std::vector<model::InstanceId>& changed)
+    {
+        Resident& r = resident[layer];
+        auto newBlock = [&](model::InstanceId owner) -> const std::vector<Vertex>* {
+            const auto it = std::find(blocks.owners.begin(), blocks.owners.end(), owner);
+            return it == blocks.owners.end() ? nullptr : &blocks.blocks[std::size_t(it - blocks.owners.begin())];
+        };
+        bool inPlace = true;
+        for (model::InstanceId owner : changed) {
+            const auto it = std::find(r.owners.begin(), r.owners.end(), owner);
+            const std::size_t before = it == r.owners.end() ? 0 : r.counts[std::size_t(it - r.owners.begin())];
+            const auto* now = newBlock(owner);
+            inPlace = inPlace && before == (now ? now->size() : 0) && (before > 0 || !now);
+        }
+        if (!inPlace) {
+            LayerBlocks merged; // the kept owners' blocks in their order, the changed ones replaced, new ones last
+            for (std::size_t i = 0; i < r.owners.size(); ++i) {
+                const model::InstanceId owner = r.owners[i];
+                if (!std::binary_search(changed.begin(), changed.end(), owner)) {
+                    merged.owners.push_back(owner);
+                    merged.blocks.emplace_back(r.vertices.begin() + long(r.offsets[i]),
+                                               r.vertices.begin() + long(r.offsets[i] + r.counts[i]));
+                } else if (const auto* now = newBlock(owner)) {
+                    merged.owners.push_back(owner);
+                    merged.blocks.push_back(*now);
+                }
+            }
+            for (std::size_t i = 0; i < blocks.owners.size(); ++i)
+                if (std::find(r.owners.begin(), r.owners.end(), blocks.owners[i]) == r.owners.end()) {
+                    merged.owners.push_back(blocks.owners[i]);
+                    merged.blocks.push_back(std::move(blocks.blocks[i]));
+                }
+            makeResident(layer, std::move(merged));
+            return;
+        }
+        glBindBuffer(GL_ARRAY_BUFFER, buffers[layerOf(layer)].vbo);
+        for (std::size_t i = 0; i < blocks.owners.size(); ++i) {
+            const auto it = std::find(r.owners.begin(), r.owners.end(), blocks.owners[i]);
+            const std::size_t offset = r.offsets[std::size_t(it - r.owners.begin())];
+            const std::vector<Vertex>& block = blocks.blocks[i];
+            if (std::equal(block.begin(), block.end(), r.vertices.begin() + long(offset)))
+                continue; // the change named it, yet it draws the same (a controller hung below a moved joint)
+            std::memcpy(r.vertices.data() + offset, block.data(), block.size() * sizeof(Vertex));
+            glBufferSubData(GL_ARRAY_BUFFER, GLintptr(offset * sizeof(Vertex)), GLsizeiptr(block.size() * sizeof(Vertex)),
+                            block.data());
+            uploads += block.size();
+            sceneUploads += block.size();
+        }
+    }
 
     void upload(Layer layer, const std::vector<Vertex>& vertices)
     {
@@ -136,6 +209,9 @@ void Renderer::release()
 }
 
 std::uint64_t Renderer::verticesUploaded() const { return m_gl ? m_gl->uploads : 0; }
+std::uint64_t Renderer::sceneVerticesUploaded() const { return m_gl ? m_gl->sceneUploads : 0; }
+std::uint64_t Renderer::sceneRevision() const { return m_gl && m_gl->sceneRevision != GlState::kNothing ? m_gl->sceneRevision : 0; }
+std::size_t Renderer::vertexSize() { return sizeof(Vertex); }
 std::uint64_t Renderer::meshVerticesUploaded() const { return m_meshes->vertexUploads(); }
 std::uint64_t Renderer::weightVerticesUploaded() const { return m_meshes->weightUploads(); }
 std::vector<std::string> Renderer::takeWarnings() { return m_meshes->takeWarnings(); }
@@ -157,53 +233,30 @@ std::vector<Vertex> gridVertices()
     return grid;
 }
 
-void pushJoints(const std::vector<SceneJoint>& joints, std::vector<Vertex>& lines, std::vector<Vertex>& points,
-                const glm::dvec3& lineColor, const glm::dvec3& pointColor, bool showSelection)
-{
-    for (const auto& j : joints) {
-        const bool selected = showSelection && j.selected;
-        if (j.hasParent) {
-            push(lines, j.parentPosition, selected ? kSelectedColor * 0.8 : lineColor);
-            push(lines, j.position, selected ? kSelectedColor * 0.8 : lineColor);
-        }
-        push(points, j.position, selected ? kSelectedColor : pointColor);
-    }
-}
-
-void pushCurves(const std::vector<SceneCurve>& curves, std::vector<Vertex>& out, bool showSelection)
+void pushCurves(const std::vector<SceneCurve>& curves, std::vector<Vertex>& out)
 {
     for (const auto& c : curves)
         for (std::size_t i = 1; i < c.points.size(); ++i) {
-            const glm::dvec3 color = showSelection && c.selected ? kSelectedColor : c.color;
-            push(out, c.points[i - 1], color);
-            push(out, c.points[i], color);
+            push(out, c.points[i - 1], c.color);
+            push(out, c.points[i], c.color);
         }
 }
 
 } // namespace
 
-// The scene's layers, uploaded again only when the scene changed.
+// The scene's layers, uploaded again only when the scene changed; of a change
+// that names its instances, only what those instances own.
 void Renderer::uploadScene(const Scene& scene)
 {
-    std::vector<Vertex> lines, guidePoints, mirrorPoints, skinPoints, curves, hulls, cvPoints;
-    if (scene.showGuides) {
-        pushJoints(scene.guideJoints, lines, guidePoints, kGuideColor * 0.8, kGuideColor, true);
-        pushJoints(scene.mirrorJoints, lines, mirrorPoints, kGuideColor * 0.4, kGuideColor * 0.5, false);
+    const bool incremental = !scene.delta.all && scene.revision != 0 && m_gl->sceneRevision != GlState::kNothing &&
+                             m_gl->sceneRevision >= scene.delta.since;
+    auto layers = sceneLayers(scene, incremental ? &scene.delta.instances : nullptr);
+    for (int layer = 0; layer < kSceneLayerCount; ++layer) {
+        if (incremental)
+            m_gl->update(SceneLayer(layer), std::move(layers[std::size_t(layer)]), scene.delta.instances);
+        else
+            m_gl->makeResident(SceneLayer(layer), std::move(layers[std::size_t(layer)]));
     }
-    pushJoints(scene.skinJoints, lines, skinPoints, kSkinColor * 0.6, kSkinColor, false);
-    pushCurves(scene.curves, curves, true);
-    pushCurves(scene.axes, curves, false);
-    pushCurves(scene.hulls, hulls, false);
-    for (bool selected : {false, true}) // selected on top of unselected CVs at the same place
-        for (const auto& cv : scene.cvs)
-            if (cv.selected == selected) push(cvPoints, cv.position, selected ? kSelectedCvColor : kCvColor);
-    m_gl->upload(Lines, lines);
-    m_gl->upload(GuidePoints, guidePoints);
-    m_gl->upload(MirrorPoints, mirrorPoints);
-    m_gl->upload(SkinPoints, skinPoints);
-    m_gl->upload(Curves, curves);
-    m_gl->upload(Hulls, hulls);
-    m_gl->upload(CvPoints, cvPoints);
     m_gl->sceneRevision = scene.revision;
 }
 
@@ -217,7 +270,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, int width, int h
     if (scene.revision != m_gl->sceneRevision || scene.revision == 0) // 0: a scene nobody stamped
         uploadScene(scene);
     std::vector<Vertex> overlay;
-    pushCurves(scene.overlay, overlay, false);
+    pushCurves(scene.overlay, overlay);
     m_gl->upload(Overlay, overlay);
     std::vector<Vertex> overlayPoints;
     for (const glm::dvec3& p : scene.overlayPoints)

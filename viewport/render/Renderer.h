@@ -34,6 +34,12 @@ public:
     // Vertices sent to the GPU so far: a frame that only moves the camera sends
     // the gizmo's alone (Scene::revision unchanged).
     std::uint64_t verticesUploaded() const;
+    // Of them, the scene layers' (joints, bones, curves, CVs): a change naming
+    // one instance (Scene::delta) sends only that instance's vertices.
+    std::uint64_t sceneVerticesUploaded() const;
+    static std::size_t vertexSize(); // bytes per scene vertex (position and colour)
+    // The revision of the scene the layers hold (0: none yet).
+    std::uint64_t sceneRevision() const;
     // Mesh vertices (positions, normals, UVs) and vertex weights sent so far:
     // a posed frame sends neither, only the palette.
     std::uint64_t meshVerticesUploaded() const;
