@@ -62,6 +62,23 @@ std::uint16_t expectedAnimatable(const model::GuideDocument& guide, const model:
         return T | R | S; // props' parts and the one global scale control
     if (tag == "ctrls.switch" || tag == "ctrls.hand")
         return 0; // attribute holders
+    const auto& options = guide.instance(node.key.instance)->options;
+    auto on = [&](const char* option) { auto it = options.find(option); return it != options.end() && it->second == Value(true); };
+    if (templateId == "wheel.legacy" && tag == "ctrls.spin")
+        return std::uint16_t(1u << model::channelIndex("rx")); // the manual spin about the axle
+    if (templateId == "wheel.legacy" && tag == "ctrls.bank")
+        return T | R | S; // banks, and flattens the wheel by its scale
+    if (templateId == "rig.slide" && tag == "ctrls.slide") { // along the rail, the guides' line
+        const auto& joints = guide.instance(node.key.instance)->joints;
+        const Vec3 rail = glm::normalize(translationOf(guide.jointWorldMatrix(joints.back().id)) -
+                                         translationOf(guide.jointWorldMatrix(joints.front().id)));
+        int along = 0;
+        for (int axis = 1; axis < 3; ++axis)
+            if (std::abs(glm::dot(glm::normalize(Vec3(node.worldMatrix[axis])), rail)) >
+                std::abs(glm::dot(glm::normalize(Vec3(node.worldMatrix[along])), rail)))
+                along = axis;
+        return std::uint16_t((on("do_translate") ? T : (1u << along)) | R | (on("do_scale") ? S : 0));
+    }
     if (tag == "ctrls.pole" || tag == "ctrls.pin" || tag == "ctrls.target")
         return T; // points
     const bool fk = tag.rfind("ctrls.fk.", 0) == 0 && templateId != "face.brow";

@@ -113,6 +113,8 @@ public:
                            frame, swivelJoint);
         const auto bank = kit::addControl(ctx, "bank", "base", {}, swivelNode, movedTo(frame, ground), groundJoint);
         const auto wheel = kit::addControl(ctx, "wheel", "", {}, bank.ctrl, movedTo(frame, centre), axisJoint);
+        kit::animate(ctx, bank, kit::kTranslate | kit::kRotate | kit::kScale); // banks, and flattens by its scale
+        kit::animate(ctx, wheel, kit::kTranslate | kit::kRotate);
         kit::addSkin(ctx, "wheel", "center", {}, wheel.ctrl, movedTo(frame, centre), axisJoint);
         const model::AttributeRef autoRotate = ctx.addAttribute(wheel.ctrl, "auto_rotate", 1.0, 0.0, 1.0);
 
@@ -122,6 +124,7 @@ public:
         ctx.addConstraint("cns.roll", {roll}, {reference(ctx)},
                           model::RollConstraint{.axle = model::Axis::X, .forward = model::Axis::Z, .radius = radius, .amount = autoRotate});
         const auto spin = kit::addControl(ctx, "spin", "spin", {}, roll, movedTo(frame, centre), axisJoint);
+        kit::animate(ctx, spin, std::uint16_t(1u << model::channelIndex("rx"))); // the manual spin
         if (spin.ctrl != spin.offset) { // the manual spin: rotate X only
             model::ChannelSettings& channels = ctx.channels(spin.ctrl);
             channels.lock(kTranslate, 3);
@@ -228,6 +231,13 @@ public:
         }
         model::ChannelSettings& channels = ctx.channels(slide.ctrl);
         channels.limit(kTranslate + aim, low, high);
+        // Animators slide it along the rail (and off it with do_translate), turn it, and scale it with do_scale.
+        std::uint16_t animatable = std::uint16_t(1u << (kTranslate + aim)) | kit::kRotate;
+        if (ctx.optionBool("do_translate"))
+            animatable |= kit::kTranslate;
+        if (ctx.optionBool("do_scale"))
+            animatable |= kit::kScale;
+        kit::animate(ctx, slide, animatable);
         if (!ctx.optionBool("do_translate")) {
             channels.lock(kTranslate + upAxis);
             channels.lock(kTranslate + third);
@@ -285,6 +295,8 @@ public:
 
         const auto body = kit::addControl(ctx, "camera", "", {}, ctx.hookNode(), frame, cameraJoint);
         const auto aimTarget = kit::addControl(ctx, "target", "target", {}, ctx.hookNode(), movedTo(frame, target), targetJoint);
+        kit::animate(ctx, body, kit::kTranslate | kit::kRotate);
+        kit::animate(ctx, aimTarget, kit::kTranslate); // a point the camera looks at
         // The up target above the camera turns with the camera control, so
         // banking the control banks the view; roll turns it about the view axis.
         const RigNodeIndex upNode = kit::addSetup(ctx, RigNodeKind::Group, "mch.up", "up", {}, body.ctrl,
