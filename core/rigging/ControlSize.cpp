@@ -8,6 +8,10 @@
 // chain with more joints of the same spacing keeps its sizes; a mirrored copy
 // gets its twin's scale.
 //
+// A segment to a guide joint tagged `target` (a camera's aim target) is not
+// measured: how far away a rigger puts what something looks at says nothing of
+// the character's size.
+//
 // An instance whose segments say nothing (a single joint, or joints on one
 // point: a world, a COG, a camera) takes the scale of the nearest ancestor
 // that has one; a root with none takes the median of the whole guide's (the
@@ -37,7 +41,8 @@ double defaultSegment(const templates::TemplateManifest& manifest, const Builder
     for (const GuideJointSpec& spec : specs) {
         const bool inside = spec.parent >= 0 && std::size_t(spec.parent) < world.size();
         world.push_back((inside ? world[spec.parent] : Mat4(1.0)) * spec.local.matrix());
-        if (inside) {
+        const bool aimTarget = std::find(spec.tags.begin(), spec.tags.end(), "target") != spec.tags.end();
+        if (inside && !aimTarget) {
             sum += glm::length(translationOf(world.back()) - translationOf(world[spec.parent]));
             ++count;
         }
@@ -54,7 +59,7 @@ double segmentOf(const RigAssembly& a, const model::TemplateInstance& instance)
     double sum = 0.0;
     int count = 0;
     for (const auto& joint : instance.joints)
-        if (auto parent = at.find(joint.parent); parent != at.end()) {
+        if (auto parent = at.find(joint.parent); parent != at.end() && !joint.hasTag("target")) {
             sum += glm::length(at[joint.id] - parent->second);
             ++count;
         }
