@@ -152,10 +152,12 @@ TEST(VirtualParent, AttachesTheRootsToTheClosestNodeOfTheNamedInstanceOnTheSameB
         EXPECT_EQ(after->path.substr(0, 6), "neck::") << after->path;
         // The closest of the neck's controllers to the clavicle, none closer.
         const Vec3 at = translationOf(test::node(rig, "arm." + side + "::ctrls.clavicle").worldMatrix);
-        for (const auto& n : rig.nodes)
-            if (n.path.rfind("neck::ctrls.", 0) == 0)
+        for (const auto& n : rig.nodes) {
+            if (n.path.rfind("neck::ctrls.", 0) == 0) {
                 EXPECT_GE(glm::length(translationOf(n.worldMatrix) - at) + 1e-9,
                           glm::length(translationOf(after->worldMatrix) - at)) << n.path;
+            }
+        }
         // Pickwalk up follows it.
         const auto from = *rig.findPath("arm." + side + "::ctrls.clavicle");
         EXPECT_EQ(rig.nodes[eval::pickwalk(rig, from, eval::WalkDirection::Up)].path, after->path);
@@ -171,9 +173,11 @@ TEST(VirtualParent, AnUnknownInstanceOrALoopIsReportedAndTheUsualParentKept)
 
     const model::Rig loop = bipedWith("spine", "virtual_parent", "neck"); // the neck hangs below the spine
     EXPECT_TRUE(mentions(loop, "(a loop)")) << formatAll(loop.diagnostics);
-    for (const auto& n : usual.nodes)
-        if (n.path.rfind("spine::", 0) == 0 && n.virtualParent != model::kNoNode)
+    for (const auto& n : usual.nodes) {
+        if (n.path.rfind("spine::", 0) == 0 && n.virtualParent != model::kNoNode) {
             EXPECT_EQ(virtualParentOf(loop, n.path)->path, usual.nodes[n.virtualParent].path) << n.path;
+        }
+    }
 }
 
 TEST(VirtualParent, RenamingTheNamedInstanceKeepsTheLinkAndUndoRestoresIt)
