@@ -2,6 +2,7 @@
 // saved with the guide only when changed, read back with clear errors, and
 // edited in the session as undoable steps with a typed change event.
 #include "TestSupport.h"
+#include "core/StartedSession.h"
 
 #include "io/GuideFile.h"
 #include "session/Session.h"
@@ -60,17 +61,7 @@ TEST(BuildSettings, AnUnknownKindOrABadValueIsAnErrorAtItsLine)
 
 namespace {
 
-struct Started {
-    session::Session s{std::make_shared<templates::TemplateRegistry>(test::builtinTemplates())};
-    std::vector<Change> changes;
-    Started()
-    {
-        s.replaceDocument(test::loadSample("biped"));
-        s.build();
-        s.subscribe([this](const Change& c) { changes.push_back(c); });
-    }
-    const model::RigNode& node(const std::string& id) const { return test::node(*s.rig(), id); }
-};
+using Started = test::StartedSession;
 
 } // namespace
 

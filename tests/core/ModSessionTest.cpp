@@ -2,6 +2,7 @@
 // step each with a typed change event (Mods, naming the owner instance), and the
 // live rig follows.
 #include "ModsTestSupport.h"
+#include "core/StartedSession.h"
 
 #include "edit/ModEdits.h"
 #include "session/Session.h"
@@ -14,17 +15,7 @@ using edit::ChangeKind;
 
 namespace {
 
-struct Started {
-    session::Session s{std::make_shared<templates::TemplateRegistry>(test::builtinTemplates())};
-    std::vector<Change> changes;
-    Started()
-    {
-        s.replaceDocument(test::loadSample("biped"));
-        s.build();
-        s.subscribe([this](const Change& c) { changes.push_back(c); });
-    }
-    const model::RigNode& node(const std::string& id) const { return s.rig()->nodes[*s.rig()->findPath(id)]; }
-};
+using Started = test::StartedSession;
 
 } // namespace
 

@@ -2,6 +2,7 @@
 // change event, the live rig follows, and the channel box's "set as default",
 // "reset to default", "lock" and "limit" land in the guide's overrides.
 #include "TestSupport.h"
+#include "core/StartedSession.h"
 
 #include "edit/OverrideEdits.h"
 #include "eval/Channels.h"
@@ -17,15 +18,7 @@ namespace {
 
 const NodeKey kFk{4, "L", "ctrls.fk.0"};
 
-struct Started {
-    session::Session s{std::make_shared<templates::TemplateRegistry>(test::builtinTemplates())};
-    std::vector<Change> changes;
-    Started()
-    {
-        s.replaceDocument(test::loadSample("biped"));
-        s.build();
-        s.subscribe([this](const Change& c) { changes.push_back(c); });
-    }
+struct Started : test::StartedSession {
     int channel(const std::string& name) const
     {
         return *s.program()->channels().find(*s.rig()->find(kFk), name);
