@@ -237,8 +237,68 @@ Convention conventionFor(ExportPreset preset, bool fbx)
     return {};
 }
 
+namespace {
+
+// A Y-up file's root joints take a Z-up frame (Z up, Y back), as the roots of
+// Blender's and Unreal's skeletons do: an identity root points its +Y, the
+// bone axis Blender infers, straight at a hips joint above it, and Blender's
+// FBX importer then connects the hips to the root and ignores their location
+// curves. C = -90 degrees about X permutes the root's Y and Z axes, so
+// root' = root * C and child' = C^-1 * child keep every world transform,
+// with the root's scale's y and z swapped.
+void turnRootsUp(ExportScene& scene)
+{
+    const Mat4 turn = rotationMatrix(Vec3(1, 0, 0), glm::radians(-90.0));
+    const Mat4 back = glm::transpose(turn);
+    const Quat c = glm::quat_cast(Mat3(turn)), cInverse = glm::conjugate(c);
+    const Mat3 backRotation(back);
+    auto swapYz = [](const Vec3& v) { return Vec3(v.x, v.z, v.y); };
+    std::vector<int> role(scene.joints.size(), 0); // 1: a root, 2: a root's child
+    for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+        ExportJoint& joint = scene.joints[j];
+        if (joint.parent < 0) {
+            role[j] = 1;
+            joint.bindWorld = joint.bindWorld * turn;
+            joint.bindLocal = joint.bindLocal * turn;
+            joint.poseLocal = joint.poseLocal * turn;
+        } else if (scene.joints[std::size_t(joint.parent)].parent < 0) {
+            role[j] = 2;
+            joint.bindLocal = back * joint.bindLocal;
+            joint.poseLocal = back * joint.poseLocal;
+        }
+    }
+    for (auto& clip : scene.clips)
+        for (auto& track : clip.tracks) {
+            if (track.controller || role[std::size_t(track.node)] == 0)
+                continue;
+            if (role[std::size_t(track.node)] == 1) {
+                for (auto& r : track.rotations)
+                    r = r * c;
+                for (auto& r : track.rotationSlopes)
+                    r = r * c;
+                for (auto& s : track.scales)
+                    s = swapYz(s);
+                for (auto& s : track.scaleSlopes)
+                    s = swapYz(s);
+            } else {
+                for (auto& t : track.translations)
+                    t = backRotation * t;
+                for (auto& t : track.translationSlopes)
+                    t = backRotation * t;
+                for (auto& r : track.rotations)
+                    r = cInverse * r;
+                for (auto& r : track.rotationSlopes)
+                    r = cInverse * r;
+            }
+        }
+}
+
+} // namespace
+
 ExportScene converted(ExportScene scene, const Convention& convention)
 {
+    if (!convention.zUp)
+        turnRootsUp(scene);
     if (convention.unitsPerMetre == 1.0 && !convention.zUp)
         return scene;
     const double s = convention.unitsPerMetre;

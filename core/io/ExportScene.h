@@ -226,7 +226,12 @@ struct Convention {
 };
 Convention conventionFor(ExportPreset preset, bool fbx);
 // The scene in `convention`: every transform conjugated by the change of basis
-// (joints keep unit scale), vertices and translations scaled.
+// (joints keep unit scale), vertices and translations scaled. In a Y-up
+// convention the root joints are turned into a Z-up frame (-90 degrees about
+// X: Z up, Y back; their children's local transforms compensate, world
+// transforms are unchanged), so that no importer infers a root bone pointing
+// at the hips (Blender's FBX importer would connect them and drop the hips'
+// location curves); a Z-up file's roots keep their frame.
 ExportScene converted(ExportScene scene, const Convention& convention);
 
 // What the export holds, in the rig's convention, as JSON for the consumer

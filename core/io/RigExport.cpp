@@ -1,5 +1,6 @@
 #include "io/RigExport.h"
 
+#include "io/BoneInference.h"
 #include "io/FbxExport.h"
 #include "io/GltfExport.h"
 
@@ -62,6 +63,18 @@ Diagnostics exportRigOrThrow(const model::Rig& rig, const std::string& path, con
     fbxOptions.embedTextures = options.embedTextures;
     if (options.stampTime)
         fbxOptions.creationTime = std::time(nullptr);
+    if (fbx)
+        for (int j : connectedMovingJoints(scene)) {
+            const ExportJoint& joint = scene.joints[std::size_t(j)];
+            const ExportJoint& parent = scene.joints[std::size_t(joint.parent)];
+            Diagnostic d = makeWarning({path, 0, 0}, "Blender's FBX importer will connect joint '" + joint.name + "' to '" +
+                                                         parent.name + "' (it lies on the parent's +Y axis) and ignore its "
+                                                         "location curves: orient '" + parent.name +
+                                                         "' so that its Y axis does not point at its child (X along the chain)");
+            if (const auto node = rig.findPath(joint.id))
+                d.subject = Subject::ofNode(rig.nodes[*node].key);
+            prepared.report.push_back(std::move(d));
+        }
     Diagnostics written = fbx ? writeFbx(scene, path, convention, fbxOptions) : writeGltf(scene, path, options.generator);
     prepared.report.insert(prepared.report.end(), written.begin(), written.end());
     progress(1.0);
