@@ -116,9 +116,10 @@ public:
 // world.default, Mikan's default root: a world controller and a move
 // controller under it at the one guide joint, nothing else. It names the
 // spaces of the top of the file: `world` and `root` are the move control (or
-// the hook group), `ground` the world control, `move` the move control. With the `hook` option the children hang under a
-// group beside the controls that follows the move control (Mikan's
-// hook_move: a flat hierarchy), otherwise under the move control itself.
+// the hook group), `ground` the world control, `move` the move control. With
+// the `hook` option the children hang under a group beside the controls that
+// follows the move control (Mikan's hook_move: a flat hierarchy), otherwise
+// under the move control itself.
 class WorldDefaultBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
