@@ -10,7 +10,9 @@
 //     nodes (the bind pose stays in the inverse bind matrices), a range-of-motion
 //     clip exercising each controller in turn from the guide's test pose
 //     (io/RangeOfMotion.h plans it; joint tracks are sampled from the
-//     evaluator, eval::RigProgram, at its keys).
+//     evaluator, eval::RigProgram, at its keys);
+//  5. the rig's cameras (util.camera: io/ExportCamera.h) at the scene root,
+//     sampled in every clip like joints, never part of the skeleton.
 // The scene is in the rig's convention (metres, Y-up); writers convert it to
 // the file's with converted().
 #include "base/Diagnostic.h"

@@ -12,7 +12,9 @@
 // a half frame's chord instead of cutting straight between authored keys.
 // The clip's flags (ExportTrack::animated / held) say which properties get a curve node, as they say which channels glTF
 // gets; within one, a component whose keys all equal the node's own value is
-// omitted (importers fall back to that value). One Take per clip.
+// omitted (importers fall back to that value). A camera's track plays its
+// model (the frame turned to FBX's +X look) and, when its lens changes or
+// differs, a FocalLength curve node on its Camera attribute. One Take per clip.
 #include "io/FbxAnimation.h"
 #include "io/FbxDocument.h"
 
