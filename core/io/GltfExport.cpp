@@ -246,7 +246,7 @@ std::vector<std::size_t> keptKeys(const std::vector<float>& values, std::size_t 
 // up, as the rig's camera frame does, so the node takes the frame as it is.
 // yfov from the lens across the film's height; the lens in extras (glTF core
 // has no focal length, and cannot animate a camera's yfov).
-int addCamera(tinygltf::Model& m, const ExportCamera& source)
+int addCamera(tinygltf::Model& m, const ExportCamera& source, Diagnostics& report)
 {
     tinygltf::Camera camera;
     camera.name = source.name;
@@ -255,6 +255,12 @@ int addCamera(tinygltf::Model& m, const ExportCamera& source)
     camera.perspective.yfov = verticalFieldOfView(source, source.focalLength);
     camera.perspective.znear = source.nearClip;
     camera.perspective.zfar = source.farClip;
+    if (!(source.farClip > source.nearClip)) { // glTF needs zfar > znear (tinygltf always writes zfar)
+        camera.perspective.zfar = 1000.0 * source.nearClip;
+        report.push_back(makeWarning({}, "camera '" + source.name + "': its far clip (" + std::to_string(source.farClip) +
+                                             ") is not beyond its near clip (" + std::to_string(source.nearClip) +
+                                             "); the glTF's far plane is 1000 times the near clip"));
+    }
     m.cameras.push_back(camera);
     tinygltf::Node node;
     node.name = source.name;
@@ -403,7 +409,7 @@ tinygltf::Model buildModel(const ExportScene& scene, const std::string& generato
 
     const int firstCamera = int(m.nodes.size());
     for (const auto& camera : scene.cameras)
-        root.nodes.push_back(addCamera(m, camera));
+        root.nodes.push_back(addCamera(m, camera, report));
 
     // Inverse bind matrices, column-major MAT4 float (no bufferView target).
     std::vector<float> ibms;
