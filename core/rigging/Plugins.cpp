@@ -27,9 +27,10 @@ public:
     }
 };
 
-// The rig's cameras (util.camera's view node: it looks down its -Z with +Y
-// up, aimed and rolled, and its controller carries the lens attributes),
-// the set "cameras" that exports write as real cameras (io/ExportCamera.h).
+// The rig's cameras (util.camera's view node, tag `camera`: it looks down its
+// -Z with +Y up, aimed and rolled, and its controller carries the lens
+// attributes), the set "cameras" that exports write as real cameras
+// (io/ExportCamera.h), in node order.
 class CameraSetPlugin final : public GeneratorPlugin {
 public:
     const char* name() const override { return "camera set"; }
@@ -38,7 +39,8 @@ public:
         auto& set = a.rig.sets["cameras"];
         set.clear();
         for (const InstanceRecord& r : a.records) {
-            if (!r.built || !r.manifest || r.manifest->id != "util.camera")
+            // util.camera, or a template built by its builder (based on it)
+            if (!r.built || !r.manifest || (r.manifest->id != "util.camera" && r.manifest->base != "util.camera"))
                 continue;
             const CopyKey copy = a.copyOf(r.instance->id).key();
             if (const auto node = a.rig.find(NodeKey{copy.instance, copy.branch, "camera"}))
