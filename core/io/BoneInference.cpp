@@ -10,7 +10,7 @@ std::vector<int> connectedMovingJoints(const ExportScene& scene)
     std::vector<bool> translated(n, false);
     for (const ExportClip& clip : scene.clips)
         for (const ExportTrack& track : clip.tracks)
-            if (!track.controller && ((track.animated | track.held) & kTranslationChannel))
+            if (track.isJoint() && ((track.animated | track.held) & kTranslationChannel))
                 translated[std::size_t(track.node)] = true;
     std::vector<double> meanChildDistance(n, 0.0);
     std::vector<int> childCount(n, 0);

@@ -15,13 +15,6 @@ namespace rs::io {
 
 namespace {
 
-ExportTrack emptyTrack(int node, bool controller)
-{
-    ExportTrack track;
-    track.node = node;
-    track.controller = controller;
-    return track;
-}
 
 constexpr double kSameTranslation = 1e-6; // metres
 constexpr double kSameRotation = 1e-6;    // quaternion component
@@ -47,8 +40,38 @@ struct Sampler {
         const int parent = scene.controllers[c].parent;
         const Mat4 w = state.worldMatrix(nodes.controllers[c]);
         return parent < 0 ? w : glm::inverse(state.worldMatrix(nodes.controllers[std::size_t(parent)])) * w;
+    }    // Cameras sit at the scene root: their local transform is their frame.
+    Mat4 cameraWorld(std::size_t c, const eval::EvalState& state) const
+    {
+        return cameraFrame(state.worldMatrix(nodes.cameras.views[c]));
     }
 };
+
+// The transform a track's node is written with (what constant channels equal).
+const Mat4& writtenTransform(const ExportScene& scene, const ExportTrack& track)
+{
+    const std::size_t n = std::size_t(track.node);
+    return track.camera ? scene.cameras[n].poseWorld
+                        : track.controller ? scene.controllers[n].poseLocal : scene.joints[n].poseLocal;
+}
+
+// The tracks of a clip before sampling: joints, controllers, then cameras (a Sample's order).
+std::vector<ExportTrack> emptyTracks(const ExportScene& scene)
+{
+    std::vector<ExportTrack> tracks;
+    auto add = [&](std::size_t count, bool controller, bool camera) {
+        for (std::size_t n = 0; n < count; ++n) {
+            ExportTrack& track = tracks.emplace_back();
+            track.node = int(n);
+            track.controller = controller;
+            track.camera = camera;
+        }
+    };
+    add(scene.joints.size(), false, false);
+    add(scene.controllers.size(), true, false);
+    add(scene.cameras.size(), false, true);
+    return tracks;
+}
 
 bool sameVec(const Vec3& a, const Vec3& b, double tolerance)
 {
@@ -78,11 +101,35 @@ void markChannels(ExportTrack& track, const Mat4& written)
     mark(kScaleChannel, track.scales, [](const Vec3& a, const Vec3& b) { return sameVec(a, b, kSameScale); }, s);
 }
 
-// One sampled time of a clip: every scene node's local transform (joints, then controllers).
+// A camera track's lens: animated when its focal length changes, held when it
+// differs from the camera's own.
+void markLens(ExportTrack& track, const ExportCamera& camera)
+{
+    constexpr double kSameFocalLength = 1e-6; // millimetres
+    const auto& f = track.focalLengths;
+    if (f.empty())
+        return;
+    const auto [low, high] = std::minmax_element(f.begin(), f.end());
+    if (*high - *low > kSameFocalLength)
+        track.animated |= kLensChannel;
+    else if (std::abs(f.front() - camera.focalLength) > kSameFocalLength)
+        track.held |= kLensChannel;
+}
+
+void markTrack(ExportTrack& track, const ExportScene& scene)
+{
+    markChannels(track, writtenTransform(scene, track));
+    if (track.camera)
+        markLens(track, scene.cameras[std::size_t(track.node)]);
+}
+
+// One sampled time of a clip: every scene node's local transform (joints,
+// controllers, then cameras) and each camera's focal length.
 struct Sample {
     double frame = 0.0;
     std::vector<Vec3> translations, scales;
     std::vector<Quat> rotations;
+    std::vector<double> focalLengths;
 };
 
 // One key on every track of `clip`, each rotation on the hemisphere of the
@@ -97,6 +144,8 @@ void appendSample(ExportClip& clip, const Sample& sample)
         track.translations.push_back(sample.translations[n]);
         track.rotations.push_back(r);
         track.scales.push_back(sample.scales[n]);
+        if (track.camera)
+            track.focalLengths.push_back(sample.focalLengths[std::size_t(track.node)]);
     }
 }
 
@@ -107,14 +156,21 @@ Sample sampleAt(double frame, const eval::Pose& pose, const eval::RigProgram& pr
     Sample out;
     out.frame = frame;
     const std::size_t joints = sampler.scene.joints.size(), controllers = sampler.scene.controllers.size();
-    for (std::size_t n = 0; n < joints + controllers; ++n) {
+    const std::size_t cameras = sampler.scene.cameras.size();
+    for (std::size_t n = 0; n < joints + controllers + cameras; ++n) {
         Vec3 t, s;
         Quat r;
-        decompose(n < joints ? sampler.jointLocal(n, state) : sampler.controllerLocal(n - joints, state), t, r, s);
+        decompose(n < joints                 ? sampler.jointLocal(n, state)
+                  : n < joints + controllers ? sampler.controllerLocal(n - joints, state)
+                                             : sampler.cameraWorld(n - joints - controllers, state),
+                  t, r, s);
         out.translations.push_back(t);
         out.rotations.push_back(r);
         out.scales.push_back(s);
     }
+    for (std::size_t c = 0; c < cameras; ++c)
+        out.focalLengths.push_back(focalLengthIn(program, pose, sampler.nodes.cameras.lenses[c],
+                                                 sampler.scene.cameras[c].focalLength));
     return out;
 }
 
@@ -150,6 +206,8 @@ Sample halfWay(const Sample& a, const Sample& b)
         const Quat end = glm::dot(a.rotations[n], b.rotations[n]) < 0.0 ? -b.rotations[n] : b.rotations[n];
         out.rotations.push_back(glm::normalize(glm::slerp(a.rotations[n], end, 0.5)));
     }
+    for (std::size_t c = 0; c < a.focalLengths.size(); ++c)
+        out.focalLengths.push_back(0.5 * (a.focalLengths[c] + b.focalLengths[c]));
     return out;
 }
 
@@ -198,10 +256,7 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
     clip.name = name;
     clip.framesPerSecond = framesPerSecond;
     const ExportScene& scene = sampler.scene;
-    for (std::size_t j = 0; j < scene.joints.size(); ++j)
-        clip.tracks.push_back(emptyTrack(int(j), false));
-    for (std::size_t c = 0; c < scene.controllers.size(); ++c)
-        clip.tracks.push_back(emptyTrack(int(c), true));
+    clip.tracks = emptyTracks(scene);
     const int step = framesPerKey(framesPerSecond);
     eval::EvalState state = program.makeState();
     std::vector<Sample> samples;
@@ -216,8 +271,7 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
     }
     std::vector<ExportTrack> kept;
     for (auto& track : clip.tracks) {
-        markChannels(track, track.controller ? scene.controllers[std::size_t(track.node)].poseLocal
-                                             : scene.joints[std::size_t(track.node)].poseLocal);
+        markTrack(track, scene);
         if (track.animated | track.held)
             kept.push_back(std::move(track));
     }
@@ -306,10 +360,7 @@ ExportClip keyedClip(const model::Rig& rig, const KeyedClip& keyed, const eval::
     clip.framesPerSecond = framesPerSecond; // where the FBX keys its cubic curves
     clip.times = keyed.times;
     const ExportScene& scene = sampler.scene;
-    for (std::size_t j = 0; j < scene.joints.size(); ++j)
-        clip.tracks.push_back(emptyTrack(int(j), false));
-    for (std::size_t c = 0; c < scene.controllers.size(); ++c)
-        clip.tracks.push_back(emptyTrack(int(c), true));
+    clip.tracks = emptyTracks(scene);
     eval::EvalState state = program.makeState();
     for (std::size_t k = 0; k < keyed.poses.size(); ++k) {
         const Sample sample = sampleAt(keyed.times[k], eval::poseFromValues(rig, program.channels(), keyed.poses[k]),
@@ -318,11 +369,10 @@ ExportClip keyedClip(const model::Rig& rig, const KeyedClip& keyed, const eval::
     }
     std::vector<ExportTrack> kept;
     for (auto& track : clip.tracks) {
-        markChannels(track, track.controller ? scene.controllers[std::size_t(track.node)].poseLocal
-                                             : scene.joints[std::size_t(track.node)].poseLocal);
+        markTrack(track, scene);
         if (!(track.animated | track.held))
             continue;
-        track.cubic = track.animated;
+        track.cubic = track.animated & kAllChannels; // a lens is keyed linearly
         track.translationSlopes = splineSlopes(track.translations, clip.times);
         track.rotationSlopes = splineSlopes(track.rotations, clip.times);
         track.scaleSlopes = splineSlopes(track.scales, clip.times);
@@ -351,6 +401,16 @@ T valueAt(const std::vector<T>& values, const std::vector<T>& slopes, bool cubic
     if (cubic)
         return hermite(values[k], slopes[k], values[k + 1], slopes[k + 1], times[k], times[k + 1], t);
     return linear(values[k], values[k + 1], (t - times[k]) / (times[k + 1] - times[k]));
+}
+
+// The cameras where `pose` (evaluated in `state`) puts them, with its lens.
+void placeCameras(const eval::RigProgram& program, const eval::Pose& pose, const Sampler& sampler,
+                  const eval::EvalState& state, ExportScene& scene)
+{
+    for (std::size_t c = 0; c < scene.cameras.size(); ++c) {
+        scene.cameras[c].poseWorld = sampler.cameraWorld(c, state);
+        applyLens(scene.cameras[c], program, pose, sampler.nodes.cameras.lenses[c]);
+    }
 }
 
 } // namespace
@@ -388,6 +448,7 @@ bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::
         for (std::size_t c = 0; c < scene.controllers.size(); ++c)
             if (const Mat4 local = sampler.controllerLocal(c, state); maxAbsDifference(local, scene.controllers[c].poseLocal) > 1e-9)
                 scene.controllers[c].poseLocal = local;
+        placeCameras(program, program.channels().defaults(), sampler, state, scene);
     } else {
         eval::EvalState state = program.makeState();
         program.evaluate(eval::poseFromValues(rig, program.channels(), *options.pose), state);
@@ -395,6 +456,7 @@ bool addMotion(const model::Rig& rig, const ExportOptions& options, const eval::
             scene.joints[j].poseLocal = sampler.jointLocal(j, state);
         for (std::size_t c = 0; c < scene.controllers.size(); ++c)
             scene.controllers[c].poseLocal = sampler.controllerLocal(c, state);
+        placeCameras(program, eval::poseFromValues(rig, program.channels(), *options.pose), sampler, state, scene);
     }
     auto addKeyed = [&] {
         if (options.keyedClips)

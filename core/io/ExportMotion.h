@@ -8,15 +8,17 @@
 // and Euler-curve players (three.js, Blender, Assimp, FBX importers) all play
 // the same motion between keys.
 #include "eval/RigProgram.h"
+#include "io/ExportCamera.h"
 #include "io/ExportScene.h"
 
 #include <vector>
 
 namespace rs::io {
 
-// The rig nodes the scene's joints and controllers are (kNoNode: a joint the preset added).
+// The rig nodes the scene's joints, controllers and cameras are (kNoNode: a joint the preset added).
 struct SceneNodes {
     std::vector<model::RigNodeIndex> joints, controllers;
+    CameraNodes cameras;
 };
 
 // Puts the rig's default values (or options.pose) on the nodes and adds the

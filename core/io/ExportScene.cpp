@@ -1,6 +1,7 @@
 #include "io/ExportScene.h"
 
 #include "eval/RigProgram.h"
+#include "io/ExportCamera.h"
 #include "io/ExportCheck.h"
 #include "io/ExportMotion.h"
 #include "io/HumanoidMap.h"
@@ -221,6 +222,7 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
         nodes.joints.push_back(joint.node);
     if (options.controllers)
         addControllers(rig, options.pose, scene, nodes.controllers);
+    addCameras(rig, scene, nodes.cameras);
     // Compiled for the pose, the clips and the default values the nodes rest
     // in; a rig that does not evaluate exports its build rest unless a pose or
     // a clip was asked for.
@@ -281,7 +283,7 @@ void turnRootsUp(ExportScene& scene)
     }
     for (auto& clip : scene.clips)
         for (auto& track : clip.tracks) {
-            if (track.controller || role[std::size_t(track.node)] == 0)
+            if (track.controller || track.camera || role[std::size_t(track.node)] == 0)
                 continue;
             if (role[std::size_t(track.node)] == 1) {
                 for (auto& r : track.rotations)
@@ -328,6 +330,14 @@ ExportScene converted(ExportScene scene, const Convention& convention)
             if (channel == "tx" || channel == "ty" || channel == "tz")
                 value *= s;
     }
+    // A camera keeps its own axes (it looks down its -Z): the basis turns its
+    // frame, it does not conjugate it.
+    for (auto& camera : scene.cameras) {
+        camera.poseWorld = basis * camera.poseWorld;
+        camera.poseWorld[3] = Vec4(Vec3(camera.poseWorld[3]) * s, 1.0);
+        camera.nearClip *= s;
+        camera.farClip *= s;
+    }
     const glm::mat3 rotation = glm::mat3(Mat3(basis));
     for (auto& mesh : scene.meshes) {
         for (auto& p : mesh.positions)
@@ -340,7 +350,7 @@ ExportScene converted(ExportScene scene, const Convention& convention)
             for (auto& t : track.translations)
                 t = Mat3(basis) * t * s;
             for (auto& r : track.rotations)
-                r = q * r * glm::conjugate(q);
+                r = track.camera ? q * r : q * r * glm::conjugate(q);
             for (auto& sc : track.scales)
                 sc = glm::abs(Mat3(basis) * sc);
             // Slopes change as their values do (scales are positive: the
@@ -348,7 +358,7 @@ ExportScene converted(ExportScene scene, const Convention& convention)
             for (auto& t : track.translationSlopes)
                 t = Mat3(basis) * t * s;
             for (auto& r : track.rotationSlopes)
-                r = q * r * glm::conjugate(q);
+                r = track.camera ? q * r : q * r * glm::conjugate(q);
             const Vec3 signs = glm::sign(Mat3(basis) * Vec3(1.0));
             for (auto& sc : track.scaleSlopes)
                 sc = signs * (Mat3(basis) * sc);
@@ -388,13 +398,14 @@ std::string exportReferenceJson(const ExportScene& scene)
             bool changes = false;
             for (const auto& s : track.scales)
                 changes = changes || glm::length(s - track.scales.front()) > 1e-5;
-            if (changes && !track.controller)
+            if (changes && !track.controller && !track.camera)
                 scaled.push_back(scene.joints[std::size_t(track.node)].name);
         }
         clips.push_back({{"name", clip.name}, {"seconds", clip.times.empty() ? 0.0 : clip.times.back()}, {"scaled", std::move(scaled)}});
     }
     // A forced export may carry names that are not UTF-8: replaced, never thrown.
-    return json{{"joints", std::move(joints)}, {"meshes", std::move(meshes)}, {"clips", std::move(clips)}}.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+    return json{{"joints", std::move(joints)}, {"meshes", std::move(meshes)}, {"clips", std::move(clips)},
+                {"cameras", camerasJson(scene)}}.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 } // namespace rs::io

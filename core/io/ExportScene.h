@@ -10,7 +10,9 @@
 //     nodes (the bind pose stays in the inverse bind matrices), a range-of-motion
 //     clip exercising each controller in turn from the guide's test pose
 //     (io/RangeOfMotion.h plans it; joint tracks are sampled from the
-//     evaluator, eval::RigProgram, at its keys).
+//     evaluator, eval::RigProgram, at its keys);
+//  5. the rig's cameras (util.camera: io/ExportCamera.h) at the scene root,
+//     sampled in every clip like joints, never part of the skeleton.
 // The scene is in the rig's convention (metres, Y-up); writers convert it to
 // the file's with converted().
 #include "base/Diagnostic.h"
@@ -137,12 +139,35 @@ struct ExportController {
     std::vector<Attribute> attributes;
 };
 
+// A camera of the rig (the rig set "cameras": each util.camera instance's
+// view node, io/ExportCamera.h), written at the scene root as a glTF camera
+// node or an FBX Camera model, never as a joint. Its frame looks down its -Z
+// with +Y up (glTF's and the rig's camera convention; the FBX writer turns it
+// to FBX's +X look), unit scale. Lens values are the camera controller's
+// attributes at the pose the file rests in.
+struct ExportCamera {
+    std::string name;
+    std::string id;                  // rig node id (RigNode::path)
+    Mat4 poseWorld{1.0};             // rotation and translation only
+    double focalLength = 50.0;       // millimetres
+    double filmWidth = 1.28;         // film back (horizontal aperture), inches
+    double filmHeight = 0.72;        // inches
+    double nearClip = 0.01;          // file units once converted()
+    double farClip = 1000.0;
+    bool orthographic = false;       // written as a perspective camera (see io/README.md)
+};
+// The camera's field of view in radians at `focalLength` millimetres: across
+// the film's height (glTF's yfov) or width (FBX FieldOfView).
+double verticalFieldOfView(const ExportCamera& camera, double focalLength);
+double horizontalFieldOfView(const ExportCamera& camera, double focalLength);
+
 // Bits of ExportTrack::animated / held.
 enum ExportChannel : unsigned {
     kTranslationChannel = 1u,
     kRotationChannel = 2u,
     kScaleChannel = 4u,
     kAllChannels = 7u,
+    kLensChannel = 8u, // a camera track's focal length (ExportTrack::focalLengths)
 };
 
 // Sampled local transforms of one node per clip time.
@@ -172,6 +197,15 @@ struct ExportTrack {
     std::vector<Vec3> translationSlopes;
     std::vector<Quat> rotationSlopes;
     std::vector<Vec3> scaleSlopes;
+    // Added for cameras: the track moves ExportScene::cameras[node] (its world
+    // transform: cameras sit at the scene root; `controller` is false), with
+    // its focal length (millimetres) at each time, animated (kLensChannel)
+    // when the lens attribute changes. glTF core cannot animate a camera's
+    // yfov; FBX writes a FocalLength curve.
+    bool camera = false;
+    std::vector<double> focalLengths;
+
+    bool isJoint() const { return !controller && !camera; }
 };
 
 // The value of a cubic channel at `time` between keys `k` and `k + 1` (glTF's
@@ -219,6 +253,7 @@ struct ExportScene {
     std::string name;
     std::vector<ExportJoint> joints; // parents first
     std::vector<ExportController> controllers; // parents first
+    std::vector<ExportCamera> cameras;
     std::vector<SkinnedMesh> meshes; // joint indices into `joints`
     std::vector<ExportMaterial> materials; // indexed by SkinnedMesh::material
     std::vector<ExportClip> clips;
@@ -253,7 +288,9 @@ ExportScene converted(ExportScene scene, const Convention& convention);
 // What the export holds, in the rig's convention, as JSON for the consumer
 // checks (tests/tools): joints with name, parent and head, and each mesh's
 // vertices with their weights by joint name, and each clip's name, length in
-// seconds and the joints whose scale changes in it.
+// seconds and the joints whose scale changes in it; each camera's name, lens
+// and world position and look direction (-Z) at rest and at a few of each
+// clip's key times (ExportCamera.cpp).
 std::string exportReferenceJson(const ExportScene& scene);
 
 } // namespace rs::io

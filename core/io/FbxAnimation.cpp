@@ -12,7 +12,9 @@
 // a half frame's chord instead of cutting straight between authored keys.
 // The clip's flags (ExportTrack::animated / held) say which properties get a curve node, as they say which channels glTF
 // gets; within one, a component whose keys all equal the node's own value is
-// omitted (importers fall back to that value). One Take per clip.
+// omitted (importers fall back to that value). A camera's track plays its
+// model (the frame turned to FBX's +X look) and, when its lens changes or
+// differs, a FocalLength curve node on its Camera attribute. One Take per clip.
 #include "io/FbxAnimation.h"
 #include "io/FbxDocument.h"
 
@@ -216,6 +218,54 @@ void addTrack(Document& doc, std::int64_t layer, std::int64_t model, const Mat4&
     addProperty(doc, layer, model, times, scaling, kScaleChannel, track);
 }
 
+// A camera's track as its FBX model plays it: each key's frame turned to
+// FBX's +X look (right-multiplied: key to key continuity is kept).
+ExportTrack fbxCameraTrack(ExportTrack track)
+{
+    const Quat turn = fbxCameraTurn();
+    for (auto& r : track.rotations)
+        r = r * turn;
+    for (auto& r : track.rotationSlopes)
+        r = r * turn;
+    return track;
+}
+
+// The camera's focal length (millimetres) as a FocalLength curve on its
+// NodeAttribute (what Blender's importer animates the lens from; Assimp
+// reads no camera animation), linear keys.
+void addLensCurve(Document& doc, std::int64_t layer, std::int64_t attribute, const ExportCamera& camera,
+                  const ExportTrack& track, const std::vector<std::int64_t>& times)
+{
+    const bool animated = (track.animated & kLensChannel) != 0;
+    if ((!animated && !(track.held & kLensChannel)) || track.focalLengths.empty())
+        return;
+    const std::int64_t node = doc.newId(), curve = doc.newId();
+    Node& curveNode = doc.addObject("AnimationCurveNode", node, "FocalLength", "AnimCurveNode", "");
+    curveNode.child("Properties70").child("P").addString("d|FocalLength").addString("Number").addString("")
+        .addString("A").addDouble(camera.focalLength);
+    doc.connect(node, layer);
+    doc.connect(node, attribute, "FocalLength");
+    std::vector<float> values;
+    for (double f : track.focalLengths)
+        values.push_back(float(f));
+    std::vector<std::int64_t> keyTimes = times;
+    if (!animated) {
+        values.resize(1);
+        keyTimes.resize(1);
+    }
+    Node& c = doc.addObject("AnimationCurve", curve, "", "AnimCurve", "");
+    c.child("Default").addDouble(camera.focalLength);
+    c.child("KeyVer").addInt32(4008);
+    c.child("KeyTime").addInt64s(keyTimes);
+    c.child("KeyValueFloat").addFloats(values);
+    const std::int32_t flags = kLinearKeys, refCount = std::int32_t(values.size());
+    const float data[4] = {0.f, 0.f, std::bit_cast<float>(kDefaultTangentWeights), 0.f};
+    c.child("KeyAttrFlags").addInt32s({&flags, 1});
+    c.child("KeyAttrDataFloat").addFloats(data);
+    c.child("KeyAttrRefCount").addInt32s({&refCount, 1});
+    doc.connect(curve, node, "d|FocalLength");
+}
+
 } // namespace
 
 void addClips(Document& doc, const ExportScene& scene, const ModelIds& ids, Node& takes)
@@ -238,7 +288,12 @@ void addClips(Document& doc, const ExportScene& scene, const ModelIds& ids, Node
         doc.connect(layer, stack);
         for (const ExportTrack& track : clip.tracks) {
             const std::size_t node = std::size_t(track.node);
-            if (track.controller)
+            if (track.camera) {
+                const ExportCamera& camera = scene.cameras[node];
+                addTrack(doc, layer, ids.cameras[node], camera.poseWorld * glm::mat4_cast(fbxCameraTurn()),
+                         fbxCameraTrack(track), clip, times);
+                addLensCurve(doc, layer, ids.cameraAttributes[node], camera, track, times);
+            } else if (track.controller)
                 addTrack(doc, layer, ids.controllers[node], scene.controllers[node].poseLocal, track, clip, times);
             else
                 addTrack(doc, layer, ids.joints[node], scene.joints[node].poseLocal, track, clip, times);

@@ -51,7 +51,14 @@ std::vector<double> matrixArray(const Mat4& m);
 // animation (FbxAnimation.cpp) targets.
 struct ModelIds {
     std::vector<std::int64_t> joints, controllers;
+    std::vector<std::int64_t> cameras, cameraAttributes; // Camera models and their NodeAttributes
 };
+
+// FBX cameras look down their +X with +Y up, the rig's down their -Z: a
+// camera's model is its frame turned +90 degrees about its own Y (model X =
+// frame -Z), which Blender's importer (MAT_CONVERT_CAMERA) and Assimp (look
+// at +X) undo.
+Quat fbxCameraTurn();
 
 // Skeleton (LimbNode models and attributes), controllers (Null models with
 // their user properties), meshes with geometry, skin, clusters, materials,

@@ -13,7 +13,9 @@
 //    (an armature imports with or without a mesh), at its current pose
 //    (poseLocal; Lcl Translation, Lcl Rotation as XYZ Euler degrees, Lcl
 //    Scaling); controllers `Null` Models with user properties rig_kind,
-//    rig_id, rig_shape; each mesh a Mesh Model at the origin with its Geometry
+//    rig_id, rig_shape; each camera a `Camera` Model (its frame turned to
+//    FBX's +X look) with a Camera NodeAttribute (lens, film back, clip
+//    planes: io/FbxScene.cpp); each mesh a Mesh Model at the origin with its Geometry
 //    (Vertices, PolygonVertexIndex with the negated last index, normals by
 //    vertex, UVs by polygon vertex, one material for all), a Skin Deformer
 //    with one Cluster per weighing joint (Indexes, Weights, Transform =

@@ -193,6 +193,45 @@ std::vector<std::int64_t> addMaterials(Document& doc, const ExportScene& scene, 
     return ids;
 }
 
+// A camera: a `Camera` Model (the frame turned to FBX's +X look) with its
+// Camera NodeAttribute: the lens as Blender's exporter writes it (focal
+// length in mm, film back in inches, FieldOfView across the film's width in
+// degrees, which Assimp reads), clip planes in file units, perspective.
+void addCamera(Document& doc, const ExportCamera& camera, ModelIds& ids)
+{
+    const std::int64_t model = addModel(doc, camera.name, "Camera", camera.poseWorld * glm::mat4_cast(fbxCameraTurn()));
+    const std::int64_t id = doc.newId();
+    Node& attribute = doc.addObject("NodeAttribute", id, camera.name, "NodeAttribute", "Camera");
+    Node& p70 = attribute.child("Properties70");
+    const double width = camera.filmWidth, height = camera.filmHeight;
+    propertyVector(p70, "Position", "Vector", Vec3(0.0), "");
+    propertyVector(p70, "UpVector", "Vector", Vec3(0.0, 1.0, 0.0), "");
+    propertyVector(p70, "InterestPosition", "Vector", Vec3(1.0, 0.0, 0.0), "");
+    propertyInt(p70, "AspectRatioMode", "enum", 0); // window size
+    propertyDouble(p70, "AspectWidth", width);
+    propertyDouble(p70, "AspectHeight", height);
+    propertyDouble(p70, "FilmWidth", width);
+    propertyDouble(p70, "FilmHeight", height);
+    propertyDouble(p70, "FilmAspectRatio", width / height);
+    propertyInt(p70, "ApertureMode", "enum", 3); // focal length
+    propertyInt(p70, "GateFit", "enum", 2);      // horizontal
+    p70.child("P").addString("FieldOfView").addString("FieldOfView").addString("").addString("A")
+        .addDouble(glm::degrees(horizontalFieldOfView(camera, camera.focalLength)));
+    p70.child("P").addString("FocalLength").addString("Number").addString("").addString("A").addDouble(camera.focalLength);
+    propertyDouble(p70, "NearPlane", camera.nearClip);
+    propertyDouble(p70, "FarPlane", camera.farClip);
+    propertyInt(p70, "CameraProjectionType", "enum", 0); // perspective
+    attribute.child("TypeFlags").addString("Camera");
+    attribute.child("GeometryVersion").addInt32(124);
+    attribute.child("Position").addDouble(0.0).addDouble(0.0).addDouble(0.0);
+    attribute.child("Up").addDouble(0.0).addDouble(1.0).addDouble(0.0);
+    attribute.child("LookAt").addDouble(1.0).addDouble(0.0).addDouble(0.0);
+    doc.connect(id, model);
+    doc.connect(model, 0);
+    ids.cameras.push_back(model);
+    ids.cameraAttributes.push_back(id);
+}
+
 void addBindPose(Document& doc, const ExportScene& scene, const std::vector<std::int64_t>& jointModels,
                  const std::vector<std::int64_t>& meshModels)
 {
@@ -213,6 +252,8 @@ void addBindPose(Document& doc, const ExportScene& scene, const std::vector<std:
 }
 
 } // namespace
+
+Quat fbxCameraTurn() { return glm::angleAxis(glm::radians(90.0), Vec3(0.0, 1.0, 0.0)); }
 
 std::vector<std::string> imageFileNames(const ExportScene& scene)
 {
@@ -258,6 +299,8 @@ ModelIds addSceneObjects(Document& doc, const ExportScene& scene, bool embedText
         doc.connect(id, controller.parent < 0 ? 0 : ids.controllers[std::size_t(controller.parent)]);
         ids.controllers.push_back(id);
     }
+    for (const ExportCamera& camera : scene.cameras)
+        addCamera(doc, camera, ids);
     const std::vector<std::int64_t> materials = addMaterials(doc, scene, embedTextures);
     std::vector<std::int64_t> meshModels;
     for (const SkinnedMesh& mesh : scene.meshes) {

@@ -258,7 +258,41 @@ std::vector<std::size_t> keptKeys(const std::vector<float>& values, std::size_t 
     return kept;
 }
 
-void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int firstController)
+// A camera node at the scene root: glTF's cameras look down their -Z with +Y
+// up, as the rig's camera frame does, so the node takes the frame as it is.
+// yfov from the lens across the film's height; the lens in extras (glTF core
+// has no focal length, and cannot animate a camera's yfov).
+int addCamera(tinygltf::Model& m, const ExportCamera& source, Diagnostics& report)
+{
+    tinygltf::Camera camera;
+    camera.name = source.name;
+    camera.type = "perspective";
+    camera.perspective.aspectRatio = source.filmWidth / source.filmHeight;
+    camera.perspective.yfov = verticalFieldOfView(source, source.focalLength);
+    camera.perspective.znear = source.nearClip;
+    camera.perspective.zfar = source.farClip;
+    if (!(source.farClip > source.nearClip)) { // glTF needs zfar > znear (tinygltf always writes zfar)
+        camera.perspective.zfar = 1000.0 * source.nearClip;
+        report.push_back(makeWarning({}, "camera '" + source.name + "': its far clip (" + std::to_string(source.farClip) +
+                                             ") is not beyond its near clip (" + std::to_string(source.nearClip) +
+                                             "); the glTF's far plane is 1000 times the near clip"));
+    }
+    m.cameras.push_back(camera);
+    tinygltf::Node node;
+    node.name = source.name;
+    node.camera = int(m.cameras.size() - 1);
+    setTrs(node, source.poseWorld);
+    node.extras = tinygltf::Value(tinygltf::Value::Object{
+        {"rig", tinygltf::Value(tinygltf::Value::Object{{"kind", tinygltf::Value(std::string("camera"))},
+                                                        {"id", tinygltf::Value(source.id)},
+                                                        {"focal_length", tinygltf::Value(source.focalLength)},
+                                                        {"film_width", tinygltf::Value(source.filmWidth)},
+                                                        {"film_height", tinygltf::Value(source.filmHeight)}})}});
+    m.nodes.push_back(node);
+    return int(m.nodes.size() - 1);
+}
+
+void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int firstController, int firstCamera)
 {
     tinygltf::Animation animation;
     animation.name = clip.name;
@@ -308,7 +342,7 @@ void addClip(tinygltf::Model& m, GltfBuilder& b, const ExportClip& clip, int fir
         animation.channels.push_back(c);
     };
     for (const auto& track : clip.tracks) {
-        const int node = track.controller ? firstController + track.node : track.node;
+        const int node = track.camera ? firstCamera + track.node : track.controller ? firstController + track.node : track.node;
         auto vec3s = [](const std::vector<Vec3>& from) {
             std::vector<float> out;
             for (const Vec3& v : from)
@@ -389,6 +423,10 @@ tinygltf::Model buildModel(const ExportScene& scene, const std::string& generato
         (parent < 0 ? root.nodes : m.nodes[std::size_t(firstController + parent)].children).push_back(firstController + int(i));
     }
 
+    const int firstCamera = int(m.nodes.size());
+    for (const auto& camera : scene.cameras)
+        root.nodes.push_back(addCamera(m, camera, report));
+
     // Inverse bind matrices, column-major MAT4 float (no bufferView target).
     std::vector<float> ibms;
     for (const auto& joint : scene.joints) {
@@ -413,7 +451,7 @@ tinygltf::Model buildModel(const ExportScene& scene, const std::string& generato
         root.nodes.push_back(int(m.nodes.size() - 1));
     }
     for (const auto& clip : scene.clips)
-        addClip(m, b, clip, firstController);
+        addClip(m, b, clip, firstController, firstCamera);
     m.scenes.push_back(root);
     m.defaultScene = 0;
     return m;

@@ -9,7 +9,9 @@
 // (float, normalised, at most 4); every bufferView 4-byte aligned, vertex and
 // index views with their targets, min/max on positions and clip times;
 // controllers as plain nodes tagged {"rig": {"kind": "controller", ...}} in
-// extras; clips as LINEAR samplers in seconds. glTF is metres, Y-up.
+// extras; cameras (ExportScene::cameras) as scene-root nodes with a
+// perspective camera, tagged {"rig": {"kind": "camera", ...}}; clips as LINEAR
+// samplers in seconds (CUBICSPLINE for keyed clips). glTF is metres, Y-up.
 // Texture images (PNG or JPEG; other formats are left out with a warning) go
 // into the buffer through a bufferView, in .glb and .gltf alike: the .gltf's
 // .bin carries them, so the pair is the whole export, written atomically, and

@@ -170,7 +170,9 @@ struct ControllerGroup {
 struct Rig {
     std::vector<RigNode> nodes;
     std::vector<RigConstraint> constraints; // in build order; the evaluator orders them by dependency
-    std::map<std::string, std::vector<RigNodeIndex>> sets; // "controllers": every animatable controller
+    // "controllers": every animatable controller; "cameras": each util.camera's
+    // camera node (what exports write as cameras: io/ExportCamera.h).
+    std::map<std::string, std::vector<RigNodeIndex>> sets;
     std::vector<ControllerGroup> groups;                   // parents before children
     std::unordered_map<NodeKey, RigNodeIndex> byKey;
     std::unordered_map<std::string, RigNodeIndex> byPath;

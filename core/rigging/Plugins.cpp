@@ -27,6 +27,31 @@ public:
     }
 };
 
+// The rig's cameras (util.camera's view node, tag `camera`: it looks down its
+// -Z with +Y up, aimed and rolled, and its controller carries the lens
+// attributes), the set "cameras" that exports write as real cameras
+// (io/ExportCamera.h), in node order.
+class CameraSetPlugin final : public GeneratorPlugin {
+public:
+    const char* name() const override { return "camera set"; }
+    void finalize(RigAssembly& a) const override
+    {
+        auto& set = a.rig.sets["cameras"];
+        set.clear();
+        for (const InstanceRecord& r : a.records) {
+            // util.camera, or a template built by its builder (based on it)
+            if (!r.built || !r.manifest || (r.manifest->id != "util.camera" && r.manifest->base != "util.camera"))
+                continue;
+            const CopyKey copy = a.copyOf(r.instance->id).key();
+            if (const auto node = a.rig.find(NodeKey{copy.instance, copy.branch, "camera"}))
+                set.push_back(*node);
+        }
+        std::sort(set.begin(), set.end());
+        if (set.empty())
+            a.rig.sets.erase("cameras");
+    }
+};
+
 // Controller groups from the common options `group` and `parent`. Each
 // instance copy's visible controllers join a group: by default its own, named
 // after it ("arm.L") and nested in its parent instance's group; `group: name`
@@ -199,6 +224,7 @@ const std::vector<std::unique_ptr<GeneratorPlugin>>& builtinPlugins()
         std::vector<std::unique_ptr<GeneratorPlugin>> list;
         list.push_back(std::make_unique<ControllerSetPlugin>());
         list.push_back(std::make_unique<ControllerGroupPlugin>());
+        list.push_back(std::make_unique<CameraSetPlugin>());
         list.push_back(std::make_unique<SkinRootPlugin>());
         list.push_back(std::make_unique<NamingCheckPlugin>());
         return list;

@@ -29,7 +29,7 @@ std::vector<Mat4> jointWorlds(const io::ExportScene& scene, std::optional<double
     if (time && !scene.clips.empty()) {
         const io::ExportClip& clip = scene.clips.front();
         for (const io::ExportTrack& track : clip.tracks)
-            if (!track.controller)
+            if (track.isJoint())
                 local[std::size_t(track.node)] = translationMatrix(io::trackTranslationAt(track, clip.times, *time)) *
                                                  Mat4(glm::mat3_cast(io::trackRotationAt(track, clip.times, *time))) *
                                                  glm::scale(Mat4(1.0), io::trackScaleAt(track, clip.times, *time));

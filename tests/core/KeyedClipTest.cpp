@@ -91,7 +91,7 @@ void writeSamples(const io::ExportScene& scene, const io::ExportClip& clip, cons
 {
     std::vector<const io::ExportTrack*> trackOf(scene.joints.size(), nullptr);
     for (const auto& track : clip.tracks)
-        if (!track.controller)
+        if (track.isJoint())
             trackOf[std::size_t(track.node)] = &track;
     std::ostringstream out;
     out.precision(9);
@@ -154,7 +154,7 @@ TEST(KeyedClip, KeysAreTheRigsPosesWithCubicSplineSlopes)
     EXPECT_TRUE(rotates);
     // The keys are the rig evaluated at the keyed poses (a turning joint's local rotation).
     const auto& elbowTrack = *std::find_if(clip->tracks.begin(), clip->tracks.end(), [&](const io::ExportTrack& t) {
-        return !t.controller && (t.cubic & io::kRotationChannel) && scene.joints[std::size_t(t.node)].parent >= 0;
+        return t.isJoint() && (t.cubic & io::kRotationChannel) && scene.joints[std::size_t(t.node)].parent >= 0;
     });
     for (std::size_t k = 0; k < clip->times.size(); ++k) {
         program->evaluate(eval::poseFromValues(biped(), program->channels(), clips[0].poses[k]), state);
@@ -219,7 +219,7 @@ TEST(GltfExport, KeyedClipsAreCubicSplineSamplersWithSlopesPerSecond)
                 continue;
             const int node = animation.channels[c].target_node;
             const auto& track = *std::find_if(wave->tracks.begin(), wave->tracks.end(), [&](const io::ExportTrack& t) {
-                return !t.controller && t.node == node;
+                return t.isJoint() && t.node == node;
             });
             for (std::size_t k = 0; k < 3; ++k) // glTF's x y z w are glm's [0..3]
                 for (int i = 0; i < 4; ++i) {
@@ -295,7 +295,7 @@ TEST(FbxExport, KeyedClipsAreCubicKeysWithUserSlopesOnTheHalfFrameGrid)
     double worst = 0.0;
     std::size_t checked = 0;
     for (const auto& track : wave.tracks) {
-        if (track.controller || !(track.cubic & io::kRotationChannel))
+        if (!track.isJoint() || !(track.cubic & io::kRotationChannel))
             continue;
         const std::string name = scene.joints[std::size_t(track.node)].name;
         for (const auto& [child, link] : objects.parents) {

@@ -48,7 +48,7 @@ std::vector<std::vector<Mat4>> jointWorlds(const io::ExportScene& scene, const i
 {
     std::vector<const io::ExportTrack*> trackOf(scene.joints.size(), nullptr);
     for (const auto& track : clip.tracks)
-        if (!track.controller)
+        if (track.isJoint())
             trackOf[std::size_t(track.node)] = &track;
     std::vector<std::vector<Mat4>> out(clip.times.size(), std::vector<Mat4>(scene.joints.size()));
     for (std::size_t k = 0; k < clip.times.size(); ++k)
@@ -66,7 +66,7 @@ double worstStretch(const io::ExportScene& scene, const io::ExportClip& clip)
 {
     double worst = 0.0;
     for (const auto& track : clip.tracks) {
-        if (track.controller || scene.joints[std::size_t(track.node)].parent < 0)
+        if (!track.isJoint() || scene.joints[std::size_t(track.node)].parent < 0)
             continue;
         const double rest = glm::length(translationOf(scene.joints[std::size_t(track.node)].bindLocal));
         if (rest < 1e-3)

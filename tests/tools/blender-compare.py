@@ -50,7 +50,10 @@ def import_armature(path):
     # Only the action under test plays: the glTF importer puts every clip on an NLA track.
     for track in arm.animation_data.nla_tracks:
         track.mute = True
-    return arm, sorted(set(bpy.data.actions) - actions_before, key=lambda a: a.name), fps
+    # The armature's actions (bone curves): a camera's (util.camera) or its lens's are not compared here.
+    actions = [a for a in set(bpy.data.actions) - actions_before
+               if any(fc.data_path.startswith('pose.bones[') for fc in a.fcurves)]
+    return arm, sorted(actions, key=lambda a: a.name), fps
 
 
 fbx_arm, fbx_actions, fps = import_armature(fbx_path)
