@@ -37,10 +37,7 @@ public:
     {
         const auto chain = *ctx.structure("chain");
         const auto points = *kit::positions(ctx, chain);
-        std::vector<Mat4> guideWorld;
-        for (JointId joint : chain)
-            guideWorld.push_back(ctx.guideWorldMatrix(joint));
-        const auto frames = orientChain(*readChainOrient(ctx), guideWorld); // the joints' (and controls') orientation
+        const auto frames = orientFrames(ctx, chain); // orient, aim_axis, up_axis, up_dir, up_auto
 
         // Arc length along the guides, to spread the controllers evenly.
         std::vector<double> along{0.0};

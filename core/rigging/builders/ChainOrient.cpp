@@ -144,4 +144,13 @@ std::vector<Mat4> orientChain(const ChainOrient& o, const std::vector<Mat4>& gui
     return frames;
 }
 
+std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain, bool aimAlways)
+{
+    std::vector<Mat4> guideWorld;
+    for (model::JointId joint : chain)
+        guideWorld.push_back(ctx.guideWorldMatrix(joint));
+    const auto orient = readChainOrient(ctx);
+    return orientChain(orient.value_or(ChainOrient{}), guideWorld, aimAlways);
+}
+
 } // namespace rs::rigging

@@ -48,6 +48,11 @@ std::optional<ChainOrient> readChainOrient(const BuildContext& ctx);
 // their aimAxis onto the segment, so they keep the guide's (world's) roll.
 std::vector<Mat4> orientChain(const ChainOrient& orient, const std::vector<Mat4>& guideWorld, bool aimAlways = false);
 
+// orientChain for the instance's options and the guide joints `chain`; the
+// options must have been checked by readChainOrient (in gather): on an error
+// it gives the guides' own frames.
+std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain, bool aimAlways = false);
+
 // The rotation taking local `aimAxis` onto unit `aim` and local `upAxis` onto
 // `up` made perpendicular to `aim`; nullopt when `up` lies along `aim`.
 std::optional<Mat3> aimRotation(const Vec3& aim, const Vec3& up, const Vec3& aimAxis, const Vec3& upAxis);

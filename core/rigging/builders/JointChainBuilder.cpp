@@ -49,14 +49,6 @@ model::RigNodeIndex addLink(BuildContext& ctx, std::size_t i, const Mat4& frame,
     return driver;
 }
 
-std::vector<Mat4> guideFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain)
-{
-    std::vector<Mat4> frames;
-    for (model::JointId joint : chain)
-        frames.push_back(ctx.guideWorldMatrix(joint));
-    return frames;
-}
-
 class JointChainBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
@@ -98,7 +90,7 @@ public:
         const auto chain = *chainOf(ctx);
         const bool controllers = ctx.optionBool("do_ctrl");
         const bool skin = ctx.optionBool("do_skin");
-        const auto frames = orientChain(*readChainOrient(ctx), guideFrames(ctx, chain));
+        const auto frames = orientFrames(ctx, chain);
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i < chain.size(); ++i) {
             // A generic chain (props, modules without a builder of their own):
@@ -139,7 +131,7 @@ public:
         const auto chain = *chainOf(ctx);
         const bool controllers = ctx.optionBool("do_ctrl");
         const bool skin = ctx.optionBool("do_skin");
-        const auto frames = orientChain(*readChainOrient(ctx), guideFrames(ctx, chain), true);
+        const auto frames = orientFrames(ctx, chain, true);
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i + 1 < chain.size(); ++i)
             parent = addLink(ctx, i, frames[i], parent, chain[i], controllers, skin, kit::kRotate); // a bone turns about its head
