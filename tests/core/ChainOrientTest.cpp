@@ -259,5 +259,19 @@ TEST(ChainOrient, AnUpAxisAlongTheAimAxisIsRefusedWhereItIsWritten)
     EXPECT_NE(formatAll(d).find("template.yml:5:"), std::string::npos) << formatAll(d);
 }
 
+TEST(ChainOrient, AShapeAxisNamingAnOptionThatIsNoAxisIsRefusedAtItsLine)
+{
+    const std::string folder = test::temporaryPath("orient-shape-templates");
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder + "/test/ringed");
+    std::ofstream(folder + "/test/ringed/template.yml") << "base: core.joints\nopts:\n  orient: {value: copy, enum: [copy, auto, world]}\n"
+                                                           "shapes:\n  ctrls.*:\n    shape: circle\n"
+                                                           "    axis: orient\n  ctrls.0:\n    shape: circle\n    axis: nowhere\n";
+    templates::TemplateRegistry registry;
+    const std::string all = formatAll(io::scanTemplates(registry, {builtinTemplatesDirectory(), folder}, iconsDirectory()));
+    EXPECT_NE(all.find("template.yml:7:11: error: shapes.ctrls.*.axis: option 'orient' can be 'copy', which is no axis"), std::string::npos) << all;
+    EXPECT_NE(all.find("template.yml:10:11: error: shapes.ctrls.0.axis: no option 'nowhere'"), std::string::npos) << all;
+}
+
 } // namespace
 } // namespace rs

@@ -66,7 +66,7 @@ std::optional<Mat3> aimRotation(const Vec3& aim, const Vec3& up, const Vec3& aim
     return world * glm::transpose(local);
 }
 
-std::optional<ChainOrient> readChainOrient(const BuildContext& ctx)
+std::optional<ChainOrient> readChainOrient(const BuildContext& ctx, bool report)
 {
     ChainOrient o;
     bool ok = true;
@@ -75,7 +75,8 @@ std::optional<ChainOrient> readChainOrient(const BuildContext& ctx)
         if (mode == "copy") o.mode = ChainOrient::Mode::Copy;
         else if (mode == "auto") o.mode = ChainOrient::Mode::Auto;
         else if (mode == "world") o.mode = ChainOrient::Mode::World;
-        else { ctx.error("'" + mode + "' is not an orientation (copy, auto, world)", "orient"); ok = false; }
+        else if (report) // a template of its own with other labels (its enum let them through): the guides' frames
+            ctx.warning("'" + mode + "' is no orientation this builder knows (copy, auto, world); the guide joints' own frames are used", "orient");
     }
     const auto aim = axisOption(ctx, "aim_axis", o.aimAxis);
     const auto up = axisOption(ctx, "up_axis", o.upAxis);
@@ -149,7 +150,7 @@ std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model:
     std::vector<Mat4> guideWorld;
     for (model::JointId joint : chain)
         guideWorld.push_back(ctx.guideWorldMatrix(joint));
-    const auto orient = readChainOrient(ctx);
+    const auto orient = readChainOrient(ctx, false); // gather reported its problems
     return orientChain(orient.value_or(ChainOrient{}), guideWorld, aimAlways);
 }
 

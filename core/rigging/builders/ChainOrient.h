@@ -29,9 +29,12 @@ struct ChainOrient {
 // The orientation options of the instance (`orient` copy / auto / world,
 // `aim_axis`, `up_axis`, `up_dir`, `up_auto`); an option the manifest does
 // not declare keeps the default above. Reports an error naming the option and
-// returns nullopt for an unknown label, a zero `up_dir`, or an `up_axis` on
-// the same line as `aim_axis` (equal or opposite).
-std::optional<ChainOrient> readChainOrient(const BuildContext& ctx);
+// returns nullopt for a label that is no axis, a zero `up_dir`, or an
+// `up_axis` on the same line as `aim_axis` (equal or opposite); an `orient`
+// label other than copy, auto and world (a template of its own based on
+// core.joints may use other labels) is warned about and read as copy.
+// `report` off: no warning (generate reads them again after gather checked them).
+std::optional<ChainOrient> readChainOrient(const BuildContext& ctx, bool report = true);
 
 // One frame per guide joint from the joints' world matrices (authored space),
 // at the joints' positions.
