@@ -6,8 +6,11 @@
 #include "io/BuildSettingsFile.h"
 #include "io/OverrideFile.h"
 #include "io/YamlSupport.h"
+#include "templates/Manifest.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -61,6 +64,22 @@ struct LegacyRecords {
     std::optional<SourceLocation> where;                                         // the first, for the note
 };
 
+// Orientation options (core.joints, core.bones, rig.spline): an up_axis on the
+// aim_axis's line is refused where it is written. Against a template's default
+// only the build can tell (it reports it naming the option).
+bool checkAxisPair(YamlReader& r, const YAML::Node& options)
+{
+    const YAML::Node aim = options["aim_axis"], up = options["up_axis"];
+    if (!aim || !up || !aim.IsScalar() || !up.IsScalar())
+        return true;
+    const auto a = templates::parseAxis(aim.Scalar()), u = templates::parseAxis(up.Scalar());
+    if (!a || !u || std::abs(glm::dot(*a, *u)) < 0.5)
+        return true;
+    r.error(up, "option up_axis '" + up.Scalar() + "' lies along aim_axis '" + aim.Scalar() +
+                    "' (equal or opposite): the up axis must be another axis");
+    return false;
+}
+
 bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std::map<model::InstanceId, YAML::Node>& nodes,
                   LegacyRecords& legacy)
 {
@@ -83,6 +102,7 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
             for (const auto& o : v)
                 if (auto value = readValue(r, o.second, "option " + o.first.Scalar())) instance.options[o.first.Scalar()] = *value;
                 else ok = false;
+            ok = checkAxisPair(r, v) && ok;
         } else if (key == "structure" || key == "names") {
             if (!r.expectMap(v, key)) { ok = false; continue; }
             auto& target = key == "structure" ? instance.structure : instance.names;

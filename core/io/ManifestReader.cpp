@@ -164,6 +164,12 @@ std::vector<std::string> stringList(YamlReader& r, const YAML::Node& node, const
     return items;
 }
 
+// A lower-case identifier: an option's name (`aim_axis`).
+bool isOptionName(const std::string& text)
+{
+    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; });
+}
+
 bool readShapes(YamlReader& r, const YAML::Node& node, std::vector<ShapeSpec>& out)
 {
     if (!r.expectMap(node, "shapes"))
@@ -186,8 +192,14 @@ bool readShapes(YamlReader& r, const YAML::Node& node, std::vector<ShapeSpec>& o
             else if (key == "point") s.point = stringList(r, v, what + ".point", ok);
             else if (key == "aim") text(s.aim);
             else if (key == "up") text(s.up);
-            else if (key == "aim_axis" || key == "up_axis" || key == "axis") {
-                std::string& field = key == "aim_axis" ? s.aimAxis : key == "up_axis" ? s.upAxis : s.axis;
+            else if (key == "axis") { // an axis, or an option naming one (checked by the validator)
+                if (auto t = r.string(v, what + ".axis")) {
+                    if (parseAxis(*t) || isOptionName(*t)) s.axis = *t;
+                    else { r.error(v, what + ".axis must be an axis (x, y, z, -x, -y, -z) or an option's name, not '" + *t + "'"); ok = false; }
+                } else ok = false;
+            }
+            else if (key == "aim_axis" || key == "up_axis") {
+                std::string& field = key == "aim_axis" ? s.aimAxis : s.upAxis;
                 if (auto t = r.string(v, what + "." + key)) {
                     if (parseAxis(*t)) field = *t;
                     else { r.error(v, what + "." + key + " must be an axis (x, y, z, -x, -y, -z), not '" + *t + "'"); ok = false; }
@@ -195,10 +207,11 @@ bool readShapes(YamlReader& r, const YAML::Node& node, std::vector<ShapeSpec>& o
             }
             else if (key == "clone") text(s.clone);
             else if (key == "reference") text(s.reference);
-            else if (key == "do_aim") {
-                if (!r.expectMap(v, what + ".do_aim")) { ok = false; continue; }
+            else if (key == "do_aim" || key == "do_axis") {
+                if (!r.expectMap(v, what + "." + key)) { ok = false; continue; }
+                auto& conditions = key == "do_aim" ? s.doAim : s.doAxis;
                 for (const auto& c : v)
-                    s.doAim.emplace_back(c.first.Scalar(), stringList(r, c.second, what + ".do_aim." + c.first.Scalar(), ok));
+                    conditions.emplace_back(c.first.Scalar(), stringList(r, c.second, what + "." + key + "." + c.first.Scalar(), ok));
             }
             else r.warning(p.first, "unknown key '" + key + "' in " + what);
         }

@@ -4,6 +4,8 @@
 #include "templates/Structure.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
 #include <map>
 #include <set>
 
@@ -24,6 +26,7 @@ public:
                 if (!kv.second.IsNull() && kv.second.IsScalar())
                     address(kv.second, "structure." + kv.first.Scalar(), kv.first.Scalar());
         checkCycles(root["structure"]);
+        axisPair(root);
         if (const YAML::Node shapes = root["shapes"]; shapes && shapes.IsMap())
             for (const auto& kv : shapes) {
                 if (!kv.second.IsMap()) continue;
@@ -35,10 +38,13 @@ public:
                         if (item.IsScalar() && !((std::string(key) == "aim" || std::string(key) == "up") && parseAxis(item.Scalar())))
                             address(item, what + "." + key, {});
                 }
-                if (const YAML::Node doAim = kv.second["do_aim"]; doAim && doAim.IsMap())
-                    for (const auto& c : doAim)
-                        if (!m_m.findOpt(c.first.Scalar()))
-                            m_r.warning(c.first, what + ".do_aim: no option '" + c.first.Scalar() + "' in this template");
+                for (const char* key : {"do_aim", "do_axis"})
+                    if (const YAML::Node conditions = kv.second[key]; conditions && conditions.IsMap())
+                        for (const auto& c : conditions)
+                            if (!m_m.findOpt(c.first.Scalar()))
+                                m_r.warning(c.first, what + "." + key + ": no option '" + c.first.Scalar() + "' in this template");
+                if (const YAML::Node axis = kv.second["axis"]; axis && axis.IsScalar() && !parseAxis(axis.Scalar()))
+                    axisOption(axis, what + ".axis");
             }
         if (const YAML::Node hierarchy = root["hierarchy"]; hierarchy && hierarchy.IsMap())
             for (const auto& kv : hierarchy) {
@@ -57,6 +63,40 @@ public:
     }
 
 private:
+    // A shape `axis` naming an option: every value it can take must be an axis.
+    void axisOption(const YAML::Node& node, const std::string& what)
+    {
+        const Parameter* opt = m_m.findOpt(node.Scalar());
+        if (!opt) {
+            m_r.error(node, what + ": no option '" + node.Scalar() + "' in this template");
+            return;
+        }
+        std::vector<std::string> values{formatValue(opt->value)};
+        for (const auto& label : opt->enumLabels)
+            values.push_back(label.second);
+        for (const std::string& value : values)
+            if (!parseAxis(value)) {
+                m_r.error(node, what + ": option '" + opt->name + "' can be '" + value + "', which is no axis (x, y, z, -x, -y, -z)");
+                return;
+            }
+    }
+
+    // An `up_axis` option whose default lies along the `aim_axis` option's default.
+    void axisPair(const YAML::Node& root)
+    {
+        const Parameter* aim = m_m.findOpt("aim_axis");
+        const Parameter* up = m_m.findOpt("up_axis");
+        if (!aim || !up)
+            return;
+        const auto a = parseAxis(formatValue(aim->value));
+        const auto u = parseAxis(formatValue(up->value));
+        const YAML::Node opts = root["opts"];
+        const YAML::Node at = opts && opts.IsMap() && opts["up_axis"] ? opts["up_axis"] : root;
+        if (a && u && std::abs(glm::dot(*a, *u)) > 0.5)
+            m_r.error(at.IsMap() && at["value"] ? at["value"] : at, "opts.up_axis: the default '" + formatValue(up->value) + "' lies along aim_axis '" +
+                                     formatValue(aim->value) + "' (equal or opposite)");
+    }
+
     static std::vector<YAML::Node> items(const YAML::Node& v)
     {
         std::vector<YAML::Node> out;

@@ -1,5 +1,6 @@
 // Finalize stage: gives every controller its curves from the manifest `shapes`
-// entry. A shape is sampled from the library, its Y axis turned per `axis`,
+// entry. A shape is sampled from the library, its Y axis turned per `axis` (an
+// axis or an option naming one, if `do_axis` allows),
 // scaled so its largest extent is `size` times the instance's control scale
 // (ControlSize.cpp: relative to the character), then placed in the guide: under the
 // `parent` joint, moved to the average of the `point` joints, and aimed at `aim`
@@ -135,9 +136,23 @@ public:
         return out;
     }
 
-    bool aimAllowed(const ShapeSpec& spec) const
+    bool aimAllowed(const ShapeSpec& spec) const { return optionsMatch(spec.doAim); }
+
+    // The axis the library's Y axis turns onto: `axis`, or the value of the
+    // option it names, when `do_axis` allows; nullopt: the shape stays Y-up.
+    std::optional<Vec3> axis(const ShapeSpec& spec) const
     {
-        for (const auto& [option, accepted] : spec.doAim) {
+        if (spec.axis.empty() || !optionsMatch(spec.doAxis))
+            return std::nullopt;
+        if (auto axis = templates::parseAxis(spec.axis))
+            return axis;
+        auto it = m_r.options.find(spec.axis);
+        return it == m_r.options.end() ? std::nullopt : templates::parseAxis(formatValue(it->second));
+    }
+
+    bool optionsMatch(const std::vector<std::pair<std::string, std::vector<std::string>>>& conditions) const
+    {
+        for (const auto& [option, accepted] : conditions) {
             auto it = m_r.options.find(option);
             if (it == m_r.options.end())
                 return false;
@@ -360,8 +375,8 @@ void applyShapes(RigAssembly& a, ShapeSamples& sampled)
             // The guide's frame: without the post transform the overrides gave every node.
             const Mat4 world = moved ? unpost * node.worldMatrix : node.worldMatrix;
             toController = glm::inverse(world) * placer.frame(*spec, match.index, world);
-            if (!spec->axis.empty())
-                toController = toController * Mat4(rotationBetween(Vec3(0, 1, 0), *templates::parseAxis(spec->axis)));
+            if (const auto axis = placer.axis(*spec))
+                toController = toController * Mat4(rotationBetween(Vec3(0, 1, 0), *axis));
         }
         node.shape = shape->name;
         node.curves.clear();

@@ -40,7 +40,11 @@ struct ShapeSpec {
     std::vector<std::pair<std::string, std::vector<std::string>>> doAim; // aim only if these opts match
     std::string clone;                    // copy this controller's curves, then apply size (relative) and colour
     std::string reference;                // the curves land on this controller id instead of `key`
-    std::string axis;                     // the library's Y axis is turned onto this axis
+    // The library's Y axis is turned onto this axis ("x", "-z"), or onto the
+    // value of the option it names ("aim_axis": a circle rings the chain
+    // whichever axis aims), if `doAxis` allows.
+    std::string axis;
+    std::vector<std::pair<std::string, std::vector<std::string>>> doAxis; // turn only if these opts match
     SourceLocation where;
 };
 

@@ -90,6 +90,8 @@ std::string describeManifest(const TemplateManifest& m)
         if (!s.clone.empty()) out << " clone " << s.clone;
         if (!s.reference.empty()) out << " reference " << s.reference;
         if (!s.axis.empty()) out << " axis " << s.axis;
+        for (const auto& [option, values] : s.doAxis)
+            out << " do_axis " << option << '=' << list(values);
         out << '\n';
     }
     out << "hierarchy:\n";

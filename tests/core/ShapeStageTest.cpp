@@ -51,7 +51,7 @@ structure:
 guides:
   length: {value: 1.0, min: 0.001}
 opts:
-  orient: {value: auto, enum: [auto, world]}
+  style: {value: auto, enum: [auto, world]}
 shapes:
   ctrls.0: {shape: square, size: 2, parent: 'chain[1]', color: red}
   ctrls.1:
@@ -59,7 +59,7 @@ shapes:
     parent: chain[1]
     aim: tip
     aim_axis: +z
-    do_aim: {orient: auto}
+    do_aim: {style: auto}
   ctrls.2: {clone: ctrls.0, size: 0.5, color: blue}
   ctrls.*:
     shape: circle
@@ -116,7 +116,7 @@ TEST_F(ShapeStage, AimsTheAimAxisAtTheTargetOnlyWhenDoAimMatches)
     EXPECT_NEAR(b.lo.y, -0.5, 1e-6);
     EXPECT_NEAR(b.extent().z, 0.0, 1e-6);
 
-    const auto flat = build({{"orient", std::string("world")}});
+    const auto flat = build({{"style", std::string("world")}});
     const Bounds f = boundsOf(node(flat, "s::ctrls.1"));
     EXPECT_NEAR(f.extent().y, 0.0, 1e-6);
     EXPECT_NEAR(f.hi.z, 0.5, 1e-6);

@@ -2,6 +2,7 @@
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
+#include "rigging/builders/ChainOrient.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
@@ -13,9 +14,6 @@ namespace {
 using model::JointId;
 using model::RigNodeIndex;
 using model::RigNodeKind;
-
-// The Z axis of a chain's root guide: the bend axis used where the chain is straight.
-Vec3 rootNormal(const BuildContext& ctx, JointId root) { return kit::guideAxis(ctx, root, 2, Vec3(0.0, 0.0, 1.0)); }
 
 class SplineBuilder final : public TemplateBuilder {
 public:
@@ -30,13 +28,16 @@ public:
         return specs;
     }
 
-    bool gather(const BuildContext& ctx) const override { return kit::chainOfAtLeast(ctx, 3, "a spline chain").has_value(); }
+    bool gather(const BuildContext& ctx) const override
+    {
+        return kit::chainOfAtLeast(ctx, 3, "a spline chain").has_value() && readChainOrient(ctx).has_value();
+    }
 
     void generate(BuildContext& ctx) const override
     {
         const auto chain = *ctx.structure("chain");
         const auto points = *kit::positions(ctx, chain);
-        const auto frames = kit::chainFrames(points, rootNormal(ctx, chain.front()));
+        const auto frames = orientFrames(ctx, chain); // orient, aim_axis, up_axis, up_dir, up_auto
 
         // Arc length along the guides, to spread the controllers evenly.
         std::vector<double> along{0.0};

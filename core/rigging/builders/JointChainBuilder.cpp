@@ -1,6 +1,7 @@
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
+#include "rigging/builders/ChainOrient.h"
 #include "templates/Structure.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -72,7 +73,7 @@ public:
     bool gather(const BuildContext& ctx) const override
     {
         auto chain = chainOf(ctx);
-        if (!chain)
+        if (!chain || !readChainOrient(ctx))
             return false;
         for (std::size_t i = 1; i < chain->size(); ++i) {
             const double length = glm::length(translationOf(ctx.guideWorldMatrix((*chain)[i])) -
@@ -89,20 +90,22 @@ public:
         const auto chain = *chainOf(ctx);
         const bool controllers = ctx.optionBool("do_ctrl");
         const bool skin = ctx.optionBool("do_skin");
+        const auto frames = orientFrames(ctx, chain);
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i < chain.size(); ++i) {
-            const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(chain[i]));
             // A generic chain (props, modules without a builder of their own):
             // each control slides, turns and scales its part.
-            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin, kit::kTranslate | kit::kRotate | kit::kScale);
+            parent = addLink(ctx, i, frames[i], parent, chain[i], controllers, skin, kit::kTranslate | kit::kRotate | kit::kScale);
         }
     }
 };
 
 // core.bones: one bone per segment (chain[:-1]): each controller and skin
-// joint sits on its guide joint with +Y aimed at the next guide joint (the
-// guide's own Z kept as the up direction where it can be), as a bone is drawn
-// and exported; the last guide joint is the tip, a hook without a controller.
+// joint sits on its guide joint with its aim axis (+Y by default) aimed at the
+// next guide joint, as a bone is drawn and exported; `orient` only chooses its
+// roll (copy: the guide's own axes turned the smallest way, as before; world:
+// the world axes turned so; auto: the up axis towards up_dir or the bend). The
+// last guide joint is the tip, a hook without a controller.
 class BoneChainBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest& manifest,
@@ -128,41 +131,16 @@ public:
         const auto chain = *chainOf(ctx);
         const bool controllers = ctx.optionBool("do_ctrl");
         const bool skin = ctx.optionBool("do_skin");
+        const auto frames = orientFrames(ctx, chain, true);
         model::RigNodeIndex parent = ctx.hookNode();
-        for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-            const Mat4 frame = boneFrame(ctx.guideWorldMatrix(chain[i]), translationOf(ctx.guideWorldMatrix(chain[i + 1])));
-            parent = addLink(ctx, i, frame, parent, chain[i], controllers, skin, kit::kRotate); // a bone turns about its head
-        }
-        const Mat4 tipFrame = rigidFrame(ctx.guideWorldMatrix(chain.back()));
+        for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+            parent = addLink(ctx, i, frames[i], parent, chain[i], controllers, skin, kit::kRotate); // a bone turns about its head
+        // The tip keeps the last bone's orientation.
         const auto tip = ctx.createNode(model::RigNodeKind::Group, "hooks.tip", ctx.nodeName(model::NameRole::Offset, "tip"), parent,
-                                        translationMatrix(translationOf(tipFrame)) * Mat4(Mat3(ctx.node(parent).worldMatrix)));
+                                        frames.back());
         ctx.setHook(chain.back(), tip);
     }
 
-private:
-    // +Y from `from`'s position to `to`; X and Z turned from the guide's own
-    // axes (the smallest turn), so a chain's twist follows its guides.
-    static Mat4 boneFrame(const Mat4& from, const Vec3& to)
-    {
-        const Mat4 rigid = rigidFrame(from);
-        const Vec3 origin = translationOf(rigid);
-        const Vec3 direction = to - origin;
-        if (glm::length(direction) < 1e-9)
-            return rigid;
-        const Vec3 y = glm::normalize(direction);
-        const Vec3 guideY = glm::normalize(Vec3(rigid[1]));
-        const double d = glm::dot(guideY, y);
-        Mat3 turn(1.0);
-        if (d < -1.0 + 1e-12) {
-            turn = glm::mat3_cast(glm::angleAxis(glm::pi<double>(), glm::normalize(Vec3(rigid[2]))));
-        } else {
-            turn = glm::mat3_cast(Quat(guideY, y));
-        }
-        const Mat3 axes = turn * Mat3(rigid);
-        Mat4 out(axes);
-        out[3] = Vec4(origin, 1.0);
-        return out;
-    }
 };
 
 } // namespace
