@@ -56,6 +56,7 @@ public:
     {
         m_c.stretchChannel = optionalChannel(s.stretch, "stretch");
         m_c.volumeChannel = optionalChannel(s.volume, "volume");
+        m_c.slideChannel = optionalChannel(s.slide, "slide");
     }
     void operator()(const model::SpaceConstraint& s)
     {

@@ -145,6 +145,12 @@ struct SplineConstraint {
     // s^(-volume / 2). The last keeps its size, so what hangs on it (a neck,
     // arms) does too. Clamped to [0, 1]. None: 0.
     std::optional<AttributeRef> volume{};
+    // Slides the driven chain along the curve by this many metres of arc
+    // (times the chain parent's scale; forward towards the last control,
+    // negative back): each joint's arc position moves by it, and with stretch
+    // by it times the curve's length over its rest length. A joint slid past
+    // an end of the curve goes on straight along the end's tangent. None: 0.
+    std::optional<AttributeRef> slide{};
     bool operator==(const SplineConstraint&) const = default;
 };
 
