@@ -242,6 +242,23 @@ TEST(SlideRig, WithStretchEachJointKeepsItsShareOfTheCurve)
         EXPECT_LT(glm::length(r.position(skin("L", i)) - r.position("track.L::mch.curve." + std::to_string(i))), 1e-6) << i;
 }
 
+TEST(SlideRig, AnFkControlTurnsItsJointWhereTheCurveCarriesIt)
+{
+    PosedRig r(curveGuide());
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    pose[r.channel("track.L::ctrls.spline.0", "slide")] = 0.2;
+    r.evaluate(pose);
+    const Vec3 at = r.position(skin("L", 1));
+    const Mat3 turned = r.state().world[r.index(skin("L", 1))].rotation();
+    pose[r.channel("track.L::ctrls.fk.1", "rz")] = 30.0;
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position(skin("L", 1)) - at), 1e-9) << "the FK control turns the joint in place";
+    const Vec3 x = r.state().world[r.index(skin("L", 1))].rotation()[0];
+    EXPECT_NEAR(glm::degrees(std::acos(std::clamp(glm::dot(x, turned[0]), -1.0, 1.0))), 30.0, 1e-6);
+    EXPECT_LT(glm::length(r.position(skin("L", 2)) - r.position("track.L::drv.2")), 1e-9) << "the next joint stays on the curve";
+}
+
 TEST(SlideRig, TheRightBranchMirrorsTheLeft)
 {
     PosedRig r(curveGuide());

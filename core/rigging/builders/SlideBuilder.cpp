@@ -206,7 +206,7 @@ private:
         const std::size_t sliders = wanted <= 0 || std::size_t(wanted) > chain.size() ? chain.size() : std::size_t(wanted);
         const std::vector<JointId> sliding(chain.begin(), chain.begin() + std::ptrdiff_t(sliders));
         const std::vector<Mat4> slidingFrames(frames.begin(), frames.begin() + std::ptrdiff_t(sliders));
-        const auto driven = spline::addDrivenChain(ctx, sliding, slidingFrames);
+        const auto driven = spline::addDrivenChain(ctx, sliding, slidingFrames, ctx.optionBool("fk"));
         for (std::size_t i = sliders; i < chain.size(); ++i)
             ctx.setHook(chain[i], curve[i]);
 

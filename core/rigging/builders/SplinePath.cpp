@@ -40,15 +40,23 @@ Controls addControls(BuildContext& ctx, const std::vector<JointId>& chain, const
     return out;
 }
 
-std::vector<RigNodeIndex> addDrivenChain(BuildContext& ctx, const std::vector<JointId>& chain, const std::vector<Mat4>& frames)
+std::vector<RigNodeIndex> addDrivenChain(BuildContext& ctx, const std::vector<JointId>& chain, const std::vector<Mat4>& frames,
+                                         bool fk)
 {
     std::vector<RigNodeIndex> driven;
     RigNodeIndex parent = ctx.hookNode();
     for (std::size_t i = 0; i < chain.size(); ++i) {
-        parent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + std::to_string(i), "drv", int(i) + 1, parent, frames[i], chain[i]);
+        const std::string index = std::to_string(i);
+        parent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + index, "drv", int(i) + 1, parent, frames[i], chain[i]);
         driven.push_back(parent);
-        kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
-        ctx.setHook(chain[i], parent);
+        RigNodeIndex carrier = parent;
+        if (fk) {
+            const kit::Control control = kit::addControl(ctx, "fk." + index, "fk", int(i) + 1, parent, frames[i], chain[i]);
+            kit::animate(ctx, control, kit::kRotate);
+            carrier = control.ctrl;
+        }
+        kit::addSkin(ctx, index, "", int(i) + 1, carrier, frames[i], chain[i]);
+        ctx.setHook(chain[i], carrier);
     }
     return driven;
 }

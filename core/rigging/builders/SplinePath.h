@@ -24,8 +24,11 @@ Controls addControls(BuildContext& ctx, const std::vector<model::JointId>& chain
 
 // A driven joint ("drv.<i>", each under the previous one, the first under the
 // instance's hook) and a skin joint on it ("skin.<i>") at each of `frames`;
-// chain[i] hooks on drv.<i>. Returns the driven joints, for the constraint.
+// chain[i] hooks on drv.<i>. With `fk`, an FK control ("ctrls.fk.<i>",
+// rotations) rides on each driven joint and carries its skin joint and hook,
+// so animators turn each joint on top of the curve. Returns the driven
+// joints, for the constraint.
 std::vector<model::RigNodeIndex> addDrivenChain(BuildContext& ctx, const std::vector<model::JointId>& chain,
-                                                const std::vector<Mat4>& frames);
+                                                const std::vector<Mat4>& frames, bool fk = false);
 
 } // namespace rs::rigging::spline
