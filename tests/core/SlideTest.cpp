@@ -3,12 +3,14 @@
 // every joint lies on the curve and keeps its spacing along the arc; the slide
 // stops at its limits; moving a spline controller or a tweaker bends the path;
 // stretch keeps each joint's share of the curve; the right branch mirrors the
-// left. The curve is the one model::SplineConstraint documents (a cubic
+// left; an incremental rebuild after each edit is the full build. The curve is the one model::SplineConstraint documents (a cubic
 // Hermite through its targets, tangents along their rest chain direction
 // turned with them, scaled by the chord), evaluated here on its own and
 // sampled finely. The rail case (two guide joints) is the vehicle's door
 // (VehicleTest).
 #include "EvalTestSupport.h"
+#include "io/RigDump.h"
+#include "rigging/BuildCache.h"
 
 #include <gtest/gtest.h>
 
@@ -257,6 +259,30 @@ TEST(SlideRig, AnFkControlTurnsItsJointWhereTheCurveCarriesIt)
     const Vec3 x = r.state().world[r.index(skin("L", 1))].rotation()[0];
     EXPECT_NEAR(glm::degrees(std::acos(std::clamp(glm::dot(x, turned[0]), -1.0, 1.0))), 30.0, 1e-6);
     EXPECT_LT(glm::length(r.position(skin("L", 2)) - r.position("track.L::drv.2")), 1e-9) << "the next joint stays on the curve";
+}
+
+TEST(SlideRig, AnIncrementalRebuildAfterEachEditIsTheFullBuild)
+{
+    model::GuideDocument guide = curveGuide();
+    const model::InstanceId track = guide.instanceNamed("track")->id;
+    rigging::BuildCache cache;
+    auto compare = [&](const std::string& what) {
+        const model::Rig incremental = rigging::buildRig(guide, test::builtinTemplates(), rigging::BuilderRegistry::builtin(), {}, &cache);
+        const model::Rig full = rigging::buildRig(guide, test::builtinTemplates());
+        EXPECT_TRUE(full.diagnostics.empty()) << what << ": " << formatAll(full.diagnostics);
+        EXPECT_EQ(io::writeRigDump(incremental), io::writeRigDump(full)) << what;
+    };
+    compare("first build");
+    guide.instance(track)->options["sliders"] = 2;
+    compare("two sliders");
+    guide.instance(track)->options["tweakers"] = true;
+    compare("tweakers");
+    guide.instance(track)->options["fk"] = false;
+    compare("no fk");
+    guide.instance(track)->joints[3].local.translate.y += 0.05;
+    compare("a guide joint moved");
+    guide.instance(track)->options["controls"] = 4;
+    compare("four controllers");
 }
 
 TEST(SlideRig, TheRightBranchMirrorsTheLeft)
