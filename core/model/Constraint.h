@@ -130,10 +130,10 @@ struct TwistConstraint {
     bool operator==(const TwistConstraint&) const = default;
 };
 
-// Spline IK (spines, necks, tails): driven is a chain, root first; targets are
-// 2 to 16 controls a cubic curve passes through (tangents along the controls'
-// rest chain direction, its frame blending their rotations). Each joint keeps
-// its rest offset from the curve frame.
+// Spline IK (spines, necks, tails, rig.slide's sliding chains): driven is a
+// chain, root first; targets are 2 to 16 controls a cubic curve passes through
+// (tangents along the controls' rest chain direction, its frame blending their
+// rotations). Each joint keeps its rest offset from the curve frame.
 struct SplineConstraint {
     // Clamped to [0, 1]. 1: each joint keeps its rest curve parameter, so the
     // chain stretches with the curve; 0: each keeps its rest arc length, so the
