@@ -72,8 +72,9 @@ public:
             return specs;
         }
         // A path bending up a quarter turn from forward (+Z), its segments
-        // `length` / (count - 1) long (so a control's size is the same on a
-        // default rail and a default curve: ControlSize.cpp).
+        // `length` / (count - 1) long: 0.5 m by default, as long as a 0.5 m
+        // rail's, so the manifest's control sizes (for the default guide:
+        // ControlSize.cpp) give rails what they had when they were the default.
         const double step = 0.5 * std::numbers::pi / (count - 1);
         const double radius = length / (count - 1) / (2.0 * std::sin(0.5 * step));
         int parent = -1;
