@@ -50,7 +50,7 @@ std::string usage()
            "        --posed: build the rig rebound in the guide's test pose instead of its rest pose;\n"
            "        -o exports for engines: --preset gltf (Y-up metres), unreal (FBX Z-up centimetres, a root\n"
            "        joint at the origin), unity (humanoid names); --controllers adds the controllers as tagged\n"
-           "        nodes, --rom a range-of-motion clip from the guide's test pose (keys on whole frames at --fps,\n"
+           "        nodes with their custom attributes (glTF extras, FBX user properties), --rom a range-of-motion clip from the guide's test pose (keys on whole frames at --fps,\n"
            "        30 by default; a marker per controller, in clips of a minute at most, or one clip per controller\n"
            "        with --rom-clips per-control),\n"
            "        --current-pose the guide's pose on the nodes (with --posed the rig already is in it);\n"

@@ -44,6 +44,14 @@ Affine placed(const CompiledConstraint& c, const std::vector<Affine>& world, std
 void solveBlendLike(const CompiledConstraint& c, std::vector<Affine>& world, bool position, bool rotation, bool scale)
 {
     const std::size_t n = std::min(c.targets.size(), kMaxTargets);
+    // One target followed whole: its transform with the offset, exactly as a
+    // child of it would be (shear under a non-uniformly scaled parent
+    // included), which the decomposition below would lose. `isolate_skin`
+    // relies on it (rigging/IsolateSkinStage.cpp).
+    if (n == 1 && position && rotation && scale) {
+        world[c.driven.front()] = placed(c, world, 0);
+        return;
+    }
     std::array<Quat, kMaxTargets> rotations;
     Vec3 translation(0.0), scales(0.0);
     for (std::size_t k = 0; k < n; ++k) {

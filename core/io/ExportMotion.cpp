@@ -15,6 +15,14 @@ namespace rs::io {
 
 namespace {
 
+ExportTrack emptyTrack(int node, bool controller)
+{
+    ExportTrack track;
+    track.node = node;
+    track.controller = controller;
+    return track;
+}
+
 constexpr double kSameTranslation = 1e-6; // metres
 constexpr double kSameRotation = 1e-6;    // quaternion component
 constexpr double kSameScale = 1e-6;
@@ -191,9 +199,9 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
     clip.framesPerSecond = framesPerSecond;
     const ExportScene& scene = sampler.scene;
     for (std::size_t j = 0; j < scene.joints.size(); ++j)
-        clip.tracks.push_back({int(j), false, {}, {}, {}});
+        clip.tracks.push_back(emptyTrack(int(j), false));
     for (std::size_t c = 0; c < scene.controllers.size(); ++c)
-        clip.tracks.push_back({int(c), true, {}, {}, {}});
+        clip.tracks.push_back(emptyTrack(int(c), true));
     const int step = framesPerKey(framesPerSecond);
     eval::EvalState state = program.makeState();
     std::vector<Sample> samples;
@@ -299,9 +307,9 @@ ExportClip keyedClip(const model::Rig& rig, const KeyedClip& keyed, const eval::
     clip.times = keyed.times;
     const ExportScene& scene = sampler.scene;
     for (std::size_t j = 0; j < scene.joints.size(); ++j)
-        clip.tracks.push_back({int(j), false, {}, {}, {}});
+        clip.tracks.push_back(emptyTrack(int(j), false));
     for (std::size_t c = 0; c < scene.controllers.size(); ++c)
-        clip.tracks.push_back({int(c), true, {}, {}, {}});
+        clip.tracks.push_back(emptyTrack(int(c), true));
     eval::EvalState state = program.makeState();
     for (std::size_t k = 0; k < keyed.poses.size(); ++k) {
         const Sample sample = sampleAt(keyed.times[k], eval::poseFromValues(rig, program.channels(), keyed.poses[k]),

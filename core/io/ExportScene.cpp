@@ -87,7 +87,8 @@ Diagnostics validate(const model::Rig& rig, model::Skeleton& skeleton, std::vect
     return report;
 }
 
-void addControllers(const model::Rig& rig, ExportScene& scene, std::vector<model::RigNodeIndex>& nodes)
+void addControllers(const model::Rig& rig, const model::PoseValues* pose, ExportScene& scene,
+                    std::vector<model::RigNodeIndex>& nodes)
 {
     std::vector<int> index(rig.nodes.size(), -1);
     for (model::RigNodeIndex i = 0; i < rig.nodes.size(); ++i) {
@@ -99,6 +100,17 @@ void addControllers(const model::Rig& rig, ExportScene& scene, std::vector<model
         c.id = node.path;
         c.shape = node.shape;
         c.defaults = node.defaultValues;
+        const std::map<std::string, double>* posed = nullptr;
+        if (pose)
+            if (auto it = pose->find(node.key); it != pose->end())
+                posed = &it->second;
+        for (const model::RigAttribute& attribute : node.attributes) {
+            ExportController::Attribute a{attribute.name, attribute.value, attribute.min, attribute.max, attribute.labels};
+            if (posed && !attribute.locked)
+                if (auto it = posed->find(attribute.name); it != posed->end())
+                    a.value = std::clamp(it->second, attribute.min, attribute.max);
+            c.attributes.push_back(std::move(a));
+        }
         // The nearest controller above it in the controllers' virtual hierarchy.
         for (auto p = node.virtualParent; p != model::kNoNode && c.parent < 0; p = rig.nodes[p].virtualParent)
             c.parent = index[p];
@@ -208,7 +220,7 @@ PreparedExport prepareExport(const model::Rig& rig, const ExportOptions& options
     for (const auto& joint : skeleton.joints)
         nodes.joints.push_back(joint.node);
     if (options.controllers)
-        addControllers(rig, scene, nodes.controllers);
+        addControllers(rig, options.pose, scene, nodes.controllers);
     // Compiled for the pose, the clips and the default values the nodes rest
     // in; a rig that does not evaluate exports its build rest unless a pose or
     // a clip was asked for.

@@ -119,6 +119,22 @@ struct ExportController {
     // in the node's extras as rig.defaults ({"rig": {"defaults": {"rx": 0, ...}}}),
     // FBX as user properties rig_default_<channel> (double, flag "U").
     std::vector<std::pair<std::string, double>> defaults;
+    // The controller's custom attributes (ik_blend, space, fist...: what the
+    // channel box shows below its transform), with every export of
+    // controllers, cleaned up or not: the value in the written pose (the
+    // current pose when it is exported, else the attribute's default), its
+    // range and, for an enum (a space switch), its labels. glTF writes them in
+    // the node's extras as rig.attributes ({"ik_blend": {"value": 1, "min": 0,
+    // "max": 1}, "space": {..., "labels": ["world", ...]}}), FBX as animatable
+    // user properties named like the attribute (flags "A+U": a double
+    // "Number", or an "enum" with its labels joined by '~', as Maya writes
+    // them; Blender reads both as custom properties).
+    struct Attribute {
+        std::string name;
+        double value = 0.0, min = 0.0, max = 1.0;
+        std::vector<std::string> labels;
+    };
+    std::vector<Attribute> attributes;
 };
 
 // Bits of ExportTrack::animated / held.

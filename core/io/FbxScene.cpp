@@ -3,6 +3,7 @@
 #include "io/FbxAnimation.h"
 #include "io/FbxDocument.h"
 
+#include <cmath>
 #include <set>
 
 namespace rs::io::fbx {
@@ -242,6 +243,17 @@ ModelIds addSceneObjects(Document& doc, const ExportScene& scene, bool embedText
             propertyString(*p70, "rig_shape", controller.shape, "U");
         for (const auto& [channel, value] : controller.defaults) // cleanup's record: what reset returns to
             propertyDouble(*p70, "rig_default_" + channel, value, "U");
+        for (const auto& a : controller.attributes) { // the channel box's custom attributes, as Maya writes them
+            if (a.labels.empty()) {
+                propertyDouble(*p70, a.name, a.value, "A+U");
+                continue;
+            }
+            std::string labels;
+            for (const auto& label : a.labels)
+                labels += (labels.empty() ? "" : "~") + label;
+            p70->child("P").addString(a.name).addString("enum").addString("").addString("A+U")
+                .addInt32(std::int32_t(std::lround(a.value))).addString(labels);
+        }
         addAttribute(doc, id, controller.name, false);
         doc.connect(id, controller.parent < 0 ? 0 : ids.controllers[std::size_t(controller.parent)]);
         ids.controllers.push_back(id);

@@ -99,6 +99,22 @@ tinygltf::Value controllerExtras(const ExportController& c)
             defaults[channel] = tinygltf::Value(value);
         rig["defaults"] = tinygltf::Value(defaults);
     }
+    if (!c.attributes.empty()) {
+        tinygltf::Value::Object attributes;
+        for (const auto& a : c.attributes) {
+            tinygltf::Value::Object o{{"value", tinygltf::Value(a.value)},
+                                      {"min", tinygltf::Value(a.min)},
+                                      {"max", tinygltf::Value(a.max)}};
+            if (!a.labels.empty()) {
+                tinygltf::Value::Array labels;
+                for (const auto& label : a.labels)
+                    labels.push_back(tinygltf::Value(label));
+                o["labels"] = tinygltf::Value(labels);
+            }
+            attributes[a.name] = tinygltf::Value(o);
+        }
+        rig["attributes"] = tinygltf::Value(attributes);
+    }
     return tinygltf::Value(tinygltf::Value::Object{{"rig", tinygltf::Value(rig)}});
 }
 

@@ -127,6 +127,12 @@ void computeControlScales(RigAssembly& assembly, const BuilderRegistry& builders
 void applyShapeOverrides(RigAssembly& assembly, const model::GuideDocument& guide, const model::RestoreToggles& restore);
 void mirrorBranchShapes(RigAssembly& assembly);
 void buildVirtualHierarchy(RigAssembly& assembly);
+// The common option `isolate_skin` (IsolateSkinStage.cpp): the skin joints of
+// the instances that set it hang from skin joints only, following the skin
+// virtual hierarchy, each constrained to the node it hung under. Needs the
+// virtual hierarchy; must run before the program compiles (it adds constraints).
+bool wantsIsolatedSkin(const RigAssembly& assembly);
+void isolateSkin(RigAssembly& assembly);
 
 // Cross-cutting work after every instance is built (Rigify's generator plugins):
 // each plugin sees the whole rig and reports through the assembly.

@@ -287,14 +287,24 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     // the checks run here: they write none of what it reads (see compileProgram).
     // Isolated: while it waits, this thread runs only its own task, never a
     // piece of unrelated parallel work (a skin job's loop) from the shared pool.
+    // `isolate_skin` reparents skin joints along the virtual hierarchy and adds
+    // constraints, which the program compiles: the hierarchy comes first then.
+    const bool isolating = wantsIsolatedSkin(a);
+    if (isolating) {
+        buildVirtualHierarchy(a);
+        applyHierarchyMods(a, guide);
+        isolateSkin(a);
+    }
     ShapeSamples samples; // a build without a cache samples its shapes once
     tbb::this_task_arena::isolate([&] {
         tbb::task_group compiling;
         compiling.run([&a] { compileProgram(a); });
         applyShapes(a, cache ? cache->shapeSamples : samples);
         applyShapeOverrides(a, guide, restore);
-        buildVirtualHierarchy(a);
-        applyHierarchyMods(a, guide);
+        if (!isolating) {
+            buildVirtualHierarchy(a);
+            applyHierarchyMods(a, guide);
+        }
         computeLocalMatrices(a.rig);
         for (const auto& plugin : builtinPlugins())
             plugin->finalize(a);

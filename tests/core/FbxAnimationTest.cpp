@@ -12,6 +12,7 @@
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -289,4 +290,72 @@ TEST(FbxExport, CurveNodesAreTheClipsAnimatedAndHeldChannels)
     const std::string name = scene.joints[std::size_t(first->node)].name;
     EXPECT_EQ(keys[name + " Lcl Translation"], 1u) << "held: one key";
     EXPECT_EQ(keys[name + " Lcl Rotation"], clip.times.size()) << "animated: every key";
+}
+
+// Controllers' custom attributes are written whenever controllers are, cleaned
+// up or not, with the exported pose's values: glTF node extras rig.attributes,
+// FBX animatable user properties (a double, or an enum with its labels).
+TEST(FbxExport, ControllersCarryTheirAttributesInThePoseWithoutCleanup)
+{
+    const model::Rig& rig = biped();
+    const auto ik = rig.findPath("arm.L::ctrls.ik");
+    ASSERT_TRUE(ik);
+    ASSERT_TRUE(rig.nodes[*ik].defaultValues.empty()) << "the sample is not cleaned up";
+    model::PoseValues pose;
+    pose[rig.nodes[*ik].key] = {{"stretch", 0.25}, {"space", 3.0}};
+    io::ExportOptions options;
+    options.controllers = true;
+    options.pose = &pose;
+    const std::string name = rig.nodes[*ik].name;
+
+    const std::string glb = test::temporaryPath("attributes.glb");
+    ASSERT_FALSE(hasErrors(io::exportRig(rig, glb, options)));
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &error, &warning, glb)) << error;
+    bool inGltf = false;
+    for (const auto& node : m.nodes) {
+        if (node.name != name)
+            continue;
+        inGltf = true;
+        const tinygltf::Value& a = node.extras.Get("rig").Get("attributes");
+        ASSERT_TRUE(a.IsObject());
+        EXPECT_EQ(a.Get("stretch").Get("value").GetNumberAsDouble(), 0.25);
+        EXPECT_EQ(a.Get("stretch").Get("max").GetNumberAsDouble(), 1.0);
+        EXPECT_EQ(a.Get("space").Get("value").GetNumberAsDouble(), 3.0);
+        ASSERT_EQ(a.Get("space").Get("labels").ArrayLen(), 5u);
+        EXPECT_EQ(a.Get("space").Get("labels").Get(3).Get<std::string>(), "chest");
+        for (const auto& attribute : rig.nodes[*ik].attributes)
+            if (attribute.name == "soft_ik") {
+                EXPECT_EQ(a.Get("soft_ik").Get("value").GetNumberAsDouble(), attribute.value)
+                    << "an attribute the pose leaves has its default";
+            }
+    }
+    EXPECT_TRUE(inGltf) << name;
+
+    const auto prepared = io::prepareExport(rig, options);
+    ASSERT_TRUE(prepared.scene);
+    const auto bytes = io::fbxBytes(*prepared.scene, io::conventionFor(io::ExportPreset::Gltf, true));
+    ASSERT_TRUE(bytes);
+    const test::FbxFile file = test::readFbx(*bytes);
+    ASSERT_TRUE(file.error.empty()) << file.error;
+    const test::FbxObjects objects(file);
+    bool inFbx = false;
+    for (const auto* model : objects.ofKind("Model", "Null")) {
+        if (test::fbxObjectName(*model) != name)
+            continue;
+        inFbx = true;
+        std::map<std::string, const test::FbxRecord*> user;
+        for (const auto& p : model->find("Properties70")->children)
+            if (p.properties.at(3).text == "A+U")
+                user[p.properties[0].text] = &p;
+        ASSERT_TRUE(user.count("stretch") && user.count("space") && user.count("soft_ik")) << user.size();
+        EXPECT_EQ(user["stretch"]->properties.at(1).text, "double");
+        EXPECT_EQ(user["stretch"]->properties.at(4).number, 0.25);
+        EXPECT_EQ(user["space"]->properties.at(1).text, "enum");
+        EXPECT_EQ(user["space"]->properties.at(4).integer, 3);
+        EXPECT_EQ(user["space"]->properties.at(5).text, "world~root~cog~chest~head");
+    }
+    EXPECT_TRUE(inFbx) << name;
 }

@@ -240,7 +240,7 @@ TEST(VehicleTemplates, WorldDefaultIsTheGroundTheWheelsRollOnAndItsHookOptionHan
             if (c.path == "wheel_front.L::cns.roll") roll = &c;
         ASSERT_NE(roll, nullptr);
         ASSERT_EQ(roll->kind(), model::ConstraintKind::Roll);
-        EXPECT_EQ(roll->targets, std::vector<model::RigNodeIndex>{r.index("world::ctrls.world")}) << "the world space";
+        EXPECT_EQ(roll->targets, std::vector<model::RigNodeIndex>{r.index("world::ctrls.world")}) << "the ground space: the world control";
         EXPECT_EQ(r.rig.nodes[r.index("body::roots.xform")].parent, r.index("world::ctrls.move"));
     }
     model::GuideDocument guide = test::loadSample("vehicle");

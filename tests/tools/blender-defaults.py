@@ -3,7 +3,9 @@
 # extras rig.defaults), then imports GLB with Blender's glTF importer and FBX
 # with its FBX importer and finds them again as custom properties: the glTF
 # node extras as the empty's "rig" property (its "defaults" group), the FBX
-# user properties as "rig_default_<channel>". Prints one CHECK line per file;
+# user properties as "rig_default_<channel>"; and the controllers' attributes
+# (extras rig.attributes; FBX user properties named like the attribute, an
+# enum read as its label). Prints CHECK lines per file;
 # any difference is an ERROR line and exit code 1.
 # usage: blender -b --factory-startup --python blender-defaults.py -- FILE.glb FILE.fbx
 import json
@@ -86,17 +88,66 @@ def from_fbx(obj):
     return got or None
 
 
-expected = expected_defaults(glb_json(glb_path))
+def expected_attributes(gltf):
+    """{controller: {attribute: value, or its label for an enum}} from the glb's extras."""
+    out = {}
+    for node in gltf['nodes']:
+        rig = node.get('extras', {}).get('rig', {})
+        if rig.get('kind') == 'controller' and rig.get('attributes'):
+            out[node['name']] = {name: (a['labels'][int(round(a['value']))] if a.get('labels') else a['value'])
+                                 for name, a in rig['attributes'].items()}
+    return out
+
+
+def compare_attributes(label, expected, read):
+    objects = {o.name: o for o in bpy.data.objects}
+    values = 0
+    for name, attributes in expected.items():
+        obj = objects.get(name)
+        if obj is None:
+            failures.append(f'{label}: no object {name}')
+            continue
+        for attribute, value in attributes.items():
+            got = read(obj, attribute)
+            if got is None:
+                failures.append(f'{label}: {name} lacks its attribute {attribute} among {list(obj.keys())}')
+            elif isinstance(value, str) != isinstance(got, str) or \
+                    (got != value if isinstance(value, str) else abs(float(got) - value) > TOLERANCE):
+                failures.append(f'{label}: {name}.{attribute} is {got!r} instead of {value!r}')
+            values += 1
+    print(f'CHECK {label}: {len(expected)} controllers with attributes, {values} attribute values read back')
+
+
+def gltf_attribute(obj, attribute):
+    rig = obj.get('rig')
+    if rig is None or 'attributes' not in rig.keys() or attribute not in rig['attributes'].keys():
+        return None
+    a = rig['attributes'][attribute]
+    labels = list(a['labels']) if 'labels' in a.keys() else None
+    return labels[int(round(a['value']))] if labels else float(a['value'])
+
+
+def fbx_attribute(obj, attribute):
+    return obj.get(attribute)
+
+
+gltf = glb_json(glb_path)
+expected = expected_defaults(gltf)
+attributes = expected_attributes(gltf)
+if not attributes:
+    print('NOTE the glb has no controller attributes')
 if not expected:
     failures.append('the glb has no controller nodes (built without --controllers?)')
 
 clear_scene()
 bpy.ops.import_scene.gltf(filepath=glb_path)
 compare('glTF ' + glb_path, expected, from_gltf)
+compare_attributes('glTF ' + glb_path, attributes, gltf_attribute)
 
 clear_scene()
 bpy.ops.import_scene.fbx(filepath=fbx_path)
 compare('FBX ' + fbx_path, expected, from_fbx)
+compare_attributes('FBX ' + fbx_path, attributes, fbx_attribute)
 
 for f in failures[:40]:
     print('ERROR ' + f)

@@ -138,15 +138,15 @@ public:
     }
 
 private:
-    // What the wheel travels over: the rig's space named by `hook` (the world
-    // control of world.default by default), else the rig's root.
+    // What the wheel travels over: the rig's space named by `hook` (the
+    // world templates' `ground`, their world control, by default), else the rig's root.
     static RigNodeIndex reference(BuildContext& ctx)
     {
         const std::string name = ctx.optionString("hook");
         if (!name.empty()) {
             if (const RigNodeIndex space = ctx.space(name); space != model::kNoNode)
                 return space;
-            if (name != "world")
+            if (name != "ground")
                 ctx.warning("the rig has no space '" + name + "': the wheel rolls as it moves in the rig's root", "hook");
         }
         return topOf(ctx, ctx.hookNode());

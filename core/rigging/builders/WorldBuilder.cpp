@@ -1,6 +1,21 @@
 // world.character / world.prop: the base structure of every rig (seed 004).
 // world.default (Mikan's default root) is WorldDefaultBuilder below.
 //
+// The spaces every world template names for other templates' space switches:
+//  - `world`: what carries the whole rig, following the world and move
+//    controllers (and the character's scale and post scale), but no body part.
+//    Limbs hang their IK and pole space groups under it, so an IK control in
+//    `world` stays planted while the body moves and is carried when the
+//    animator places the character. Not the scene origin (the IK would stay
+//    behind when the character is placed) and not Mikan's `space.world`, the
+//    world controller alone (Mikan's limbs default to their hook and offer
+//    world and move apart; ours default to `world`, so moving the move
+//    controller would leave hands and feet behind).
+//  - `ground`: the world controller alone, what the rig travels over (a
+//    wheel rolls as it moves relative to it): Mikan's `space.world`.
+//  - `move`: the move controller.
+//  - `root`: where children hang.
+//
 //   root_gp
 //   ├─ ctrl_gp > world (all) > move (sub) > scale > post_transform > fly   <- children hook here
 //   ├─ joint_gp > root skin joint (follows the post transform)
@@ -59,7 +74,8 @@ public:
         // Seed 004: world and move translate and turn; only the scale control scales.
         const auto worldNode = control("world", ctrlGroup, worldFrame, world);
         kit::animate(ctx, worldNode, kit::kTranslate | kit::kRotate);
-        model::RigNodeIndex top = control("move", worldNode, worldFrame, world);
+        const auto moveNode = control("move", worldNode, worldFrame, world);
+        model::RigNodeIndex top = moveNode;
         kit::animate(ctx, top, kit::kTranslate | kit::kRotate);
         if (ctx.optionBool("do_scale")) {
             top = control("scale", top, worldFrame, world);
@@ -82,8 +98,11 @@ public:
 
         ctx.setHook(world, worldNode);
         ctx.setHook(root, anchor);
-        ctx.defineSpace("world", post);
+        ctx.defineSpace("world", post); // see the top of the file
+        ctx.defineSpace("ground", worldNode);
+        ctx.defineSpace("move", moveNode);
         ctx.defineSpace("root", anchor);
+        ctx.defineSpace("joint", jointGroup); // where isolate_skin hangs the top skin joints (Mikan's ::bind)
         ctx.defineSpace("setup", setupGroup);
         ctx.defineSpace("model", modelGroup);
         if (ctx.optionBool("do_skin")) {
@@ -95,13 +114,12 @@ public:
 };
 
 // world.default, Mikan's default root: a world controller and a move
-// controller under it at the one guide joint, nothing else. The spaces `world`
-// (the world control: what stays put while the rig travels, e.g. the ground a
-// wheel rolls on) and `move` (the move control) are named for other templates'
-// space switches, `root` too (the move control, or the hook group), so limbs'
-// `root` spaces find it. With the `hook` option the children hang under a
-// group beside the controls that follows the move control (Mikan's
-// hook_move: a flat hierarchy), otherwise under the move control itself.
+// controller under it at the one guide joint, nothing else. It names the
+// spaces of the top of the file: `world` and `root` are the move control (or
+// the hook group), `ground` the world control, `move` the move control. With
+// the `hook` option the children hang under a group beside the controls that
+// follows the move control (Mikan's hook_move: a flat hierarchy), otherwise
+// under the move control itself.
 class WorldDefaultBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
@@ -125,7 +143,8 @@ public:
             ctx.addConstraint("cns.hook", {anchor}, {moveNode}, model::ParentConstraint{});
         }
         ctx.setHook(world, anchor);
-        ctx.defineSpace("world", worldNode);
+        ctx.defineSpace("world", anchor); // see the top of the file
+        ctx.defineSpace("ground", worldNode);
         ctx.defineSpace("move", moveNode);
         ctx.defineSpace("root", anchor);
         if (ctx.optionBool("do_skin")) // the export skeleton's one root, which child templates' skin joints hang under
