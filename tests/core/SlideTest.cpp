@@ -3,7 +3,7 @@
 // every joint lies on the curve and keeps its spacing along the arc; the slide
 // stops at its limits; moving a spline controller or a tweaker bends the path;
 // stretch keeps each joint's share of the curve; the right branch mirrors the
-// left; an incremental rebuild after each edit is the full build. The curve is the one model::SplineConstraint documents (a cubic
+// left; isolate_skin changes nothing of the skin's motion; an incremental rebuild after each edit is the full build. The curve is the one model::SplineConstraint documents (a cubic
 // Hermite through its targets, tangents along their rest chain direction
 // turned with them, scaled by the chord), evaluated here on its own and
 // sampled finely. The rail case (two guide joints) is the vehicle's door
@@ -283,6 +283,27 @@ TEST(SlideRig, AnIncrementalRebuildAfterEachEditIsTheFullBuild)
     compare("a guide joint moved");
     guide.instance(track)->options["controls"] = 4;
     compare("four controllers");
+}
+
+TEST(SlideRig, WithIsolateSkinTheSkinJointsSlideAsWithout)
+{
+    model::GuideDocument isolated = curveGuide();
+    isolated.instance(isolated.instanceNamed("track")->id)->options["isolate_skin"] = Value(true);
+    PosedRig plain(curveGuide()), r(isolated);
+    ASSERT_TRUE(plain.ok() && r.ok());
+    EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
+    EXPECT_NE(r.rig.nodes[r.rig.nodes[r.index(skin("L", 1))].parent].path, "track.L::ctrls.fk.1") << "the skin hangs from skin";
+    for (PosedRig* rig : {&plain, &r}) {
+        Pose pose = rig->defaults();
+        pose[rig->channel("track.L::ctrls.spline.0", "slide")] = 0.3;
+        pose[rig->channel("track.L::ctrls.spline.1", "ty")] = 0.1;
+        pose[rig->channel("track.L::ctrls.fk.2", "rz")] = 20.0;
+        rig->evaluate(pose);
+    }
+    for (int i = 0; i < kSliders; ++i)
+        EXPECT_LT(maxAbsDifference(r.state().world[r.index(skin("L", i))].matrix(), plain.state().world[plain.index(skin("L", i))].matrix()),
+                  1e-9)
+            << i;
 }
 
 TEST(SlideRig, TheRightBranchMirrorsTheLeft)
