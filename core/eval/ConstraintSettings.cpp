@@ -56,6 +56,11 @@ public:
     {
         m_c.stretchChannel = optionalChannel(s.stretch, "stretch");
         m_c.volumeChannel = optionalChannel(s.volume, "volume");
+        m_c.slideChannel = optionalChannel(s.slide, "slide");
+        // A sliding chain's joints travel the whole curve: a finer arc-length
+        // table keeps their spacing along a bent path to 1e-5 m.
+        if (s.slide)
+            m_c.samplesPerSegment = 48;
     }
     void operator()(const model::SpaceConstraint& s)
     {

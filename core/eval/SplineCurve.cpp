@@ -101,10 +101,14 @@ double arcAt(const std::vector<double>& arc, int perSegment, int count, double u
 }
 
 // The parameter where the arc length reaches `length`; `beyond` gets what is
-// left past the curve's end.
+// left past the curve's end (negative: before its start).
 double parameterAt(const std::vector<double>& arc, int perSegment, int count, double length, double& beyond)
 {
     beyond = 0.0;
+    if (length < 0.0) {
+        beyond = length;
+        return 0.0;
+    }
     if (length >= arc[count - 1]) {
         beyond = length - arc[count - 1];
         return double(count - 1) / perSegment;
@@ -172,8 +176,11 @@ void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state
     const double stretch = c.stretchChannel >= 0 ? std::clamp(pose[c.stretchChannel], 0.0, 1.0) : 1.0;
     const int count = c.samplesPerSegment * (k.count - 1) + 1;
     const double volume = c.volumeChannel >= 0 ? std::clamp(pose[c.volumeChannel], 0.0, 1.0) : 0.0;
-    if (stretch < 1.0 || volume > 0.0)
+    const double slide = c.slideChannel >= 0 ? pose[c.slideChannel] : 0.0;
+    if (stretch < 1.0 || volume > 0.0 || slide != 0.0)
         arcTable(k, c.samplesPerSegment, state.arcLengths);
+    // Slid with the stretch, the shift grows with the curve as the joints' spacing does.
+    const double stretchedSlide = slide != 0.0 && c.restLength > 0.0 ? slide * state.arcLengths[count - 1] / c.restLength : 0.0;
     // Volume: the chain's stretch (by the stretch share) thins it across, a squash thickens it.
     double across = 1.0;
     if (volume > 0.0 && c.restLength > 0.0) {
@@ -181,15 +188,20 @@ void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state
         across = std::pow(s, -0.5 * volume);
     }
     for (std::size_t j = 0; j < c.driven.size(); ++j) {
-        double u = c.parameters[j], beyond = 0.0;
+        double u = c.parameters[j], beyond = 0.0, stretchedBeyond = 0.0;
+        if (slide != 0.0 && stretch > 0.0) {
+            const double at = arcAt(state.arcLengths, c.samplesPerSegment, count, u) + stretchedSlide;
+            u = parameterAt(state.arcLengths, c.samplesPerSegment, count, at, stretchedBeyond);
+        }
         if (stretch < 1.0) {
-            const double kept = parameterAt(state.arcLengths, c.samplesPerSegment, count, c.restArc[j] * scale, beyond);
+            const double kept = parameterAt(state.arcLengths, c.samplesPerSegment, count, (c.restArc[j] + slide) * scale, beyond);
             u = kept + (u - kept) * stretch;
             beyond *= 1.0 - stretch;
         }
+        beyond += stretchedBeyond * stretch;
         Vec3 position, derivative;
         curveAt(k, u, position, derivative);
-        if (beyond > 0.0 && glm::length(derivative) > 1e-12)
+        if (beyond != 0.0 && glm::length(derivative) > 1e-12)
             position += glm::normalize(derivative) * beyond;
         Affine& driven = world[c.driven[j]];
         driven = compose(frameAt(c, k, u, derivative), Vec3(scale), position) * c.curveOffsets[j];

@@ -5,7 +5,8 @@
 // parameter slerps the controls' rotations and turns them onto the curve
 // tangent. Each driven joint keeps its rest parameter and its rest offset from
 // the curve frame; without stretch it keeps its rest arc length instead (the
-// chain slides along the curve), and the stretch channel blends the two.
+// chain slides along the curve), and the stretch channel blends the two. The
+// slide channel moves every joint along the curve by metres of arc (rig.slide).
 #include "eval/Solvers.h"
 
 namespace rs::eval {

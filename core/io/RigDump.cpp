@@ -124,6 +124,7 @@ public:
     {
         field("stretch", attributeText(m_rig, s.stretch));
         field("volume", attributeText(m_rig, s.volume));
+        field("slide", attributeText(m_rig, s.slide));
     }
     void operator()(const model::SpaceConstraint& s)
     {

@@ -84,6 +84,7 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
             } else if constexpr (std::is_same_v<T, SplineConstraint>) {
                 optionalRef(settings.stretch);
                 optionalRef(settings.volume);
+                optionalRef(settings.slide);
             } else if constexpr (std::is_same_v<T, SpaceConstraint>) {
                 ref(settings.choice);
             } else if constexpr (std::is_same_v<T, VisibilityConstraint>) {

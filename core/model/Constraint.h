@@ -130,10 +130,10 @@ struct TwistConstraint {
     bool operator==(const TwistConstraint&) const = default;
 };
 
-// Spline IK (spines, necks, tails): driven is a chain, root first; targets are
-// 2 to 16 controls a cubic curve passes through (tangents along the controls'
-// rest chain direction, its frame blending their rotations). Each joint keeps
-// its rest offset from the curve frame.
+// Spline IK (spines, necks, tails, rig.slide's sliding chains): driven is a
+// chain, root first; targets are 2 to 16 controls a cubic curve passes through
+// (tangents along the controls' rest chain direction, its frame blending their
+// rotations). Each joint keeps its rest offset from the curve frame.
 struct SplineConstraint {
     // Clamped to [0, 1]. 1: each joint keeps its rest curve parameter, so the
     // chain stretches with the curve; 0: each keeps its rest arc length, so the
@@ -145,6 +145,12 @@ struct SplineConstraint {
     // s^(-volume / 2). The last keeps its size, so what hangs on it (a neck,
     // arms) does too. Clamped to [0, 1]. None: 0.
     std::optional<AttributeRef> volume{};
+    // Slides the driven chain along the curve by this many metres of arc
+    // (times the chain parent's scale; forward towards the last control,
+    // negative back): each joint's arc position moves by it, and with stretch
+    // by it times the curve's length over its rest length. A joint slid past
+    // an end of the curve goes on straight along the end's tangent. None: 0.
+    std::optional<AttributeRef> slide{};
     bool operator==(const SplineConstraint&) const = default;
 };
 

@@ -56,7 +56,8 @@ private:
                                                          optionalAttribute("volume"), optionalAttribute("pin")};
         if (kind == "twist") return model::TwistConstraint{number("fraction"), flag("non_rolling")};
         if (kind == "visibility") return visibility();
-        if (kind == "spline") return model::SplineConstraint{optionalAttribute("stretch"), optionalAttribute("volume")};
+        if (kind == "spline") return model::SplineConstraint{optionalAttribute("stretch"), optionalAttribute("volume"),
+                                                                             optionalAttribute("slide")};
         if (kind == "space") return model::SpaceConstraint{attribute("choice"), flag("orient_only"), flag("keep_offset")};
         if (kind == "drive") return drive();
         if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};

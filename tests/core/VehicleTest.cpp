@@ -2,8 +2,9 @@
 // evaluated vehicle sample (issue 22 item 7): wheels that roll d / radius as
 // the vehicle travels d metres (the world control carries them without
 // rolling), a manual spin on top, a door sliding on its rail within its
-// limits, a camera that aims at its target and rolls, and world.default's
-// spaces.
+// limits, a rear roller shutter sliding up its curved track (rig.slide on a
+// curve; SlideTest checks the curve itself), a camera that aims at its target
+// and rolls, and world.default's spaces.
 #include "EvalTestSupport.h"
 #include "io/RigDump.h"
 
@@ -172,6 +173,32 @@ TEST(VehicleTemplates, TheDoorSlidesAlongItsRailWithinItsLimits)
     set(pose, r, "body::ctrls.xform", "ty", 0.1);
     r.evaluate(pose);
     EXPECT_NEAR(r.position("door::skin.slide").y - r.restPosition("door::skin.slide").y, 0.1, 1e-9);
+}
+
+TEST(VehicleTemplates, TheRearShutterSlidesUpItsCurvedTrackIntoTheRoof)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    const int slide = r.channel("shutter::ctrls.spline.0", "slide");
+    const auto& layout = r.program->channels();
+    const double open = layout.clamp(slide, 10.0);
+    EXPECT_NEAR(open, 0.7295, 1e-3) << "as far as the track's guides go past the top slat";
+    EXPECT_DOUBLE_EQ(layout.clamp(slide, -1.0), 0.0) << "closed at rest";
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(r.restPosition("shutter::skin." + std::to_string(i)).z, -2.15, 1e-9) << "closed: the slats hang down the back";
+    Pose pose = r.defaults();
+    pose[slide] = open;
+    r.evaluate(pose);
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 slat = r.position("shutter::skin." + std::to_string(i));
+        EXPECT_GT(slat.y, 0.99) << "open: slat " << i << " is up under the roof";
+        EXPECT_GT(slat.z, -2.0) << "open: slat " << i << " has gone forward along the roof";
+    }
+    // Open, it still rides on the body.
+    const Vec3 before = r.position("shutter::skin.1");
+    set(pose, r, "body::ctrls.xform", "ty", 0.1);
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("shutter::skin.1") - before - Vec3(0.0, 0.1, 0.0)), 1e-9);
 }
 
 TEST(VehicleTemplates, TheCameraAimsAtItsTargetAndRollsAboutItsViewAxis)

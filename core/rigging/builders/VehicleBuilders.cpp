@@ -1,7 +1,6 @@
-// wheel.legacy, rig.slide and util.camera: Mikan's templates for vehicles and
-// props. A wheel rolls by itself as it travels (model::RollConstraint), a
-// slide moves a control along a rail between limits in metres, a camera aims
-// at its target control with a roll.
+// wheel.legacy and util.camera: Mikan's templates for vehicles and props (and
+// rig.slide, in SlideBuilder.cpp). A wheel rolls by itself as it travels
+// (model::RollConstraint), a camera aims at its target control with a roll.
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
@@ -154,104 +153,6 @@ private:
     }
 };
 
-// --- rig.slide --------------------------------------------------------------
-
-int axisIndex(const std::string& name) { return name == "z" ? 2 : name == "y" ? 1 : 0; }
-
-// up_dir: auto (the world axis most across the rail) or a signed world axis.
-Vec3 upDirection(const std::string& choice, const Vec3& rail)
-{
-    static const std::array<std::pair<const char*, Vec3>, 6> axes = {{{"+x", {1, 0, 0}}, {"-x", {-1, 0, 0}}, {"+y", {0, 1, 0}},
-                                                                      {"-y", {0, -1, 0}}, {"+z", {0, 0, 1}}, {"-z", {0, 0, -1}}}};
-    for (const auto& [name, direction] : axes)
-        if (choice == name && glm::length(glm::cross(direction, rail)) > 1e-3)
-            return direction;
-    Vec3 best(1, 0, 0);
-    for (const auto& [name, direction] : axes)
-        if (std::abs(glm::dot(direction, rail)) < std::abs(glm::dot(best, rail)))
-            best = direction;
-    return best;
-}
-
-class SlideBuilder final : public TemplateBuilder {
-public:
-    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
-                                            const std::map<std::string, Value>& guides) const override
-    {
-        // The rail's start, where the slid part rests, and its end, `length` forward.
-        const double length = kit::guideNumber(guides, "length", 0.5);
-        std::vector<GuideJointSpec> specs;
-        kit::appendChain(specs, 2, Vec3(0.0), Vec3(0.0, 0.0, length));
-        return specs;
-    }
-
-    bool gather(const BuildContext& ctx) const override
-    {
-        const auto chain = kit::chainOfAtLeast(ctx, 2, "a slide", " (the rail's start and end)");
-        if (!chain)
-            return false;
-        if (ctx.optionString("aim") == ctx.optionString("up")) {
-            ctx.error("the aim and up axes of a slide must differ", "up");
-            return false;
-        }
-        return true;
-    }
-
-    void generate(BuildContext& ctx) const override
-    {
-        const auto chain = *ctx.structure("chain");
-        const Vec3 start = ctx.guidePosition(chain.front()), end = ctx.guidePosition(chain.back());
-        const double length = glm::length(end - start);
-        const Vec3 rail = (end - start) / length;
-        // The control's aim axis along the rail, its up axis towards up_dir.
-        const int aim = axisIndex(ctx.optionString("aim")), upAxis = axisIndex(ctx.optionString("up"));
-        const int third = 3 - aim - upAxis;
-        Vec3 up = upDirection(ctx.optionString("up_dir"), rail);
-        up = glm::normalize(up - rail * glm::dot(up, rail));
-        Mat4 frame(1.0);
-        frame[aim] = Vec4(rail, 0.0);
-        frame[upAxis] = Vec4(up, 0.0);
-        const bool cyclic = upAxis == (aim + 1) % 3;
-        frame[third] = Vec4(cyclic ? glm::cross(rail, up) : glm::cross(up, rail), 0.0);
-        frame[3] = Vec4(start, 1.0);
-
-        const auto slide = kit::addControl(ctx, "slide", "", {}, ctx.hookNode(), frame, chain.front());
-        kit::addSkin(ctx, "slide", "", {}, slide.ctrl, frame, chain.front());
-        for (JointId joint : chain) // what hangs on the rail rides on the slide
-            ctx.setHook(joint, slide.ctrl);
-        if (slide.ctrl == slide.offset)
-            return;
-
-        double low = ctx.optionFloat("limit_min"), high = ctx.optionFloat("limit_max");
-        if (high < 0.0)
-            high = length;
-        if (low > high) {
-            ctx.warning("limit_min (" + std::to_string(low) + " m) is above limit_max (" + std::to_string(high) + " m): the slide is held at limit_min", "limit_min");
-            high = low;
-        }
-        model::ChannelSettings& channels = ctx.channels(slide.ctrl);
-        channels.limit(kTranslate + aim, low, high);
-        // Animators slide it along the rail (and off it with do_translate), turn it, and scale it with do_scale.
-        std::uint16_t animatable = std::uint16_t(1u << (kTranslate + aim)) | kit::kRotate;
-        if (ctx.optionBool("do_translate"))
-            animatable |= kit::kTranslate;
-        if (ctx.optionBool("do_scale"))
-            animatable |= kit::kScale;
-        kit::animate(ctx, slide, animatable);
-        if (!ctx.optionBool("do_translate")) {
-            channels.lock(kTranslate + upAxis);
-            channels.lock(kTranslate + third);
-        }
-        if (!ctx.optionBool("do_scale"))
-            channels.lock(kScale, 3);
-        std::string order = ctx.optionString("rotate_order");
-        if (order == "auto")
-            order = std::string{"xyz"[aim], "xyz"[upAxis], "xyz"[third]};
-        if (const auto parsed = model::parseRotateOrder(order))
-            channels.rotateOrder = *parsed;
-    }
-};
-
 // --- util.camera ------------------------------------------------------------
 
 class CameraBuilder final : public TemplateBuilder {
@@ -327,7 +228,6 @@ public:
 } // namespace
 
 std::unique_ptr<TemplateBuilder> makeWheelBuilder() { return std::make_unique<WheelBuilder>(); }
-std::unique_ptr<TemplateBuilder> makeSlideBuilder() { return std::make_unique<SlideBuilder>(); }
 std::unique_ptr<TemplateBuilder> makeCameraBuilder() { return std::make_unique<CameraBuilder>(); }
 
 } // namespace rs::rigging

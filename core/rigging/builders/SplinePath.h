@@ -1,0 +1,34 @@
+#pragma once
+// The pieces of a spline rig that rig.spline and rig.slide share: the spline
+// controllers spread along a guide chain, and the driven chain with its skin
+// joints that a model::SplineConstraint moves along the curve.
+#include "rigging/TemplateBuilder.h"
+
+#include <vector>
+
+namespace rs::rigging::spline {
+
+// The Z axis of a chain's root guide: the bend axis used where the chain is straight.
+Vec3 rootNormal(const BuildContext& ctx, model::JointId root);
+
+struct Controls {
+    std::vector<model::RigNodeIndex> nodes; // "ctrls.spline.<i>", each under the previous one
+    std::vector<double> at;                 // each one's length along the guides from the first guide, metres
+    std::vector<double> along;              // each guide joint's length along the guides, metres
+};
+// `count` controllers spread evenly by length along the guide chain (`points`,
+// with `frames` from kit::chainFrames), the first under `parent`; animators
+// place and turn them.
+Controls addControls(BuildContext& ctx, const std::vector<model::JointId>& chain, const std::vector<Vec3>& points,
+                     const std::vector<Mat4>& frames, int count, model::RigNodeIndex parent);
+
+// A driven joint ("drv.<i>", each under the previous one, the first under the
+// instance's hook) and a skin joint on it ("skin.<i>") at each of `frames`;
+// chain[i] hooks on drv.<i>. With `fk`, an FK control ("ctrls.fk.<i>",
+// rotations) rides on each driven joint and carries its skin joint and hook,
+// so animators turn each joint on top of the curve. Returns the driven
+// joints, for the constraint.
+std::vector<model::RigNodeIndex> addDrivenChain(BuildContext& ctx, const std::vector<model::JointId>& chain,
+                                                const std::vector<Mat4>& frames, bool fk = false);
+
+} // namespace rs::rigging::spline
