@@ -5,6 +5,7 @@
 // for comparison.
 #include "EvalTestSupport.h"
 #include "io/ExportScene.h"
+#include "io/RangeOfMotion.h"
 #include "io/RigExport.h"
 
 #include <gtest/gtest.h>
@@ -247,6 +248,54 @@ TEST(WheelRoll, ExportsRollAlongTheClipInTimeOrderAndAreByteIdentical)
     const std::string bytes = fileBytes(first);
     EXPECT_GT(bytes.size(), 1000u);
     EXPECT_TRUE(bytes == fileBytes(second)) << "two exports of the same clips differ";
+}
+
+// The export's range of motion refines the samples where a node turns far
+// between two keys (the wheels do): every whole-frame sample, refined or
+// not, must be what evaluating the clip's samples in time order gives.
+TEST(WheelRoll, TheRangeOfMotionIsEvaluatedInTimeOrderWhereItsSamplesAreRefined)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    io::ExportOptions options;
+    options.rangeOfMotion = true;
+    auto prepared = io::prepareExport(r.rig, options);
+    ASSERT_TRUE(prepared.scene) << formatAll(prepared.report);
+    ASSERT_FALSE(prepared.scene->clips.empty());
+    const io::ExportClip& clip = prepared.scene->clips.front(); // from the plan's first key, a new state
+    ASSERT_TRUE(clip.name == "range_of_motion" || clip.name == "range_of_motion_1") << clip.name;
+    const std::string spin = r.rig.nodes[r.index("wheel_front.R::skin.spin")].name;
+    const io::ExportTrack* track = nullptr;
+    for (const auto& t : clip.tracks)
+        if (!t.controller && prepared.scene->joints[std::size_t(t.node)].name == spin) track = &t;
+    ASSERT_NE(track, nullptr);
+
+    const io::RangeOfMotionPlan plan = io::planRangeOfMotion(r.rig, *r.program, r.defaults());
+    const int step = io::framesPerKey(clip.framesPerSecond);
+    const eval::ChannelLayout& layout = r.program->channels();
+    eval::EvalState state = r.program->makeState();
+    int refined = 0;
+    for (std::size_t i = 0; i < clip.times.size(); ++i) {
+        const double frame = clip.times[i] * clip.framesPerSecond;
+        if (std::abs(frame - std::round(frame)) > 1e-6)
+            continue; // half way within a frame: not evaluated, the players' own interpolation
+        const auto whole = std::size_t(std::llround(frame));
+        const std::size_t k = std::min(whole / std::size_t(step), plan.keys.size() - 1);
+        Pose pose = plan.keys[k];
+        if (whole % std::size_t(step) != 0) { // a refined sample between keys k and k + 1
+            ++refined;
+            const double fraction = double(whole % std::size_t(step)) / step;
+            for (std::size_t c = 0; c < pose.size(); ++c)
+                if (layout[c].transform != eval::kRotateOrderChannel && !layout[c].isEnum())
+                    pose[c] += (plan.keys[k + 1][c] - pose[c]) * fraction;
+        }
+        r.program->evaluate(pose, state);
+        const Mat3 hub = state.world[r.index("wheel_front.R::skin.wheel")].rotation();
+        const Vec3 up = glm::transpose(hub) * glm::normalize(state.world[r.index("wheel_front.R::skin.spin")].rotation()[1]);
+        const Quat q = track->rotations[i];
+        EXPECT_LT(turnError(2.0 * std::atan2(q.x, q.w), std::atan2(up.z, up.y)), 1e-6) << "frame " << frame;
+    }
+    EXPECT_GT(refined, 0) << "no sample was refined: the test checks nothing the keys do not";
 }
 
 } // namespace
