@@ -4,9 +4,11 @@
 // evaluating trial poses, rebuilding, exporting. The stateless `roll: axis`
 // for comparison.
 #include "EvalTestSupport.h"
+#include "edit/GuideEdits.h"
 #include "io/ExportScene.h"
 #include "io/RangeOfMotion.h"
 #include "io/RigExport.h"
+#include "session/Session.h"
 
 #include <gtest/gtest.h>
 
@@ -30,12 +32,13 @@ const std::string kBody = "body::ctrls.xform";
 // How far the tyre has turned about its axle, radians in (-pi, pi]: its up
 // axis in the body's frame (the body only turns about Y here) turned towards
 // the body's forward.
-double rollOf(const eval::EvalState& state, const PosedRig& r, const std::string& wheel)
+double rollOf(const eval::EvalState& state, const model::Rig& rig, const std::string& wheel)
 {
-    const Mat3 body = state.world[r.index(kBody)].rotation();
-    const Vec3 up = glm::transpose(body) * glm::normalize(state.world[r.index(wheel + "::skin.spin")].rotation()[1]);
+    const Mat3 body = state.world[*rig.findPath(kBody)].rotation();
+    const Vec3 up = glm::transpose(body) * glm::normalize(state.world[*rig.findPath(wheel + "::skin.spin")].rotation()[1]);
     return std::atan2(up.z, up.y);
 }
+double rollOf(const eval::EvalState& state, const PosedRig& r, const std::string& wheel) { return rollOf(state, r.rig, wheel); }
 double rollOf(const PosedRig& r, const std::string& wheel) { return rollOf(r.state(), r, wheel); }
 
 // `actual` and `expected` as turns of a wheel: the same up to whole turns.
@@ -200,6 +203,39 @@ TEST(WheelRoll, ARebuildKeepsTheRollWithoutRollingForTheEdit)
     pose[rebuilt.channel(kBody, "tz")] = 0.8;
     rebuilt.program->evaluate(pose, state);
     EXPECT_NEAR(rollOf(state, rebuilt, "wheel_front.R"), 0.8 / kRadius, 1e-9) << "and rolls on from there";
+}
+
+TEST(WheelRoll, TheEditorRollsTheWheelsAsTheBodyIsDraggedAndKeepsTheRollAcrossARebuild)
+{
+    session::Session s(std::make_shared<templates::TemplateRegistry>(test::builtinTemplates()));
+    s.replaceDocument(test::loadSample("vehicle"));
+    s.build();
+    const model::RigNodeIndex body = *s.rig()->findPath(kBody);
+    const Mat4 rest = s.rig()->nodes[body].worldMatrix;
+    s.beginDrag(body);
+    for (int i = 1; i <= 10; ++i) { // the gizmo drags the body 60 cm forward
+        Mat4 world = rest;
+        world[3].z += 0.06 * i;
+        s.dragTo(body, world);
+    }
+    s.endDrag(body, "move body");
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(*s.evaluation(), *s.rig(), wheel), 0.6 / kRadius, 1e-9) << wheel;
+
+    // A guide edit moves the body's guide 5 cm forward: the live rebuild keeps
+    // the roll, and moving the wheels with the guide does not roll them.
+    const model::JointId joint = s.document().instanceNamed("body")->joints.front().id;
+    Transform moved = s.document().joint(joint)->local;
+    moved.translate.z += 0.05;
+    ASSERT_TRUE(test::succeeded(edit::setJointTransform(s.history(), joint, moved)));
+    EXPECT_NEAR(translationOf(s.evaluation()->worldMatrix(*s.rig()->findPath(kBody))).z - translationOf(rest).z, 0.65, 1e-9);
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(*s.evaluation(), *s.rig(), wheel), 0.6 / kRadius, 1e-9) << wheel;
+    // Undoing the drag brings the body back 60 cm: the wheels unroll.
+    s.history().undo();
+    s.history().undo();
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(*s.evaluation(), *s.rig(), wheel), 0.0, 1e-9) << wheel;
 }
 
 std::string fileBytes(const std::string& path)
