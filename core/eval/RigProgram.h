@@ -49,7 +49,7 @@ struct EvalState {
     // The pose evaluated last with its driven channels computed (driven keys,
     // model::DrivenKeyConstraint); empty when the rig has none.
     Pose channels;
-    // Per path-mode roll constraint (RigProgram::pathKey names it).
+    // Per path-mode roll constraint (RigProgram::pathKeys names them).
     std::vector<RollMemory> rolls;
     // Continues from `other`, a state of the same program: the next evaluation
     // rolls the wheels from where `other` left them (a tool's trial pose after
@@ -58,13 +58,6 @@ struct EvalState {
     {
         if (other.rolls.size() == rolls.size())
             std::copy(other.rolls.begin(), other.rolls.end(), rolls.begin());
-    }
-    // Forgets every previous position: the next evaluation rolls nothing
-    // (the accumulated angles stay).
-    void unanchorPaths()
-    {
-        for (RollMemory& memory : rolls)
-            memory.anchored = false;
     }
     Mat4 worldMatrix(model::RigNodeIndex node) const { return world[node].matrix(); }
 };
