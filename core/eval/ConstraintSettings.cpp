@@ -90,6 +90,8 @@ public:
         m_c.forward = static_cast<int>(s.forward);
         m_c.radius = s.radius;
         m_c.weightChannel = optionalChannel(s.amount, "amount");
+        m_c.pathSlot = s.mode == model::RollMode::Path ? 0 : -1; // numbered by RigProgram::compile
+        m_c.jump = s.jump;
     }
     void operator()(const model::AimConstraint& s)
     {

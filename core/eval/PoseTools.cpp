@@ -59,6 +59,8 @@ Result<Pose> noSuchNode(model::RigNodeIndex node) { return Result<Pose>::refused
 
 const EvalState& Posing::evaluate(const Pose& pose)
 {
+    if (m_follow)
+        m_state.continueFrom(*m_follow);
     m_program.evaluate(pose, m_state);
     return m_state;
 }

@@ -20,7 +20,13 @@ public:
 
     const model::Rig& rig() const { return m_rig; }
     const RigProgram& program() const { return m_program; }
+    // Evaluates `pose` into the scratch state. Rolling wheels (model::RollMode::Path)
+    // continue from the followed state when there is one (each trial pose a
+    // step after the one it shows, so a tool sees the wheels as displayed),
+    // else from this object's previous evaluation.
     const EvalState& evaluate(const Pose& pose);
+    // The state the session displays (kept alive by the caller); nullptr: none.
+    void follow(const EvalState* displayed) { m_follow = displayed; }
     const EvalState& state() const { return m_state; } // the last evaluation (tools evaluate too)
 
     // Channels of `nodes` (every channel when empty) back to their defaults.
@@ -50,6 +56,7 @@ private:
     const model::Rig& m_rig;
     const RigProgram& m_program;
     EvalState m_state;
+    const EvalState* m_follow = nullptr;
 };
 
 // A copy of `rig` whose world and local matrices are the evaluation of `pose`

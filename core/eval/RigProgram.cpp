@@ -113,7 +113,11 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
     p.m_constraints.reserve(rig.constraints.size());
     for (const model::RigConstraint& rc : rig.constraints) {
         p.m_constraints.push_back(compileConstraint(rc, rig, p.m_channels, rest, p.m_constraints, diagnostics));
-        const CompiledConstraint& c = p.m_constraints.back();
+        CompiledConstraint& c = p.m_constraints.back();
+        if (c.kind == model::ConstraintKind::Roll && c.pathSlot >= 0 && !c.driven.empty()) {
+            c.pathSlot = int(p.m_pathKeys.size());
+            p.m_pathKeys.push_back(rc.key);
+        }
         if (c.kind == model::ConstraintKind::Spline)
             p.m_maxSamples = std::max(p.m_maxSamples, std::size_t(c.samplesPerSegment) * c.targets.size() + 1);
     }
@@ -212,9 +216,21 @@ EvalState RigProgram::makeState() const
     state.arcLengths.resize(m_maxSamples);
     state.twistAngles.resize(m_constraints.size());
     state.visible.assign(m_nodes.size(), 1);
+    state.rolls.resize(m_pathKeys.size());
     if (!m_drivenKeys.empty())
         state.channels.resize(m_channels.size());
     return state;
+}
+
+void RigProgram::carryPaths(const RigProgram& previous, const EvalState& from, EvalState& state) const
+{
+    if (from.rolls.size() != previous.m_pathKeys.size() || state.rolls.size() != m_pathKeys.size())
+        return;
+    for (std::size_t i = 0; i < m_pathKeys.size(); ++i) {
+        const auto it = std::find(previous.m_pathKeys.begin(), previous.m_pathKeys.end(), m_pathKeys[i]);
+        if (it != previous.m_pathKeys.end())
+            state.rolls[i] = {Vec3(0.0), Vec3(0.0), from.rolls[std::size_t(it - previous.m_pathKeys.begin())].angleRadians, false};
+    }
 }
 
 const Pose& RigProgram::driveChannels(const Pose& given, EvalState& state) const

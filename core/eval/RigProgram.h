@@ -16,14 +16,28 @@
 #include "eval/Channels.h"
 #include "model/Rig.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace rs::eval {
 
 struct CompiledConstraint; // RigProgram.cpp / Solvers
 
+// What a wheel rolling along its path (model::RollMode::Path) remembers
+// between evaluations.
+struct RollMemory {
+    Vec3 centre{0.0};          // the wheel's centre at the previous evaluation, in its reference's frame (metres)
+    Vec3 rolling{0.0};         // its rolling direction then (unit, same frame; zero: none)
+    double angleRadians = 0.0; // the roll so far (auto_rotate included), unwrapped
+    bool anchored = false;     // false: no previous evaluation, the next one only records the centre
+};
+
 // Everything an evaluation writes: one world transform per rig node, plus the
-// scratch the spline solver reuses. Make it with RigProgram::makeState().
+// scratch the spline solver reuses, plus what stateful constraints remember
+// (the rolls). Make it with RigProgram::makeState(): a new state has rolled
+// nothing. Evaluations are steps in time for the rolls: evaluate a clip's
+// samples in time order from a new state, so the result depends on the clip
+// alone (exports do, io/ExportMotion.h).
 struct EvalState {
     std::vector<Affine> world;
     std::vector<double> arcLengths;
@@ -35,6 +49,16 @@ struct EvalState {
     // The pose evaluated last with its driven channels computed (driven keys,
     // model::DrivenKeyConstraint); empty when the rig has none.
     Pose channels;
+    // Per path-mode roll constraint (RigProgram::pathKeys names them).
+    std::vector<RollMemory> rolls;
+    // Continues from `other`, a state of the same program: the next evaluation
+    // rolls the wheels from where `other` left them (a tool's trial pose after
+    // the displayed one). No allocation; nothing when the programs differ.
+    void continueFrom(const EvalState& other)
+    {
+        if (other.rolls.size() == rolls.size())
+            std::copy(other.rolls.begin(), other.rolls.end(), rolls.begin());
+    }
     Mat4 worldMatrix(model::RigNodeIndex node) const { return world[node].matrix(); }
 };
 
@@ -51,6 +75,14 @@ public:
     std::size_t nodeCount() const { return m_nodes.size(); }
     std::size_t stepCount() const { return m_steps.size(); }
     EvalState makeState() const;
+    // The path-mode roll constraints (EvalState::rolls, in this order), by key.
+    const std::vector<NodeKey>& pathKeys() const { return m_pathKeys; }
+    bool hasPaths() const { return !m_pathKeys.empty(); } // an evaluation depends on the ones before
+    // After a rebuild: each roll of `state` (a new state of this program)
+    // whose constraint `previous` (the program before) also has, by key, takes
+    // its angle from `from`, unanchored, so the rebuilt wheels keep their
+    // turn and the rebuild itself (a guide edit moving them) rolls nothing.
+    void carryPaths(const RigProgram& previous, const EvalState& from, EvalState& state) const;
     // Evaluates every node's world transform for `pose` (m_channels.size() values).
     // Driven channels (driven keys) are computed from it first: their values in `pose` are ignored.
     void evaluate(const Pose& pose, EvalState& state) const;
@@ -90,6 +122,7 @@ private:
     static bool orderDrivenKeys(RigProgram& p, const model::Rig& rig, const std::vector<std::uint32_t>& drives,
                                 Diagnostics& diagnostics);
     std::size_t m_maxSamples = 0;
+    std::vector<NodeKey> m_pathKeys;
 };
 
 } // namespace rs::eval

@@ -202,13 +202,20 @@ void solveDrive(const CompiledConstraint& c, const Pose& pose, std::vector<Affin
     driven.linear[b] = columnB * cosine - columnA * sine;
 }
 
-// model::RollConstraint: the travel from rest along the wheel's forward axis,
-// in the reference's frame, turned into a rotation about its axle.
-void solveRoll(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
+// Right-multiplying by a rotation about local axis k mixes the other two columns.
+void turnAbout(Affine& node, int k, double angleRadians)
 {
-    const double amount = c.weightChannel >= 0 ? std::clamp(pose[c.weightChannel], 0.0, 1.0) : 1.0;
-    if (amount == 0.0)
-        return;
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    const double sine = std::sin(angleRadians), cosine = std::cos(angleRadians);
+    const Vec3 columnA = node.linear[a], columnB = node.linear[b];
+    node.linear[a] = columnA * cosine + columnB * sine;
+    node.linear[b] = columnB * cosine - columnA * sine;
+}
+
+// model::RollConstraint, axis mode: the travel from rest along the wheel's
+// forward axis, in the reference's frame, turned into a rotation about its axle.
+void solveAxisRoll(const CompiledConstraint& c, double amount, std::vector<Affine>& world)
+{
     Affine& driven = world[c.driven.front()];
     const Affine toReference = world[c.targets[0]].inverse();
     const Vec3 moved = toReference.apply(driven.translation) - c.restInReference;
@@ -217,14 +224,54 @@ void solveRoll(const CompiledConstraint& c, const Pose& pose, std::vector<Affine
     if (length < 1e-12)
         return;
     const double angle = amount * glm::dot(moved, forward / length) / c.radius;
-    if (angle == 0.0)
-        return;
-    // Right-multiplying by a rotation about local axis k mixes the other two columns.
-    const int k = c.axle, a = (k + 1) % 3, b = (k + 2) % 3;
-    const double sine = std::sin(angle), cosine = std::cos(angle);
-    const Vec3 columnA = driven.linear[a], columnB = driven.linear[b];
-    driven.linear[a] = columnA * cosine + columnB * sine;
-    driven.linear[b] = columnB * cosine - columnA * sine;
+    if (angle != 0.0)
+        turnAbout(driven, c.axle, angle);
+}
+
+// Path mode: the step the centre made since the previous evaluation, along
+// the rolling direction (the axle crossed with the reference's up, signed by
+// the forward axis), added to the roll so far. The step is measured along the
+// direction half way between the previous evaluation's and this one's: on a
+// turn it is the chord's own direction, so the roll matches the arc's length
+// to second order in the step's turn (the current direction alone drifts, at
+// every step, by the distance from the pivot times half the step's turn). A wheel
+// whose axle stands upright has no rolling direction: that step rolls nothing.
+void solvePathRoll(const CompiledConstraint& c, double amount, EvalState& state)
+{
+    Affine& driven = state.world[c.driven.front()];
+    const Affine toReference = state.world[c.targets[0]].inverse();
+    const Vec3 centre = toReference.apply(driven.translation);
+    Vec3 rolling = glm::cross(toReference.linear * driven.linear[c.axle], Vec3(0.0, 1.0, 0.0));
+    const double length = glm::length(rolling);
+    if (length > 1e-9) {
+        rolling /= length;
+        if (glm::dot(rolling, toReference.linear * driven.linear[c.forward]) < 0.0)
+            rolling = -rolling;
+    } else {
+        rolling = Vec3(0.0);
+    }
+    RollMemory& memory = state.rolls[std::size_t(c.pathSlot)];
+    if (memory.anchored && amount > 0.0 && length > 1e-9) {
+        const Vec3 step = centre - memory.centre;
+        const Vec3 between = memory.rolling + rolling;
+        const double half = glm::length(between);
+        if (glm::length(step) <= c.jump)
+            memory.angleRadians += amount * glm::dot(step, half > 1e-9 ? between / half : rolling) / c.radius;
+    }
+    memory.centre = centre;
+    memory.rolling = rolling;
+    memory.anchored = true;
+    if (memory.angleRadians != 0.0)
+        turnAbout(driven, c.axle, memory.angleRadians);
+}
+
+void solveRoll(const CompiledConstraint& c, const Pose& pose, EvalState& state)
+{
+    const double amount = c.weightChannel >= 0 ? std::clamp(pose[c.weightChannel], 0.0, 1.0) : 1.0;
+    if (c.pathSlot >= 0)
+        solvePathRoll(c, amount, state);
+    else if (amount != 0.0)
+        solveAxisRoll(c, amount, state.world);
 }
 
 } // namespace
@@ -278,6 +325,8 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         if (c.axle == c.forward || c.axle < 0 || c.axle > 2 || c.forward < 0 || c.forward > 2)
             return "its axle and forward axes must be two different axes of x, y, z";
         if (!(c.radius > 1e-9) || !std::isfinite(c.radius)) return "its radius must be positive";
+        if (!(c.jump >= 0.0)) return "its jump distance must not be negative";
+        if (c.jump == 0.0) c.jump = glm::two_pi<double>() * c.radius;
         c.restInReference = rest[c.targets[0]].inverse().apply(rest[c.driven.front()].translation);
         return {};
     case ConstraintKind::DrivenKey:
@@ -325,7 +374,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Drive: solveDrive(c, pose, world); break;
     case ConstraintKind::Ik: solveIk(c, pose, world); break;
     case ConstraintKind::Spline: solveSpline(c, pose, state); break;
-    case ConstraintKind::Roll: solveRoll(c, pose, world); break;
+    case ConstraintKind::Roll: solveRoll(c, pose, state); break;
     case ConstraintKind::Visibility: break; // RigProgram::evaluate writes EvalState::visible
     case ConstraintKind::DrivenKey: break;  // RigProgram::evaluate computes the driven channels first
     }

@@ -72,10 +72,14 @@ struct CompiledConstraint {
 
     // Roll: the driven's axle and forward axes (0 x, 1 y, 2 z), the wheel's
     // radius and its rest place in the reference's (targets[0]) rest frame.
-    // weightChannel is the roll's amount.
+    // weightChannel is the roll's amount. Path mode: its memory in
+    // EvalState::rolls (pathSlot, -1 in axis mode) and the longest step that
+    // rolls (metres, the circumference when the settings say 0).
     int axle = 0, forward = 2;
     double radius = 1.0;
     Vec3 restInReference{0.0};
+    int pathSlot = -1;
+    double jump = 0.0;
 };
 
 // Reads the typed settings of `rc` into `c` (its kind, driven and targets

@@ -219,11 +219,20 @@ constexpr double kMostTurnDot = 0.5;
 
 // Appends the samples strictly after `a` up to and including `b` (frames of
 // plan keys `keyA` and `keyA + 1`, `fractionA`/`fractionB` of the way between
-// them): where a node turns too far, the rig is evaluated again at the whole
-// frame half way; within one frame (a flip of the rig) the players' own
-// half-way transform is written, so every consumer turns the same way.
+// them, `b` the evaluation of `poseB`): where a node turns too far, the rig is
+// evaluated again at the whole frame half way; within one frame (a flip of
+// the rig) the players' own half-way transform is written, so every consumer
+// turns the same way.
+//
+// The rig is evaluated in time order: a rolling wheel (eval::RollMemory)
+// turns by the path between consecutive evaluations, so `state` holds the
+// rolls as `b` left them and `rollsA` as `a` left them. A frame evaluated
+// half way starts from `rollsA`, and `b` is evaluated again after it (only
+// for rigs with rolls: for the others it gives the same sample). On return
+// `state` holds the rolls of the last sample appended.
 void refineInto(std::vector<Sample>& out, Sample a, Sample b, double fractionA, double fractionB,
-                const eval::Pose& keyA, const eval::Pose& keyB, const eval::RigProgram& program,
+                const eval::Pose& keyA, const eval::Pose& keyB, const eval::Pose& poseB,
+                const std::vector<eval::RollMemory>& rollsA, const eval::RigProgram& program,
                 const Sampler& sampler, eval::EvalState& state, int depth)
 {
     if (depth < 8 && leastRotationDot(a, b) < kMostTurnDot) {
@@ -234,14 +243,25 @@ void refineInto(std::vector<Sample>& out, Sample a, Sample b, double fractionA, 
             midFrame = std::floor(0.5 * (a.frame + b.frame));
         if (midFrame > a.frame && midFrame < b.frame) {
             const double fraction = fractionA + (fractionB - fractionA) * (midFrame - a.frame) / (b.frame - a.frame);
-            Sample mid = sampleAt(midFrame, poseBetween(program.channels(), keyA, keyB, fraction), program, sampler, state);
-            refineInto(out, std::move(a), mid, fractionA, fraction, keyA, keyB, program, sampler, state, depth + 1);
-            refineInto(out, out.back(), std::move(b), fraction, fractionB, keyA, keyB, program, sampler, state, depth + 1);
+            const eval::Pose midPose = poseBetween(program.channels(), keyA, keyB, fraction);
+            const bool rolls = program.hasPaths();
+            if (rolls)
+                state.rolls = rollsA;
+            Sample mid = sampleAt(midFrame, midPose, program, sampler, state);
+            refineInto(out, std::move(a), mid, fractionA, fraction, keyA, keyB, midPose, rollsA, program, sampler, state,
+                       depth + 1);
+            const std::vector<eval::RollMemory> rollsMid = state.rolls;
+            if (rolls)
+                b = sampleAt(b.frame, poseB, program, sampler, state);
+            refineInto(out, out.back(), std::move(b), fraction, fractionB, keyA, keyB, poseB, rollsMid, program, sampler,
+                       state, depth + 1);
             return;
         }
+        // Nothing is evaluated within one frame: `state` stays as `b` left it.
         Sample mid = halfWay(a, b);
-        refineInto(out, std::move(a), mid, fractionA, fractionA, keyA, keyB, program, sampler, state, depth + 1);
-        refineInto(out, out.back(), std::move(b), fractionA, fractionB, keyA, keyB, program, sampler, state, depth + 1);
+        refineInto(out, std::move(a), mid, fractionA, fractionA, keyA, keyB, poseB, rollsA, program, sampler, state, depth + 1);
+        refineInto(out, out.back(), std::move(b), fractionA, fractionB, keyA, keyB, poseB, rollsA, program, sampler, state,
+                   depth + 1);
         return;
     }
     out.push_back(std::move(b));
@@ -262,8 +282,10 @@ ExportClip sampleClip(const std::string& name, const RangeOfMotionPlan& plan, st
     std::vector<Sample> samples;
     samples.push_back(sampleAt(0.0, plan.keys[first], program, sampler, state));
     for (std::size_t k = first; k < last; ++k) {
+        const std::vector<eval::RollMemory> rolls = state.rolls; // as the key before left them
         Sample next = sampleAt(double((k + 1 - first) * std::size_t(step)), plan.keys[k + 1], program, sampler, state);
-        refineInto(samples, samples.back(), std::move(next), 0.0, 1.0, plan.keys[k], plan.keys[k + 1], program, sampler, state, 0);
+        refineInto(samples, samples.back(), std::move(next), 0.0, 1.0, plan.keys[k], plan.keys[k + 1], plan.keys[k + 1],
+                   rolls, program, sampler, state, 0);
     }
     for (const Sample& sample : samples) {
         clip.times.push_back(sample.frame / framesPerSecond);

@@ -119,6 +119,8 @@ public:
         field("forward", model::axisName(s.forward));
         field("radius", number(s.radius));
         field("amount", attributeText(m_rig, s.amount));
+        field("mode", model::rollModeName(s.mode));
+        field("jump", number(s.jump));
     }
     void operator()(const model::SplineConstraint& s)
     {

@@ -44,6 +44,8 @@ const char* constraintKindName(ConstraintKind kind)
     return "parent";
 }
 
+const char* rollModeName(RollMode mode) { return mode == RollMode::Axis ? "axis" : "path"; }
+
 const char* showWhenName(ShowWhen when) { return when == ShowWhen::Above ? "above" : "below"; }
 
 const char* curveInfinityName(CurveInfinity infinity)

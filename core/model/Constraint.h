@@ -232,24 +232,42 @@ struct VisibilityConstraint {
 
 // A wheel rolling as it travels (wheel.legacy): driven[0] turns about its
 // local `axle` axis by amount * travel / radius radians, after its parent
-// placed it. travel is how far driven[0] has moved from its rest place along
-// its current `forward` axis, both measured in targets[0]'s frame: the ground
-// the vehicle travels over (the world control), so moving that reference
-// carries the wheel without rolling it, while moving the vehicle's or the
-// wheel's own controls rolls it. A positive travel turns it positively about
-// `axle`, which rolls it forward when its ground contact lies along
-// axle x forward from its centre (axle X, forward Z: the ground below, -Y);
-// the builder picks the axes so. Stateless: the roll is the displacement from
-// rest along the direction the wheel faces now, not the length of the path it
-// took (a vehicle that drives forward, turns and comes back unrolls). Exactly
-// one target; `axle` and `forward` must differ; `radius` must be positive.
+// placed it. Travel is measured in targets[0]'s frame: the ground the vehicle
+// travels over (the world control), so moving that reference carries the
+// wheel without rolling it, while moving the vehicle's or the wheel's own
+// controls rolls it. A positive travel turns it positively about `axle`, which
+// rolls it forward when its ground contact lies along axle x forward from its
+// centre (axle X, forward Z: the ground below, -Y); the builder picks the axes
+// so. How travel is measured (RollMode):
+//  - Path (Mikan's auto_rotate): the wheel accumulates. Each evaluation turns
+//    it by amount * (the step its centre made since the previous evaluation,
+//    projected on its rolling direction: perpendicular to its axle in the
+//    reference's ground plane, XZ, signed by `forward`) / radius. So the roll
+//    follows the path taken: a vehicle that turns keeps rolling on its new
+//    heading, one that comes back the way it went unrolls. The state lives in
+//    the evaluation state (eval::EvalState), not in the rig: a new state has
+//    rolled nothing, and its first evaluation only records where the wheel is.
+//    A step longer than `jump` metres (a scrub, a snap) rolls nothing.
+//  - Axis: stateless, the displacement from rest along the wheel's current
+//    `forward` axis (a vehicle that drives away, turns and comes back ends
+//    unrolled); every evaluation of a pose gives the same roll.
+// Exactly one target; `axle` and `forward` must differ; `radius` must be
+// positive; `jump` must not be negative.
+enum class RollMode : std::uint8_t { Path, Axis };
+const char* rollModeName(RollMode mode); // "path", "axis"
+
 struct RollConstraint {
     Axis axle = Axis::X;
     Axis forward = Axis::Z;
     double radius = 1.0; // metres, in the reference's rest frame (the rig's rest scale)
     // The share of the automatic roll, clamped to [0, 1] (Mikan's auto_rotate):
-    // 0 keeps the wheel still whatever it travels. None: 1.
+    // 0 keeps the wheel still whatever it travels. None: 1. In path mode it
+    // scales each step, so animating it stops the wheel where it is.
     std::optional<AttributeRef> amount{};
+    RollMode mode = RollMode::Path;
+    // Path mode: the longest step (metres, in the reference's frame) that still
+    // rolls the wheel; 0: one circumference (2 pi radius).
+    double jump = 0.0;
     bool operator==(const RollConstraint&) const = default;
 };
 

@@ -193,10 +193,12 @@ void Session::restoreSelection(const std::vector<NodeKey>& nodes, const std::vec
         }
 }
 
+// A rebuild keeps how far the wheels have rolled (eval::RigProgram::carryPaths):
+// the previous program and state live until the new ones are made.
 void Session::compileRig(std::optional<Result<eval::RigProgram>> program)
 {
     m_posing.reset();
-    m_program.reset();
+    std::unique_ptr<eval::RigProgram> previous = std::move(m_program);
     if (!m_rig)
         return;
     auto compiled = program ? std::move(*program) : eval::RigProgram::compile(*m_rig);
@@ -207,7 +209,11 @@ void Session::compileRig(std::optional<Result<eval::RigProgram>> program)
     }
     m_program = std::make_unique<eval::RigProgram>(compiled.take());
     m_posing = std::make_unique<eval::Posing>(*m_rig, *m_program);
-    m_evaluation = m_program->makeState();
+    m_posing->follow(&m_evaluation); // tools evaluate from the displayed wheels' roll
+    eval::EvalState state = m_program->makeState();
+    if (previous)
+        m_program->carryPaths(*previous, m_evaluation, state);
+    m_evaluation = std::move(state);
     poseFromDocument();
 }
 

@@ -61,7 +61,7 @@ private:
         if (kind == "space") return model::SpaceConstraint{attribute("choice"), flag("orient_only"), flag("keep_offset")};
         if (kind == "drive") return drive();
         if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
-        if (kind == "roll") return model::RollConstraint{axis("axle"), axis("forward"), number("radius"), optionalAttribute("amount")};
+        if (kind == "roll") return roll();
         if (kind == "driven_key") return drivenKey();
         ADD_FAILURE() << "unknown kind " << kind;
         return {};
@@ -92,6 +92,16 @@ private:
         else if (response == "past_break") d.response = model::DrivePastBreak{attribute("break")};
         else ADD_FAILURE() << "unknown drive response " << response;
         return d;
+    }
+
+    model::RollConstraint roll()
+    {
+        model::RollConstraint r{axis("axle"), axis("forward"), number("radius"), optionalAttribute("amount")};
+        const std::string mode = field("mode").as<std::string>();
+        if (mode != "path" && mode != "axis") ADD_FAILURE() << "unknown roll mode " << mode;
+        r.mode = mode == "axis" ? model::RollMode::Axis : model::RollMode::Path;
+        r.jump = number("jump");
+        return r;
     }
 
     model::DrivenKeyConstraint drivenKey()
@@ -165,8 +175,10 @@ model::ConstraintSettings asDumped(model::ConstraintSettings settings)
             round(s.fraction);
         if constexpr (std::is_same_v<S, model::VisibilityConstraint>)
             round(s.threshold);
-        if constexpr (std::is_same_v<S, model::RollConstraint>)
+        if constexpr (std::is_same_v<S, model::RollConstraint>) {
             round(s.radius);
+            round(s.jump);
+        }
         if constexpr (std::is_same_v<S, model::DrivenKeyConstraint>)
             for (model::CurveKey& key : s.keys) { round(key.in); round(key.out); }
         if constexpr (std::is_same_v<S, model::DriveConstraint>) {

@@ -1,10 +1,10 @@
 // Mikan's vehicle templates as an animator checks them on the built and
 // evaluated vehicle sample (issue 22 item 7): wheels that roll d / radius as
 // the vehicle travels d metres (the world control carries them without
-// rolling), a manual spin on top, a door sliding on its rail within its
-// limits, a rear roller shutter sliding up its curved track (rig.slide on a
-// curve; SlideTest checks the curve itself), a camera that aims at its target
-// and rolls, and world.default's spaces.
+// rolling; the path they take: WheelRollTest.cpp), a manual spin on top, a
+// door sliding on its rail within its limits, a rear roller shutter sliding up
+// its curved track (rig.slide on a curve; SlideTest checks the curve itself),
+// a camera that aims at its target and rolls, and world.default's spaces.
 #include "EvalTestSupport.h"
 #include "io/RigDump.h"
 
@@ -99,12 +99,18 @@ TEST(VehicleTemplates, AWheelsOwnControlRollsItAndItsSpinAndAutoRotateChannelsAd
     set(pose, r, wheel + "::ctrls.spin", "rx", 30.0);
     r.evaluate(pose);
     EXPECT_NEAR(rollOf(r, wheel), 0.2 / kRadius + glm::radians(30.0), 1e-9) << "the manual spin adds to the roll";
+    // The wheel rolls along its path: auto_rotate scales what it rolls from
+    // then on, and changing it alone turns nothing.
     set(pose, r, wheel + "::ctrls.wheel", "auto_rotate", 0.5);
     r.evaluate(pose);
-    EXPECT_NEAR(rollOf(r, wheel), 0.1 / kRadius + glm::radians(30.0), 1e-9) << "auto_rotate scales the automatic roll";
-    set(pose, r, wheel + "::ctrls.wheel", "auto_rotate", 0.0);
+    EXPECT_NEAR(rollOf(r, wheel), 0.2 / kRadius + glm::radians(30.0), 1e-9) << "auto_rotate alone turns nothing";
+    set(pose, r, wheel + "::ctrls.wheel", "tz", 0.4);
     r.evaluate(pose);
-    EXPECT_NEAR(rollOf(r, wheel), glm::radians(30.0), 1e-9) << "0: only the manual spin";
+    EXPECT_NEAR(rollOf(r, wheel), 0.3 / kRadius + glm::radians(30.0), 1e-9) << "auto_rotate scales the automatic roll";
+    set(pose, r, wheel + "::ctrls.wheel", "auto_rotate", 0.0);
+    set(pose, r, wheel + "::ctrls.wheel", "tz", 0.6);
+    r.evaluate(pose);
+    EXPECT_NEAR(rollOf(r, wheel), 0.3 / kRadius + glm::radians(30.0), 1e-9) << "0: it slides without rolling";
 }
 
 TEST(VehicleTemplates, TheBankControlsScaleFlattensTheWheelOntoTheGroundAsItRolls)

@@ -117,11 +117,17 @@ public:
         kit::addSkin(ctx, "wheel", "center", {}, wheel.ctrl, movedTo(frame, centre), axisJoint);
         const model::AttributeRef autoRotate = ctx.addAttribute(wheel.ctrl, "auto_rotate", 1.0, 0.0, 1.0);
 
-        // The roll: travel measured in the ground's frame (the `hook` space).
+        // The roll: travel measured in the ground's frame (the `hook` space),
+        // along the path (accumulated each evaluation) or from rest (`roll: axis`).
         const RigNodeIndex roll =
             kit::addSetup(ctx, RigNodeKind::Group, "mch.roll", "roll", {}, wheel.ctrl, movedTo(frame, centre), axisJoint);
+        const bool axisRoll = ctx.optionString("roll") == "axis";
+        const double jump = ctx.optionFloat("roll_jump"); // the manifest's min keeps it >= 0
         ctx.addConstraint("cns.roll", {roll}, {reference(ctx)},
-                          model::RollConstraint{.axle = model::Axis::X, .forward = model::Axis::Z, .radius = radius, .amount = autoRotate});
+                          model::RollConstraint{.axle = model::Axis::X, .forward = model::Axis::Z, .radius = radius,
+                                                .amount = autoRotate,
+                                                .mode = axisRoll ? model::RollMode::Axis : model::RollMode::Path,
+                                                .jump = std::max(jump, 0.0)});
         const auto spin = kit::addControl(ctx, "spin", "spin", {}, roll, movedTo(frame, centre), axisJoint);
         kit::animate(ctx, spin, std::uint16_t(1u << model::channelIndex("rx"))); // the manual spin
         if (spin.ctrl != spin.offset) { // the manual spin: rotate X only

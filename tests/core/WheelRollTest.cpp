@@ -1,0 +1,338 @@
+// wheel.legacy's roll along the path the wheel takes (model::RollMode::Path,
+// the default `roll: path`), as an animator checks it on the built and
+// evaluated vehicle sample: driving, turning, coming back, scrubbing, tools
+// evaluating trial poses, rebuilding, exporting. The stateless `roll: axis`
+// for comparison.
+#include "EvalTestSupport.h"
+#include "edit/GuideEdits.h"
+#include "io/ExportScene.h"
+#include "io/RangeOfMotion.h"
+#include "io/RigExport.h"
+#include "session/Session.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+namespace rs {
+namespace {
+
+using eval::Pose;
+using test::PosedRig;
+
+constexpr double kRadius = 0.35; // the sample's wheels
+const char* const kWheels[] = {"wheel_front.L", "wheel_front.R", "wheel_back.L", "wheel_back.R"};
+const std::string kBody = "body::ctrls.xform";
+
+// How far the tyre has turned about its axle, radians in (-pi, pi]: its up
+// axis in the body's frame (the body only turns about Y here) turned towards
+// the body's forward.
+double rollOf(const eval::EvalState& state, const model::Rig& rig, const std::string& wheel)
+{
+    const Mat3 body = state.world[*rig.findPath(kBody)].rotation();
+    const Vec3 up = glm::transpose(body) * glm::normalize(state.world[*rig.findPath(wheel + "::skin.spin")].rotation()[1]);
+    return std::atan2(up.z, up.y);
+}
+double rollOf(const eval::EvalState& state, const PosedRig& r, const std::string& wheel) { return rollOf(state, r.rig, wheel); }
+double rollOf(const PosedRig& r, const std::string& wheel) { return rollOf(r.state(), r, wheel); }
+
+// `actual` and `expected` as turns of a wheel: the same up to whole turns.
+double turnError(double actual, double expected) { return std::abs(std::remainder(actual - expected, glm::two_pi<double>())); }
+
+// Moves the body's channel `channel` from its value in `pose` to `to` in `steps` evaluations.
+void drive(PosedRig& r, Pose& pose, const std::string& channel, double to, int steps)
+{
+    const int c = r.channel(kBody, channel);
+    const double from = pose[c];
+    for (int i = 1; i <= steps; ++i) {
+        pose[c] = from + (to - from) * i / steps;
+        r.evaluate(pose);
+    }
+}
+
+model::GuideDocument vehicleWith(const std::string& option, Value value)
+{
+    model::GuideDocument guide = test::loadSample("vehicle");
+    for (const char* name : {"wheel_front", "wheel_back"})
+        guide.instance(guide.instanceNamed(name)->id)->options[option] = value;
+    return guide;
+}
+
+TEST(WheelRoll, DrivingOneMetreForwardInAHundredStepsTurnsEachWheelOneOverRadius)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    drive(r, pose, "tz", 1.0, 100);
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(r, wheel), 1.0 / kRadius, 1e-6) << wheel;
+}
+
+TEST(WheelRoll, DrivingTurningAndDrivingOnRollsEachWheelItsOwnPathLength)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    drive(r, pose, "tz", 1.0, 100);
+    drive(r, pose, "ry", 90.0, 100); // a turn in place, about the body control: +Z heads to +X
+    drive(r, pose, "tx", 1.0, 100);  // 1 m on the new heading
+    // Turning in place, a wheel d metres to the side of the pivot rolls d x
+    // the turn (backwards on the inside of the turn, forwards outside), so
+    // the two sides differ and their mean is the body's own 2 m.
+    const Vec3 pivot = r.restPosition(kBody);
+    double mean = 0.0;
+    for (const std::string wheel : kWheels) {
+        const double side = r.restPosition(wheel + "::mch.roll").x - pivot.x;
+        const double expected = (2.0 - side * glm::half_pi<double>()) / kRadius;
+        const double error = std::remainder(rollOf(r, wheel) - expected, glm::two_pi<double>());
+        EXPECT_LT(std::abs(error), 1e-3) << wheel << " rolled " << rollOf(r, wheel) << " (whole turns aside)";
+        mean += (expected + error) / 4.0; // whole turns counted
+    }
+    EXPECT_NEAR(mean, 2.0 / kRadius, 1e-3) << "the vehicle travelled 2 m";
+
+    // The stateless roll (roll: axis) only sees where the wheel is now, along
+    // the way it faces: the first metre, now across the wheel, counts for nothing.
+    PosedRig axis(vehicleWith("roll", Value(std::string("axis"))));
+    ASSERT_TRUE(axis.ok());
+    axis.evaluate(pose);
+    const double side = axis.restPosition("wheel_front.L::mch.roll").x - pivot.x;
+    const Vec3 centre = axis.position("wheel_front.L::mch.roll") - axis.restPosition("wheel_front.L::mch.roll");
+    EXPECT_NEAR(rollOf(axis, "wheel_front.L"), std::remainder(centre.x / kRadius, glm::two_pi<double>()), 1e-9);
+    EXPECT_GT(turnError(rollOf(axis, "wheel_front.L"), (2.0 - side * glm::half_pi<double>()) / kRadius), 0.1);
+}
+
+TEST(WheelRoll, GoingOutAndComingBackAlongTheSameLineEndsUnrolled)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    drive(r, pose, "tz", 1.5, 50);
+    EXPECT_GT(std::abs(rollOf(r, "wheel_back.R")), 0.5);
+    drive(r, pose, "tz", 0.0, 70);
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(r, wheel), 0.0, 1e-9) << wheel;
+}
+
+TEST(WheelRoll, AJumpLongerThanTheJumpDistanceDoesNotRoll)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    drive(r, pose, "tz", 0.5, 10);
+    // A scrub to 5 m (more than a circumference, 2.2 m): moved, not rolled.
+    pose[r.channel(kBody, "tz")] = 5.5;
+    r.evaluate(pose);
+    EXPECT_NEAR(r.position("wheel_front.L::mch.roll").z - r.restPosition("wheel_front.L::mch.roll").z, 5.5, 1e-9);
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(r, wheel), 0.5 / kRadius, 1e-9) << wheel;
+    // From there small steps roll again.
+    drive(r, pose, "tz", 5.8, 3);
+    EXPECT_NEAR(rollOf(r, "wheel_front.L"), 0.8 / kRadius, 1e-9);
+
+    // roll_jump raises the limit: the same scrub rolls.
+    PosedRig far(vehicleWith("roll_jump", Value(10.0)));
+    ASSERT_TRUE(far.ok());
+    Pose farPose = far.defaults();
+    farPose[far.channel(kBody, "tz")] = 5.0;
+    far.evaluate(farPose);
+    EXPECT_LT(turnError(rollOf(far, "wheel_front.L"), 5.0 / kRadius), 1e-9);
+}
+
+TEST(WheelRoll, ANewStateRollsNothingOnItsFirstEvaluationAndAxisModeIsStateless)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    pose[r.channel(kBody, "tz")] = 1.0;
+    eval::EvalState state = r.program->makeState();
+    r.program->evaluate(pose, state);
+    EXPECT_NEAR(rollOf(state, r, "wheel_front.L"), 0.0, 1e-12) << "no previous position: nothing to roll";
+    r.program->evaluate(pose, state);
+    EXPECT_NEAR(rollOf(state, r, "wheel_front.L"), 0.0, 1e-12) << "the same pose again: it has not moved";
+
+    PosedRig axis(vehicleWith("roll", Value(std::string("axis"))));
+    ASSERT_TRUE(axis.ok());
+    eval::EvalState fresh = axis.program->makeState();
+    axis.program->evaluate(pose, fresh);
+    EXPECT_NEAR(rollOf(fresh, axis, "wheel_front.L"), 1.0 / kRadius, 1e-9)
+        << "axis: the pose alone gives the roll";
+}
+
+TEST(WheelRoll, ToolsEvaluateTrialPosesFromTheDisplayedRollWithoutAdvancingIt)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    drive(r, pose, "tz", 0.6, 20);
+    const eval::EvalState& displayed = r.state();
+    eval::Posing tool(r.rig, *r.program);
+    tool.follow(&displayed);
+    // A trial pose a step further rolls from the displayed wheel, every time alike.
+    Pose trial = pose;
+    trial[r.channel(kBody, "tz")] = 0.7;
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(rollOf(tool.evaluate(trial), r, "wheel_back.L"), 0.7 / kRadius, 1e-9) << i;
+    // Placing the spin control (under the roll) where it is changes nothing.
+    const auto spin = r.index("wheel_back.L::ctrls.spin");
+    const Pose placed = tool.placeAt(pose, spin, displayed.worldMatrix(spin));
+    EXPECT_NEAR(placed[r.channel("wheel_back.L::ctrls.spin", "rx")], 0.0, 1e-6);
+    EXPECT_NEAR(rollOf(r, "wheel_back.L"), 0.6 / kRadius, 1e-9) << "the displayed state did not move";
+}
+
+TEST(WheelRoll, ARebuildKeepsTheRollWithoutRollingForTheEdit)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    drive(r, pose, "tz", 0.6, 20);
+    // The body's guide moves 10 cm forward: the rebuilt wheels sit further on.
+    model::GuideDocument guide = test::loadSample("vehicle");
+    guide.instance(guide.instanceNamed("body")->id)->joints.front().local.translate.z += 0.1;
+    PosedRig rebuilt(guide);
+    ASSERT_TRUE(rebuilt.ok());
+    eval::EvalState state = rebuilt.program->makeState();
+    rebuilt.program->carryPaths(*r.program, r.state(), state);
+    rebuilt.program->evaluate(pose, state);
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(state, rebuilt, wheel), 0.6 / kRadius, 1e-9) << wheel;
+    pose[rebuilt.channel(kBody, "tz")] = 0.8;
+    rebuilt.program->evaluate(pose, state);
+    EXPECT_NEAR(rollOf(state, rebuilt, "wheel_front.R"), 0.8 / kRadius, 1e-9) << "and rolls on from there";
+}
+
+TEST(WheelRoll, TheEditorRollsTheWheelsAsTheBodyIsDraggedAndKeepsTheRollAcrossARebuild)
+{
+    session::Session s(std::make_shared<templates::TemplateRegistry>(test::builtinTemplates()));
+    s.replaceDocument(test::loadSample("vehicle"));
+    s.build();
+    const model::RigNodeIndex body = *s.rig()->findPath(kBody);
+    const Mat4 rest = s.rig()->nodes[body].worldMatrix;
+    s.beginDrag(body);
+    for (int i = 1; i <= 10; ++i) { // the gizmo drags the body 60 cm forward
+        Mat4 world = rest;
+        world[3].z += 0.06 * i;
+        s.dragTo(body, world);
+    }
+    s.endDrag(body, "move body");
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(*s.evaluation(), *s.rig(), wheel), 0.6 / kRadius, 1e-9) << wheel;
+
+    // A guide edit moves the body's guide 5 cm forward: the live rebuild keeps
+    // the roll, and moving the wheels with the guide does not roll them.
+    const model::JointId joint = s.document().instanceNamed("body")->joints.front().id;
+    Transform moved = s.document().joint(joint)->local;
+    moved.translate.z += 0.05;
+    ASSERT_TRUE(test::succeeded(edit::setJointTransform(s.history(), joint, moved)));
+    EXPECT_NEAR(translationOf(s.evaluation()->worldMatrix(*s.rig()->findPath(kBody))).z - translationOf(rest).z, 0.65, 1e-9);
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(*s.evaluation(), *s.rig(), wheel), 0.6 / kRadius, 1e-9) << wheel;
+    // Undoing the drag brings the body back 60 cm: the wheels unroll.
+    s.history().undo();
+    s.history().undo();
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(*s.evaluation(), *s.rig(), wheel), 0.0, 1e-9) << wheel;
+}
+
+std::string fileBytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(WheelRoll, ExportsRollAlongTheClipInTimeOrderAndAreByteIdentical)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    const model::GuideDocument guide = test::loadSample("vehicle");
+    // Keyed: 1 m forward in 100 keys, then a quarter turn in 100 keys.
+    io::KeyedClip drive{"drive", {}, {}};
+    const NodeKey body = r.rig.nodes[r.index(kBody)].key;
+    for (int k = 0; k <= 200; ++k) {
+        drive.times.push_back(k / 30.0);
+        drive.poses.push_back({{body, {{"tz", std::min(k, 100) / 100.0}, {"ry", std::max(k - 100, 0) * 0.9}}}});
+    }
+    const std::vector<io::KeyedClip> clips{drive};
+    io::ExportOptions options;
+    options.guide = &guide;
+    options.rangeOfMotion = true;
+    options.keyedClips = &clips;
+    auto prepared = io::prepareExport(r.rig, options);
+    ASSERT_TRUE(prepared.scene) << formatAll(prepared.report);
+    const io::ExportClip& clip = prepared.scene->clips.back();
+    ASSERT_EQ(clip.name, "drive");
+    const std::string spin = r.rig.nodes[r.index("wheel_front.R::skin.spin")].name;
+    const io::ExportTrack* track = nullptr;
+    for (const auto& t : clip.tracks)
+        if (!t.controller && prepared.scene->joints[std::size_t(t.node)].name == spin) track = &t;
+    ASSERT_NE(track, nullptr) << spin << " does not roll in the clip";
+    auto angleAt = [&](std::size_t key) { // about the hub's X
+        const Quat q = track->rotations[key];
+        return 2.0 * std::atan2(q.x, q.w);
+    };
+    EXPECT_LT(turnError(angleAt(100), 1.0 / kRadius), 1e-6) << "1 m forward";
+    const double side = r.restPosition("wheel_front.R::mch.roll").x - r.restPosition(kBody).x;
+    EXPECT_LT(turnError(angleAt(200), (1.0 - side * glm::half_pi<double>()) / kRadius), 1e-3) << "then its arc of the turn";
+
+    const std::string first = test::temporaryPath("wheel-roll-1.glb"), second = test::temporaryPath("wheel-roll-2.glb");
+    ASSERT_FALSE(hasErrors(io::exportRig(r.rig, first, options)));
+    ASSERT_FALSE(hasErrors(io::exportRig(r.rig, second, options)));
+    const std::string bytes = fileBytes(first);
+    EXPECT_GT(bytes.size(), 1000u);
+    EXPECT_TRUE(bytes == fileBytes(second)) << "two exports of the same clips differ";
+}
+
+// The export's range of motion refines the samples where a node turns far
+// between two keys (the wheels do): every whole-frame sample, refined or
+// not, must be what evaluating the clip's samples in time order gives.
+TEST(WheelRoll, TheRangeOfMotionIsEvaluatedInTimeOrderWhereItsSamplesAreRefined)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    io::ExportOptions options;
+    options.rangeOfMotion = true;
+    auto prepared = io::prepareExport(r.rig, options);
+    ASSERT_TRUE(prepared.scene) << formatAll(prepared.report);
+    ASSERT_FALSE(prepared.scene->clips.empty());
+    const io::ExportClip& clip = prepared.scene->clips.front(); // from the plan's first key, a new state
+    ASSERT_TRUE(clip.name == "range_of_motion" || clip.name == "range_of_motion_1") << clip.name;
+    const std::string spin = r.rig.nodes[r.index("wheel_front.R::skin.spin")].name;
+    const io::ExportTrack* track = nullptr;
+    for (const auto& t : clip.tracks)
+        if (!t.controller && prepared.scene->joints[std::size_t(t.node)].name == spin) track = &t;
+    ASSERT_NE(track, nullptr);
+
+    const io::RangeOfMotionPlan plan = io::planRangeOfMotion(r.rig, *r.program, r.defaults());
+    const int step = io::framesPerKey(clip.framesPerSecond);
+    const eval::ChannelLayout& layout = r.program->channels();
+    eval::EvalState state = r.program->makeState();
+    int refined = 0;
+    for (std::size_t i = 0; i < clip.times.size(); ++i) {
+        const double frame = clip.times[i] * clip.framesPerSecond;
+        if (std::abs(frame - std::round(frame)) > 1e-6)
+            continue; // half way within a frame: not evaluated, the players' own interpolation
+        const auto whole = std::size_t(std::llround(frame));
+        const std::size_t k = std::min(whole / std::size_t(step), plan.keys.size() - 1);
+        Pose pose = plan.keys[k];
+        if (whole % std::size_t(step) != 0) { // a refined sample between keys k and k + 1
+            ++refined;
+            const double fraction = double(whole % std::size_t(step)) / step;
+            for (std::size_t c = 0; c < pose.size(); ++c)
+                if (layout[c].transform != eval::kRotateOrderChannel && !layout[c].isEnum())
+                    pose[c] += (plan.keys[k + 1][c] - pose[c]) * fraction;
+        }
+        r.program->evaluate(pose, state);
+        const Mat3 hub = state.world[r.index("wheel_front.R::skin.wheel")].rotation();
+        const Vec3 up = glm::transpose(hub) * glm::normalize(state.world[r.index("wheel_front.R::skin.spin")].rotation()[1]);
+        const Quat q = track->rotations[i];
+        EXPECT_LT(turnError(2.0 * std::atan2(q.x, q.w), std::atan2(up.z, up.y)), 1e-6) << "frame " << frame;
+    }
+    EXPECT_GT(refined, 0) << "no sample was refined: the test checks nothing the keys do not";
+}
+
+} // namespace
+} // namespace rs
