@@ -2,6 +2,7 @@
 // every instance copy whose inputs did not change and generates the others;
 // the rig must be exactly the one a build without a cache makes, on every
 // sample and after every kind of guide edit.
+#include "core/IncrementalCheck.h"
 #include "TestSupport.h"
 
 #include "io/RigDump.h"
@@ -16,22 +17,11 @@
 #include <set>
 
 using namespace rs;
+using test::buildAndCompare;
 
 namespace {
 
 const char* const kSamples[] = {"biped", "quadruped", "prop", "face", "vehicle"};
-
-// Builds `guide` with the cache and checks it against a build without one.
-rigging::BuildCache::Stats buildAndCompare(const model::GuideDocument& guide, rigging::BuildCache& cache,
-                                           const std::string& what,
-                                           const rigging::BuilderRegistry& builders = rigging::BuilderRegistry::builtin())
-{
-    const model::Rig incremental = rigging::buildRig(guide, test::builtinTemplates(), builders, {}, &cache);
-    const model::Rig full = rigging::buildRig(guide, test::builtinTemplates(), builders);
-    EXPECT_EQ(io::writeRigDump(incremental), io::writeRigDump(full)) << what;
-    EXPECT_EQ(formatAll(incremental.diagnostics), formatAll(full.diagnostics)) << what;
-    return cache.lastBuild();
-}
 
 // The branch copies (instance, branch) a full build makes of the instances in `ids`.
 std::size_t copiesOf(const model::GuideDocument& guide, const std::vector<model::InstanceId>& ids)

@@ -2,6 +2,7 @@
 // under `::bind`), checked the way a rigger would on the built and evaluated
 // biped: the skin joints form a hierarchy of their own, every pose an animator
 // can make moves them exactly as before, and the export does not change.
+#include "core/IncrementalCheck.h"
 #include "EvalTestSupport.h"
 
 #include "io/RigDump.h"
@@ -158,12 +159,7 @@ TEST(IsolateSkin, AnIncrementalRebuildMakesTheRigAFullBuildMakes)
 {
     model::GuideDocument guide = isolatedBiped({"spine", "arm", "leg", "index"});
     rigging::BuildCache cache;
-    auto compare = [&](const std::string& what) {
-        const model::Rig incremental = rigging::buildRig(guide, test::builtinTemplates(), rigging::BuilderRegistry::builtin(), {}, &cache);
-        const model::Rig full = rigging::buildRig(guide, test::builtinTemplates());
-        EXPECT_EQ(io::writeRigDump(incremental), io::writeRigDump(full)) << what;
-        EXPECT_EQ(formatAll(incremental.diagnostics), formatAll(full.diagnostics)) << what;
-    };
+    auto compare = [&](const std::string& what) { test::buildAndCompare(guide, cache, what); };
     compare("first build");
     compare("second build");
     EXPECT_EQ(cache.lastBuild().generated, 0u);

@@ -2,6 +2,7 @@
 // a build warning with its file:line and a typed subject, and is kept; a
 // malformed mod is an error at file:line:col; mods survive an instance rename
 // and a save / reopen; an incremental rebuild equals a full one.
+#include "core/IncrementalCheck.h"
 #include "ModsTestSupport.h"
 
 #include "edit/GuideEdits.h"
@@ -201,12 +202,7 @@ TEST(Mods, AnIncrementalRebuildEqualsAFullBuildWithMods)
 {
     model::GuideDocument guide = test::loadGuide(kModsGuide);
     rigging::BuildCache cache;
-    auto compare = [&](const std::string& what) {
-        const model::Rig incremental = rigging::buildRig(guide, test::builtinTemplates(), rigging::BuilderRegistry::builtin(), {}, &cache);
-        const model::Rig full = rigging::buildRig(guide, test::builtinTemplates());
-        EXPECT_EQ(io::writeRigDump(incremental), io::writeRigDump(full)) << what;
-        EXPECT_EQ(formatAll(incremental.diagnostics), formatAll(full.diagnostics)) << what;
-    };
+    auto compare = [&](const std::string& what) { test::buildAndCompare(guide, cache, what); };
     compare("first");
     compare("second");
     for (const auto& instance : std::vector<model::TemplateInstance>(guide.instances())) {
