@@ -126,6 +126,26 @@ TEST(Evaluator, TailSplineFollowsItsLastControl)
     EXPECT_LT(glm::length(r.position("tail::drv.0") - r.restPosition("tail::drv.0")), 1e-9); // the base stays
 }
 
+TEST(Evaluator, TailSplineFkControlsTurnEachJointWhereTheCurveCarriesIt)
+{
+    model::GuideDocument guide = test::loadSample("quadruped");
+    guide.instance(guide.instanceNamed("tail")->id)->options["fk"] = true;
+    PosedRig r(guide);
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.moveTo(r.defaults(), "tail::ctrls.spline.3", r.restPosition("tail::ctrls.spline.3") + Vec3(0.0, 0.3, 0.0),
+                         "tail::ctrls.spline.3");
+    r.evaluate(pose);
+    const Vec3 at = r.position("tail::skin.3");
+    const Mat3 bent = r.state().world[r.index("tail::skin.3")].rotation();
+    EXPECT_LT(glm::length(at - r.position("tail::drv.3")), 1e-9) << "the skin joint rides on the curve";
+    pose[r.channel("tail::ctrls.fk.3", "rz")] = 30.0;
+    r.evaluate(pose);
+    EXPECT_LT(glm::length(r.position("tail::skin.3") - at), 1e-9) << "the FK control turns the joint in place";
+    const Vec3 x = r.state().world[r.index("tail::skin.3")].rotation()[0];
+    EXPECT_NEAR(glm::degrees(std::acos(std::clamp(glm::dot(x, bent[0]), -1.0, 1.0))), 30.0, 1e-6);
+    EXPECT_LT(glm::length(r.position("tail::skin.4") - r.position("tail::drv.4")), 1e-9) << "the next joint stays on the curve";
+}
+
 TEST(Evaluator, IkBendsTowardsThePoleOnBothSides)
 {
     PosedRig r("biped");

@@ -41,8 +41,8 @@ public:
         const spline::Controls controls =
             spline::addControls(ctx, chain, points, frames, static_cast<int>(ctx.optionInt("controls")), ctx.hookNode());
         const model::AttributeRef stretch = ctx.addAttribute(controls.nodes.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
-        // The driven chain follows the curve; skin joints ride on it.
-        const auto driven = spline::addDrivenChain(ctx, chain, frames);
+        // The driven chain follows the curve; skin joints ride on it (on an FK control each with `fk`).
+        const auto driven = spline::addDrivenChain(ctx, chain, frames, ctx.optionBool("fk"));
         ctx.addConstraint("cns.spline", driven, controls.nodes, model::SplineConstraint{.stretch = stretch});
     }
 };
