@@ -146,6 +146,38 @@ TEST(Evaluator, TailSplineFkControlsTurnEachJointWhereTheCurveCarriesIt)
     EXPECT_LT(glm::length(r.position("tail::skin.4") - r.position("tail::drv.4")), 1e-9) << "the next joint stays on the curve";
 }
 
+TEST(Evaluator, TailSplineTweakersShapeTheCurveAtTheirGuideAndChangeNothingAtRest)
+{
+    PosedRig plain("quadruped");
+    model::GuideDocument guide = test::loadSample("quadruped");
+    const model::InstanceId tail = guide.instanceNamed("tail")->id;
+    guide.instance(tail)->options["tweakers"] = true;
+    PosedRig r(guide);
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
+    const auto rest = r.evaluate(r.defaults()).world;
+    const auto plainRest = plain.evaluate(plain.defaults()).world;
+    for (int i = 0; i < 8; ++i) {
+        const std::string skin = "tail::skin." + std::to_string(i);
+        EXPECT_LT(glm::length(rest[r.index(skin)].translation - plainRest[plain.index(skin)].translation), 1e-9) << skin;
+    }
+    Pose pose = r.defaults();
+    pose[r.channel("tail::ctrls.tweak.4", "ty")] = 0.1;
+    r.evaluate(pose);
+    EXPECT_GT(glm::length(r.position("tail::skin.4") - rest[r.index("tail::skin.4")].translation), 0.05) << "the joint there follows";
+    EXPECT_LT(glm::length(r.position("tail::skin.0") - rest[r.index("tail::skin.0")].translation), 1e-9) << "the base stays";
+    EXPECT_LT(glm::length(r.position("tail::ctrls.spline.2") - rest[r.index("tail::ctrls.spline.2")].translation), 1e-12);
+
+    // A curve point per guide joint: a spline constraint takes at most 16.
+    model::GuideDocument longer;
+    auto instance = rigging::makeInstance(longer, test::builtinTemplates(), "rig.spline", model::kNoId,
+                                          {{"number", Value(20)}, {"tweakers", Value(true)}});
+    ASSERT_TRUE(instance.ok()) << formatAll(instance.diagnostics());
+    longer.insertInstance(instance.take(), 0);
+    const model::Rig refused = rigging::buildRig(longer, test::builtinTemplates());
+    EXPECT_NE(formatAll(refused.diagnostics).find("at most 16"), std::string::npos) << formatAll(refused.diagnostics);
+}
+
 TEST(Evaluator, IkBendsTowardsThePoleOnBothSides)
 {
     PosedRig r("biped");

@@ -30,7 +30,15 @@ public:
 
     bool gather(const BuildContext& ctx) const override
     {
-        return kit::chainOfAtLeast(ctx, 3, "a spline chain").has_value() && readChainOrient(ctx).has_value();
+        const auto chain = kit::chainOfAtLeast(ctx, 3, "a spline chain");
+        if (!chain || !readChainOrient(ctx))
+            return false;
+        if (ctx.optionBool("tweakers") && chain->size() > spline::kMaxCurvePoints) {
+            ctx.error("tweakers put a curve point on every guide joint, at most " + std::to_string(spline::kMaxCurvePoints) +
+                          "; this chain has " + std::to_string(chain->size()), "tweakers");
+            return false;
+        }
+        return true;
     }
 
     void generate(BuildContext& ctx) const override
@@ -43,7 +51,11 @@ public:
         const model::AttributeRef stretch = ctx.addAttribute(controls.nodes.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
         // The driven chain follows the curve; skin joints ride on it (on an FK control each with `fk`).
         const auto driven = spline::addDrivenChain(ctx, chain, frames, ctx.optionBool("fk"));
-        ctx.addConstraint("cns.spline", driven, controls.nodes, model::SplineConstraint{.stretch = stretch});
+        // With tweakers the curve goes through a point on every guide joint
+        // (following the controllers around it), each with a control on it.
+        const std::vector<RigNodeIndex> through =
+            ctx.optionBool("tweakers") ? spline::addCurvePoints(ctx, chain, frames, controls, true) : controls.nodes;
+        ctx.addConstraint("cns.spline", driven, through, model::SplineConstraint{.stretch = stretch});
     }
 };
 

@@ -26,7 +26,7 @@ using model::RigNodeIndex;
 using model::RigNodeKind;
 
 constexpr int kTranslate = 0, kScale = 6; // first channel of each (ChannelSettings)
-constexpr std::size_t kMaxCurvePoints = 16; // a spline constraint's targets
+using spline::kMaxCurvePoints;
 
 int axisIndex(const std::string& name) { return name == "z" ? 2 : name == "y" ? 1 : 0; }
 
@@ -172,33 +172,8 @@ private:
             spline::addControls(ctx, chain, points, frames, static_cast<int>(ctx.optionInt("controls")), ctx.hookNode());
 
         // A curve point on each guide joint, so the curve passes through them
-        // all: it follows the two spline controllers around it, shared by its
-        // length between them; with `tweakers` an animator's control rides on it.
-        const bool tweakers = ctx.optionBool("tweakers");
-        std::vector<RigNodeIndex> curve;
-        for (std::size_t i = 0; i < chain.size(); ++i) {
-            const std::string index = std::to_string(i);
-            const double at = iks.along[i];
-            std::size_t c = 0;
-            while (c + 2 < iks.at.size() && iks.at[c + 1] < at)
-                ++c;
-            const double span = iks.at[c + 1] - iks.at[c];
-            const double share = span > 1e-12 ? std::clamp((at - iks.at[c]) / span, 0.0, 1.0) : 0.0;
-            const RigNodeIndex point =
-                kit::addSetup(ctx, RigNodeKind::Group, "mch.curve." + index, "curve", int(i) + 1, ctx.hookNode(), frames[i], chain[i]);
-            if (share < 1e-9 || share > 1.0 - 1e-9)
-                ctx.addConstraint("cns.curve." + index, {point}, {iks.nodes[share < 0.5 ? c : c + 1]}, model::ParentConstraint{});
-            else
-                ctx.addConstraint("cns.curve." + index, {point}, {iks.nodes[c], iks.nodes[c + 1]},
-                                  model::ParentConstraint{.weights = {1.0 - share, share}});
-            if (!tweakers) {
-                curve.push_back(point);
-                continue;
-            }
-            const kit::Control tweak = kit::addControl(ctx, "tweak." + index, "tweak", int(i) + 1, point, frames[i], chain[i]);
-            kit::animate(ctx, tweak, kit::kTranslate | kit::kRotate);
-            curve.push_back(tweak.ctrl);
-        }
+        // all; with `tweakers` an animator's control rides on each.
+        const std::vector<RigNodeIndex> curve = spline::addCurvePoints(ctx, chain, frames, iks, ctx.optionBool("tweakers"));
 
         // The sliding chain: skin joints on the first `sliders` guide joints;
         // the guides past them lay the path ahead, and what hangs on them

@@ -40,6 +40,36 @@ Controls addControls(BuildContext& ctx, const std::vector<JointId>& chain, const
     return out;
 }
 
+std::vector<RigNodeIndex> addCurvePoints(BuildContext& ctx, const std::vector<JointId>& chain, const std::vector<Mat4>& frames,
+                                         const Controls& controls, bool tweakers)
+{
+    std::vector<RigNodeIndex> curve;
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+        const std::string index = std::to_string(i);
+        const double at = controls.along[i];
+        std::size_t c = 0;
+        while (c + 2 < controls.at.size() && controls.at[c + 1] < at)
+            ++c;
+        const double span = controls.at[c + 1] - controls.at[c];
+        const double share = span > 1e-12 ? std::clamp((at - controls.at[c]) / span, 0.0, 1.0) : 0.0;
+        const RigNodeIndex point =
+            kit::addSetup(ctx, RigNodeKind::Group, "mch.curve." + index, "curve", int(i) + 1, ctx.hookNode(), frames[i], chain[i]);
+        if (share < 1e-9 || share > 1.0 - 1e-9)
+            ctx.addConstraint("cns.curve." + index, {point}, {controls.nodes[share < 0.5 ? c : c + 1]}, model::ParentConstraint{});
+        else
+            ctx.addConstraint("cns.curve." + index, {point}, {controls.nodes[c], controls.nodes[c + 1]},
+                              model::ParentConstraint{.weights = {1.0 - share, share}});
+        if (!tweakers) {
+            curve.push_back(point);
+            continue;
+        }
+        const kit::Control tweak = kit::addControl(ctx, "tweak." + index, "tweak", int(i) + 1, point, frames[i], chain[i]);
+        kit::animate(ctx, tweak, kit::kTranslate | kit::kRotate);
+        curve.push_back(tweak.ctrl);
+    }
+    return curve;
+}
+
 std::vector<RigNodeIndex> addDrivenChain(BuildContext& ctx, const std::vector<JointId>& chain, const std::vector<Mat4>& frames,
                                          bool fk)
 {

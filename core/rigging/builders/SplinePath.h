@@ -22,6 +22,19 @@ struct Controls {
 Controls addControls(BuildContext& ctx, const std::vector<model::JointId>& chain, const std::vector<Vec3>& points,
                      const std::vector<Mat4>& frames, int count, model::RigNodeIndex parent);
 
+// The most targets a model::SplineConstraint takes: a curve through its
+// guide joints (tweakers) has at most this many.
+constexpr std::size_t kMaxCurvePoints = 16;
+
+// A curve point ("mch.curve.<i>") on each guide joint of `chain` (with
+// `frames`), so that the curve passes through them all: each follows the two
+// spline controllers around it, shared by its length between them. With
+// `tweakers` an animator's control ("ctrls.tweak.<i>", translations and
+// rotations) rides on each point. Returns what the curve goes through: the
+// tweakers, or the points.
+std::vector<model::RigNodeIndex> addCurvePoints(BuildContext& ctx, const std::vector<model::JointId>& chain,
+                                                const std::vector<Mat4>& frames, const Controls& controls, bool tweakers);
+
 // A driven joint ("drv.<i>", each under the previous one, the first under the
 // instance's hook) and a skin joint on it ("skin.<i>") at each of `frames`;
 // chain[i] hooks on drv.<i>. With `fk`, an FK control ("ctrls.fk.<i>",
