@@ -110,5 +110,28 @@ TEST(CoreTemplates, GroupMakesNoControllerOrSkinJointAndCarriesWhatHangsUnderIt)
     EXPECT_LT(glm::length(r.position(partCtrl) - (rest + Vec3(0.0, 1.0, 0.0))), 1e-9) << "the part hangs under the group";
 }
 
+TEST(CoreTemplates, XformDoOptionsLockWhatAnimatorsDoNotTouchAndSetTheRotateOrder)
+{
+    model::GuideDocument doc;
+    const model::TemplateInstance plain = add(doc, "core.xform", model::kNoId);
+    const model::TemplateInstance wheelCap =
+        add(doc, "core.xform", plain.joints.front().id, {{"do_scale", Value(false)}, {"do_translate", Value(false)}, {"rotate_order", Value(std::string("zxy"))}});
+    PosedRig r(doc);
+    ASSERT_TRUE(r.ok());
+    const model::ChannelSettings& free = r.rig.nodes[r.index(plain.name + "::ctrls.xform")].channels;
+    const model::ChannelSettings& capped = r.rig.nodes[r.index(wheelCap.name + "::ctrls.xform")].channels;
+    for (int c = 0; c < 9; ++c) {
+        EXPECT_FALSE(free.isLocked(c)) << "by default a prop's part moves, turns and scales: " << model::channelName(c);
+        EXPECT_TRUE(free.isAnimatable(c)) << model::channelName(c);
+        EXPECT_EQ(capped.isLocked(c), c < 3 || c >= 6) << model::channelName(c);
+        EXPECT_EQ(capped.isAnimatable(c), c >= 3 && c < 6) << model::channelName(c);
+    }
+    EXPECT_EQ(free.rotateOrder, model::RotateOrder::Xyz);
+    EXPECT_EQ(capped.rotateOrder, model::RotateOrder::Zxy);
+    // The evaluator's channel layout sees the locks (the channel box greys them out, poses ignore them).
+    EXPECT_TRUE(r.program->channels()[std::size_t(r.channel(wheelCap.name + "::ctrls.xform", "tx"))].locked);
+    EXPECT_FALSE(r.program->channels()[std::size_t(r.channel(wheelCap.name + "::ctrls.xform", "rz"))].locked);
+}
+
 } // namespace
 } // namespace rs

@@ -3,6 +3,7 @@
 
 #include "rigging/builders/BuilderKit.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 
 namespace rs::rigging {
@@ -233,7 +234,29 @@ public:
         const model::JointId joint = ctx.structure("xform")->front();
         const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(joint));
         const auto control = kit::addControl(ctx, "xform", "", {}, ctx.hookNode(), frame, joint);
-        kit::animate(ctx, control, kit::kTranslate | kit::kRotate | kit::kScale); // a prop's part: moved, turned, scaled
+        // A prop's part: moved, turned and scaled, unless its do_* options
+        // say otherwise; a channel it does not do is locked (core.group, a
+        // manifest on this builder without them, does them all).
+        std::uint16_t animatable = 0;
+        const std::pair<const char*, std::uint16_t> kinds[] = {
+            {"do_translate", kit::kTranslate}, {"do_rotate", kit::kRotate}, {"do_scale", kit::kScale}};
+        auto declares = [&](const std::string& option) {
+            const auto& opts = ctx.manifest().opts;
+            return std::any_of(opts.begin(), opts.end(), [&](const templates::Parameter& p) { return p.name == option; });
+        };
+        for (const auto& [option, channels] : kinds)
+            if (!declares(option) || ctx.optionBool(option)) // a manifest on this builder without it: on
+                animatable = std::uint16_t(animatable | channels);
+        kit::animate(ctx, control, animatable);
+        if (control.ctrl != control.offset) {
+            model::ChannelSettings& channels = ctx.channels(control.ctrl);
+            for (int c = 0; c < model::ChannelSettings::kCount; ++c)
+                if (!((animatable >> c) & 1u))
+                    channels.lock(c);
+            if (declares("rotate_order"))
+                if (const auto order = model::parseRotateOrder(ctx.optionString("rotate_order")))
+                    channels.rotateOrder = *order;
+        }
         kit::addSkin(ctx, "xform", "", {}, control.ctrl, frame, joint);
         ctx.setHook(joint, control.ctrl);
     }
