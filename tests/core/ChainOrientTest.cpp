@@ -183,6 +183,39 @@ TEST(ChainOrient, SplineJointsAimTheAxisAskedForAndKeepTheirPlaces)
     }
 }
 
+// rig.spline's frames before these options rolled a straight chain with its
+// root guide; an instance that leaves up_dir unset keeps that, one that sets
+// it gets it.
+TEST(ChainOrient, AStraightSplineRollsWithItsRootGuideUnlessUpDirIsSet)
+{
+    for (const bool setUpDir : {false, true}) {
+        Options options{{"number", Value(5LL)}};
+        if (setUpDir)
+            options["up_dir"] = Value(Vec3(0.0, 1.0, 0.0));
+        model::GuideDocument doc;
+        auto made = rigging::makeInstance(doc, test::builtinTemplates(), "rig.spline", model::kNoId, options);
+        ASSERT_TRUE(made.ok()) << formatAll(made.diagnostics());
+        model::TemplateInstance instance = made.take();
+        // The root guide turned 90 degrees about Y after 45 about X (its X to
+        // world -Z, its Z to (1, -1, 0) / sqrt 2); every child 0.2 m along its
+        // parent's X: straight back along -Z.
+        for (std::size_t i = 0; i < instance.joints.size(); ++i) {
+            instance.joints[i].local.translate = i == 0 ? Vec3(0.0, 1.0, 0.0) : Vec3(0.2, 0.0, 0.0);
+            instance.joints[i].local.rotateDegrees = i == 0 ? Vec3(45.0, 90.0, 0.0) : Vec3(0.0);
+        }
+        doc.insertInstance(instance, 0);
+        const model::Rig rig = build(doc);
+        const auto points = guidePositions(doc);
+        ASSERT_LT(glm::length(points[1] - points[0] - Vec3(0.0, 0.0, -0.2)), 1e-12) << "a straight chain back along -Z";
+        const Vec3 expectedUp = setUpDir ? Vec3(0.0, 1.0, 0.0) : glm::normalize(Vec3(1.0, -1.0, 0.0)); // up_dir, or the root guide's Z
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const Mat4 world = test::node(rig, pathOf(doc, "skin." + std::to_string(i))).worldMatrix;
+            EXPECT_GT(glm::dot(axisOf(world, "x"), Vec3(0.0, 0.0, -1.0)), 1.0 - 1e-9) << i;
+            EXPECT_GT(glm::dot(axisOf(world, "z"), expectedUp), 1.0 - 1e-9) << (setUpDir ? "up_dir " : "root guide ") << i;
+        }
+    }
+}
+
 // The largest extent of a controller's curve along a world direction.
 double thickness(const model::RigNode& node, const Vec3& direction)
 {

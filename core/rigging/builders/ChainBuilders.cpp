@@ -45,7 +45,8 @@ public:
     {
         const auto chain = *ctx.structure("chain");
         const auto points = *kit::positions(ctx, chain);
-        const auto frames = orientFrames(ctx, chain); // orient, aim_axis, up_axis, up_dir, up_auto
+        // orient, aim_axis, up_axis, up_dir, up_auto; up_dir left unset: the root guide's up axis, as before them.
+        const auto frames = orientFrames(ctx, chain, false, true);
         const spline::Controls controls =
             spline::addControls(ctx, chain, points, frames, static_cast<int>(ctx.optionInt("controls")), ctx.hookNode());
         const model::AttributeRef stretch = ctx.addAttribute(controls.nodes.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);

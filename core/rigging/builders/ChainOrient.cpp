@@ -119,7 +119,13 @@ std::vector<Mat4> orientChain(const ChainOrient& o, const std::vector<Mat4>& gui
     }
     if (n == 1)
         return {rigidFrame(guideWorld[0])};
-    Vec3 normal = o.upDir; // the bend normal carried along (upAuto)
+    Vec3 upDir = o.upDir;
+    if (o.upDirFromRootGuide) {
+        const Vec3 rootUp = Mat3(rigidFrame(guideWorld[0])) * o.upAxis, first = points[1] - points[0];
+        if (glm::length(first) > 1e-9 && glm::length(glm::cross(glm::normalize(first), rootUp)) > 1e-6)
+            upDir = rootUp;
+    }
+    Vec3 normal = upDir; // the bend normal carried along (upAuto)
     for (std::size_t i = 0; i < n; ++i) {
         const Vec3 segment = i + 1 < n ? points[i + 1] - points[i] : Vec3(0.0);
         if (i + 1 == n || (glm::length(segment) < 1e-9 && !frames.empty())) { // the last joint, or on top of the next
@@ -135,7 +141,7 @@ std::vector<Mat4> orientChain(const ChainOrient& o, const std::vector<Mat4>& gui
         if (o.upAuto && i + 2 < n)
             if (auto bend = kit::planeNormal(points[i], points[i + 1], points[i + 2]))
                 normal = *bend;
-        std::optional<Mat3> rotation = aimRotation(aim, o.upAuto ? normal : o.upDir, o.aimAxis, o.upAxis);
+        std::optional<Mat3> rotation = aimRotation(aim, o.upAuto ? normal : upDir, o.aimAxis, o.upAxis);
         if (!rotation && !frames.empty())
             rotation = aimRotation(aim, Mat3(frames.back()) * o.upAxis, o.aimAxis, o.upAxis);
         if (!rotation)
@@ -145,13 +151,15 @@ std::vector<Mat4> orientChain(const ChainOrient& o, const std::vector<Mat4>& gui
     return frames;
 }
 
-std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain, bool aimAlways)
+std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain, bool aimAlways,
+                               bool rootGuideUp)
 {
     std::vector<Mat4> guideWorld;
     for (model::JointId joint : chain)
         guideWorld.push_back(ctx.guideWorldMatrix(joint));
-    const auto orient = readChainOrient(ctx, false); // gather reported its problems
-    return orientChain(orient.value_or(ChainOrient{}), guideWorld, aimAlways);
+    ChainOrient orient = readChainOrient(ctx, false).value_or(ChainOrient{}); // gather reported its problems
+    orient.upDirFromRootGuide = rootGuideUp && !ctx.instance().options.count("up_dir");
+    return orientChain(orient, guideWorld, aimAlways);
 }
 
 } // namespace rs::rigging

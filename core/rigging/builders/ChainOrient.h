@@ -24,6 +24,11 @@ struct ChainOrient {
     Vec3 upAxis{0.0, 1.0, 0.0};  // local unit axis, never parallel to aimAxis
     Vec3 upDir{0.0, 0.0, 1.0};   // unit direction in authored world space
     bool upAuto = false;         // roll towards the chain's bend normal where it bends
+    // The up direction is the root guide's up axis (so turning the root guide
+    // rolls the chain, as rig.spline's frames always did), or upDir where that
+    // lies along the chain's first segment: set by orientFrames when its
+    // builder asks and the instance leaves up_dir at its default.
+    bool upDirFromRootGuide = false;
 };
 
 // The orientation options of the instance (`orient` copy / auto / world,
@@ -54,7 +59,10 @@ std::vector<Mat4> orientChain(const ChainOrient& orient, const std::vector<Mat4>
 // orientChain for the instance's options and the guide joints `chain`; the
 // options must have been checked by readChainOrient (in gather): on an error
 // it gives the guides' own frames.
-std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain, bool aimAlways = false);
+// `rootGuideUp` (rig.spline): an instance that leaves up_dir at its default
+// takes the root guide's up axis instead (ChainOrient::upDirFromRootGuide).
+std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain, bool aimAlways = false,
+                               bool rootGuideUp = false);
 
 // The rotation taking local `aimAxis` onto unit `aim` and local `upAxis` onto
 // `up` made perpendicular to `aim`; nullopt when `up` lies along `aim`.
