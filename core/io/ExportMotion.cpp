@@ -374,6 +374,27 @@ void addRangeOfMotion(const model::Rig& rig, const ExportOptions& options, const
 
 // A keyed clip: the rig evaluated at each key, every changing channel cubic
 // with spline slopes (io::KeyedClip).
+// For a rig whose evaluation depends on the ones before (a wheel's roll:
+// path accumulates what it travels): evaluates `state` on every whole frame
+// strictly between keys `k` and `k + 1`, the channels played as spline keys
+// (Catmull-Rom, flat at the ends, as the authored keys are), so that the key
+// after them rolls as far as the path between the keys, not as one straight
+// (and, past roll_jump, skipped) step.
+void travelBetweenKeys(const std::vector<double>& keys, const std::vector<eval::Pose>& poses, std::size_t k,
+                       double framesPerSecond, const eval::RigProgram& program, eval::EvalState& state)
+{
+    auto slope = [&](std::size_t at, std::size_t c) {
+        return at == 0 || at + 1 >= poses.size() ? 0.0 : (poses[at + 1][c] - poses[at - 1][c]) / (keys[at + 1] - keys[at - 1]);
+    };
+    eval::Pose pose = poses[k];
+    for (long long f = (long long)std::floor(keys[k] * framesPerSecond + 1e-9) + 1; double(f) / framesPerSecond < keys[k + 1] - 1e-9; ++f) {
+        const double time = double(f) / framesPerSecond;
+        for (std::size_t c = 0; c < pose.size(); ++c)
+            pose[c] = hermite(poses[k][c], slope(k, c), poses[k + 1][c], slope(k + 1, c), keys[k], keys[k + 1], time);
+        program.evaluate(pose, state);
+    }
+}
+
 ExportClip keyedClip(const model::Rig& rig, const KeyedClip& keyed, const eval::RigProgram& program,
                      const Sampler& sampler, double framesPerSecond)
 {
@@ -384,10 +405,13 @@ ExportClip keyedClip(const model::Rig& rig, const KeyedClip& keyed, const eval::
     const ExportScene& scene = sampler.scene;
     clip.tracks = emptyTracks(scene);
     eval::EvalState state = program.makeState();
-    for (std::size_t k = 0; k < keyed.poses.size(); ++k) {
-        const Sample sample = sampleAt(keyed.times[k], eval::poseFromValues(rig, program.channels(), keyed.poses[k]),
-                                       program, sampler, state);
-        appendSample(clip, sample);
+    std::vector<eval::Pose> poses;
+    for (const auto& values : keyed.poses)
+        poses.push_back(eval::poseFromValues(rig, program.channels(), values));
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+        if (k > 0 && program.hasPaths()) // wheels roll along the path between the keys
+            travelBetweenKeys(keyed.times, poses, k - 1, framesPerSecond, program, state);
+        appendSample(clip, sampleAt(keyed.times[k], poses[k], program, sampler, state));
     }
     std::vector<ExportTrack> kept;
     for (auto& track : clip.tracks) {

@@ -130,7 +130,9 @@ struct ExportController {
     // "max": 1}, "space": {..., "labels": ["world", ...]}}), FBX as animatable
     // user properties named like the attribute (flags "A+U": a double
     // "Number", or an "enum" with its labels joined by '~', as Maya writes
-    // them; Blender reads both as custom properties).
+    // them; Blender reads both as custom properties). Values are in the
+    // attribute's own unit as the channel box shows it (a distance in metres,
+    // also in a centimetre FBX: an attribute carries no unit to convert by).
     struct Attribute {
         std::string name;
         double value = 0.0, min = 0.0, max = 1.0;

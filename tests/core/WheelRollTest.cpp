@@ -286,6 +286,33 @@ TEST(WheelRoll, ExportsRollAlongTheClipInTimeOrderAndAreByteIdentical)
     EXPECT_TRUE(bytes == fileBytes(second)) << "two exports of the same clips differ";
 }
 
+// Two keys 5 m apart (longer than a wheel's circumference, the teleport
+// distance): the export rolls the wheels along the frames between the keys,
+// as playing the clip in the editor would, not by one skipped jump.
+TEST(WheelRoll, AKeyedClipRollsTheWheelsAlongThePathBetweenSparseKeys)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    const model::GuideDocument guide = test::loadSample("vehicle");
+    const NodeKey body = r.rig.nodes[r.index(kBody)].key;
+    io::KeyedClip drive{"drive", {0.0, 2.0}, {{{body, {{"tz", 0.0}}}}, {{body, {{"tz", 5.0}}}}}};
+    const std::vector<io::KeyedClip> clips{drive};
+    io::ExportOptions options;
+    options.guide = &guide;
+    options.keyedClips = &clips;
+    auto prepared = io::prepareExport(r.rig, options);
+    ASSERT_TRUE(prepared.scene) << formatAll(prepared.report);
+    const io::ExportClip& clip = prepared.scene->clips.back();
+    ASSERT_EQ(clip.times.size(), 2u) << "the authored keys stay the keys";
+    const std::string spin = r.rig.nodes[r.index("wheel_front.L::skin.spin")].name;
+    const io::ExportTrack* track = nullptr;
+    for (const auto& t : clip.tracks)
+        if (!t.controller && !t.camera && prepared.scene->joints[std::size_t(t.node)].name == spin) track = &t;
+    ASSERT_NE(track, nullptr) << spin << " does not roll in the clip";
+    const Quat q = glm::normalize(glm::conjugate(track->rotations.front()) * track->rotations.back());
+    EXPECT_LT(turnError(2.0 * std::atan2(q.x, q.w), 5.0 / kRadius), 1e-3) << "5 m rolled";
+}
+
 // The export's range of motion refines the samples where a node turns far
 // between two keys (the wheels do): every whole-frame sample, refined or
 // not, must be what evaluating the clip's samples in time order gives.
