@@ -55,15 +55,6 @@ eval::Pose randomPose(const eval::ChannelLayout& layout, std::mt19937& random)
     return pose;
 }
 
-double maxDifference(const Mat4& a, const Mat4& b)
-{
-    double d = 0.0;
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            d = std::max(d, std::abs(a[c][r] - b[c][r]));
-    return d;
-}
-
 // Poses both rigs alike (their channels are the same: isolation adds none) and
 // checks every skin joint of `plain` sits where it does in `isolated`.
 void expectSamePoses(test::PosedRig& plain, test::PosedRig& isolated, int poses)
@@ -82,7 +73,7 @@ void expectSamePoses(test::PosedRig& plain, test::PosedRig& isolated, int poses)
             if (!isSkinJoint(plain.rig.nodes[i]))
                 continue;
             const model::RigNodeIndex j = isolated.index(plain.rig.nodes[i].path);
-            EXPECT_LT(maxDifference(a.worldMatrix(i), b.worldMatrix(j)), 1e-9) << "pose " << p << ": " << plain.rig.nodes[i].path;
+            EXPECT_LT(maxAbsDifference(a.worldMatrix(i), b.worldMatrix(j)), 1e-9) << "pose " << p << ": " << plain.rig.nodes[i].path;
             ++compared;
         }
         ASSERT_GT(compared, 0u);
