@@ -222,14 +222,25 @@ EvalState RigProgram::makeState() const
     return state;
 }
 
-void RigProgram::carryPaths(const RigProgram& previous, const EvalState& from, EvalState& state) const
+std::vector<std::pair<NodeKey, double>> RigProgram::rolledPaths(const EvalState& state) const
 {
-    if (from.rolls.size() != previous.m_pathKeys.size() || state.rolls.size() != m_pathKeys.size())
+    std::vector<std::pair<NodeKey, double>> rolled;
+    if (state.rolls.size() != m_pathKeys.size())
+        return rolled;
+    rolled.reserve(m_pathKeys.size());
+    for (std::size_t i = 0; i < m_pathKeys.size(); ++i)
+        rolled.emplace_back(m_pathKeys[i], state.rolls[i].angleRadians);
+    return rolled;
+}
+
+void RigProgram::carryPaths(const std::vector<std::pair<NodeKey, double>>& rolled, EvalState& state) const
+{
+    if (state.rolls.size() != m_pathKeys.size())
         return;
     for (std::size_t i = 0; i < m_pathKeys.size(); ++i) {
-        const auto it = std::find(previous.m_pathKeys.begin(), previous.m_pathKeys.end(), m_pathKeys[i]);
-        if (it != previous.m_pathKeys.end())
-            state.rolls[i] = {Vec3(0.0), Vec3(0.0), from.rolls[std::size_t(it - previous.m_pathKeys.begin())].angleRadians, false};
+        const auto it = std::find_if(rolled.begin(), rolled.end(), [&](const auto& r) { return r.first == m_pathKeys[i]; });
+        if (it != rolled.end())
+            state.rolls[i] = {Vec3(0.0), Vec3(0.0), it->second, false};
     }
 }
 

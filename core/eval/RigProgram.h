@@ -17,6 +17,7 @@
 #include "model/Rig.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace rs::eval {
@@ -78,11 +79,20 @@ public:
     // The path-mode roll constraints (EvalState::rolls, in this order), by key.
     const std::vector<NodeKey>& pathKeys() const { return m_pathKeys; }
     bool hasPaths() const { return !m_pathKeys.empty(); } // an evaluation depends on the ones before
+    // How far each path-mode roll of `state` (a state of this program) has
+    // turned, by key: what a rebuild carries over, kept as plain values so it
+    // outlives the program (a rig edit that fails to compile keeps it for the
+    // next good one).
+    std::vector<std::pair<NodeKey, double>> rolledPaths(const EvalState& state) const;
     // After a rebuild: each roll of `state` (a new state of this program)
-    // whose constraint `previous` (the program before) also has, by key, takes
-    // its angle from `from`, unanchored, so the rebuilt wheels keep their
-    // turn and the rebuild itself (a guide edit moving them) rolls nothing.
-    void carryPaths(const RigProgram& previous, const EvalState& from, EvalState& state) const;
+    // whose constraint `rolled` names, by key, takes that angle, unanchored, so
+    // the rebuilt wheels keep their turn and the rebuild itself (a guide edit
+    // moving them) rolls nothing.
+    void carryPaths(const std::vector<std::pair<NodeKey, double>>& rolled, EvalState& state) const;
+    void carryPaths(const RigProgram& previous, const EvalState& from, EvalState& state) const
+    {
+        carryPaths(previous.rolledPaths(from), state);
+    }
     // Evaluates every node's world transform for `pose` (m_channels.size() values).
     // Driven channels (driven keys) are computed from it first: their values in `pose` are ignored.
     void evaluate(const Pose& pose, EvalState& state) const;

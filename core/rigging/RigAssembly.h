@@ -26,6 +26,11 @@ struct InstanceRecord {
 };
 
 struct RigAssembly {
+    RigAssembly(const model::GuideDocument& guide, const ExpandedGuide& expanded, const templates::TemplateRegistry& templates)
+        : guide(guide), expanded(expanded), templates(templates)
+    {
+    }
+
     const model::GuideDocument& guide;   // the expanded guide: one instance per branch copy
     const ExpandedGuide& expanded;
     const templates::TemplateRegistry& templates;

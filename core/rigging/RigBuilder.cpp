@@ -166,7 +166,7 @@ model::Rig buildRig(const model::GuideDocument& guide, const templates::Template
     report(0.0, "gather");
     Diagnostics branchDiagnostics;
     const ExpandedGuide expanded = expandBranches(guide, templates, branchDiagnostics);
-    RigAssembly a{expanded.document, expanded, templates, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    RigAssembly a(expanded.document, expanded, templates);
     a.rig.diagnostics = branchDiagnostics;
     if (cache && cache->lastNodeCount > 0) { // no rehashing while a live rebuild adds the same nodes again
         a.rig.nodes.reserve(cache->lastNodeCount);

@@ -104,6 +104,7 @@ void Session::replaceDocument(model::GuideDocument document)
     m_buildCache->clear();
     m_rigStale = false;
     compileRig();
+    m_rolledPaths.clear(); // another document: its wheels start unrolled
     m_mode = Mode::Guide;
     m_models.clear();                     // an opened guide reads its model files afresh (they may have changed)
     m_history.reset(std::move(document)); // emits Document: every view starts over
@@ -193,12 +194,15 @@ void Session::restoreSelection(const std::vector<NodeKey>& nodes, const std::vec
         }
 }
 
-// A rebuild keeps how far the wheels have rolled (eval::RigProgram::carryPaths):
-// the previous program and state live until the new ones are made.
+// A rebuild keeps how far the wheels have rolled (eval::RigProgram::carryPaths).
+// The rolls are kept as values when the program goes, so a rig edit that fails
+// to compile (or to build) does not lose them: the next good program takes them.
 void Session::compileRig(std::optional<Result<eval::RigProgram>> program)
 {
     m_posing.reset();
-    std::unique_ptr<eval::RigProgram> previous = std::move(m_program);
+    if (m_program)
+        m_rolledPaths = m_program->rolledPaths(m_evaluation);
+    m_program.reset();
     if (!m_rig)
         return;
     auto compiled = program ? std::move(*program) : eval::RigProgram::compile(*m_rig);
@@ -211,8 +215,7 @@ void Session::compileRig(std::optional<Result<eval::RigProgram>> program)
     m_posing = std::make_unique<eval::Posing>(*m_rig, *m_program);
     m_posing->follow(&m_evaluation); // tools evaluate from the displayed wheels' roll
     eval::EvalState state = m_program->makeState();
-    if (previous)
-        m_program->carryPaths(*previous, m_evaluation, state);
+    m_program->carryPaths(m_rolledPaths, state);
     m_evaluation = std::move(state);
     poseFromDocument();
 }

@@ -444,6 +444,7 @@ private:
     std::unique_ptr<eval::Posing> m_posing;
     eval::Pose m_pose;
     eval::EvalState m_evaluation;
+    std::vector<std::pair<NodeKey, double>> m_rolledPaths; // the wheels' roll, kept across rebuilds and failed compiles
     Selection m_selection;
     Mode m_mode = Mode::Guide;
     bool m_cvMode = false;

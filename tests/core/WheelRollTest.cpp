@@ -205,6 +205,33 @@ TEST(WheelRoll, ARebuildKeepsTheRollWithoutRollingForTheEdit)
     EXPECT_NEAR(rollOf(state, rebuilt, "wheel_front.R"), 0.8 / kRadius, 1e-9) << "and rolls on from there";
 }
 
+// The session keeps the roll as values when its program goes, so a rig edit
+// that fails to compile does not lose it: the next good program takes it.
+TEST(WheelRoll, TheRollOutlivesTheProgramThatRolledItAndSkipsWheelsThatAreGone)
+{
+    std::vector<std::pair<NodeKey, double>> rolled;
+    Pose pose;
+    {
+        PosedRig r("vehicle");
+        ASSERT_TRUE(r.ok());
+        pose = r.defaults();
+        drive(r, pose, "tz", 0.6, 20);
+        rolled = r.program->rolledPaths(r.state());
+    } // the program and its state are gone
+    ASSERT_EQ(rolled.size(), std::size(kWheels));
+    // The next good rig has lost one wheel (its instance removed).
+    model::GuideDocument guide = test::loadSample("vehicle");
+    ASSERT_TRUE(guide.takeInstance(guide.instanceNamed("wheel_back")->id));
+    PosedRig rebuilt(guide);
+    ASSERT_TRUE(rebuilt.ok());
+    eval::EvalState state = rebuilt.program->makeState();
+    rebuilt.program->carryPaths(rolled, state);
+    rebuilt.program->evaluate(pose, state);
+    EXPECT_EQ(rebuilt.rig.findPath("wheel_back.L::skin.spin"), std::nullopt);
+    for (const std::string wheel : {"wheel_front.L", "wheel_front.R"})
+        EXPECT_NEAR(rollOf(state, rebuilt, wheel), 0.6 / kRadius, 1e-9) << wheel;
+}
+
 TEST(WheelRoll, TheEditorRollsTheWheelsAsTheBodyIsDraggedAndKeepsTheRollAcrossARebuild)
 {
     session::Session s(std::make_shared<templates::TemplateRegistry>(test::builtinTemplates()));
