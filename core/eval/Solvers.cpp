@@ -229,19 +229,20 @@ void solveAxisRoll(const CompiledConstraint& c, double amount, std::vector<Affin
 }
 
 // Path mode: the step the centre made since the previous evaluation, along
-// the rolling direction (the axle crossed with the reference's up, signed by
-// the forward axis), added to the roll so far. The step is measured along the
+// the rolling direction (the axle crossed with the wheel's rest up in the
+// reference: the ground it stands on, be it a floor, a wall or a rail's side;
+// signed by the forward axis), added to the roll so far. The step is measured along the
 // direction half way between the previous evaluation's and this one's: on a
 // turn it is the chord's own direction, so the roll matches the arc's length
 // to second order in the step's turn (the current direction alone drifts, at
 // every step, by the distance from the pivot times half the step's turn). A wheel
-// whose axle stands upright has no rolling direction: that step rolls nothing.
+// whose axle turns to stand along that up has no rolling direction: that step rolls nothing.
 void solvePathRoll(const CompiledConstraint& c, double amount, EvalState& state)
 {
     Affine& driven = state.world[c.driven.front()];
     const Affine toReference = state.world[c.targets[0]].inverse();
     const Vec3 centre = toReference.apply(driven.translation);
-    Vec3 rolling = glm::cross(toReference.linear * driven.linear[c.axle], Vec3(0.0, 1.0, 0.0));
+    Vec3 rolling = glm::cross(toReference.linear * driven.linear[c.axle], c.upInReference);
     const double length = glm::length(rolling);
     if (length > 1e-9) {
         rolling /= length;
@@ -328,6 +329,9 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         if (!(c.jump >= 0.0)) return "its jump distance must not be negative";
         if (c.jump == 0.0) c.jump = glm::two_pi<double>() * c.radius;
         c.restInReference = rest[c.targets[0]].inverse().apply(rest[c.driven.front()].translation);
+        c.upInReference = rest[c.targets[0]].inverse().linear * rest[c.driven.front()].linear[3 - c.axle - c.forward];
+        if (glm::length(c.upInReference) < 1e-12) return "its rest frame is degenerate";
+        c.upInReference = glm::normalize(c.upInReference);
         return {};
     case ConstraintKind::DrivenKey:
         return checkCurveKeys(c.keys);

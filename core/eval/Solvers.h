@@ -78,6 +78,10 @@ struct CompiledConstraint {
     int axle = 0, forward = 2;
     double radius = 1.0;
     Vec3 restInReference{0.0};
+    // Path mode: the wheel's rest up (its third axis, from the ground contact
+    // to the centre) in the reference's rest frame: the ground plane it rolls
+    // on is across it, whichever way the rig or the wheel stands.
+    Vec3 upInReference{0.0, 1.0, 0.0};
     int pathSlot = -1;
     double jump = 0.0;
 };

@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -71,6 +72,31 @@ TEST(WheelRoll, DrivingOneMetreForwardInAHundredStepsTurnsEachWheelOneOverRadius
     drive(r, pose, "tz", 1.0, 100);
     for (const std::string wheel : kWheels)
         EXPECT_NEAR(rollOf(r, wheel), 1.0 / kRadius, 1e-6) << wheel;
+}
+
+// A wheel need not stand on a floor: a side wheel against a wall (a roller
+// coaster's side-friction wheel, a wall-climbing robot's) rolls on the wall
+// it touches, across its own rest up, not across the rig's Y.
+TEST(WheelRoll, AWheelAgainstAWallRollsAlongItAsTheVehicleTravels)
+{
+    model::GuideDocument guide = test::loadSample("vehicle");
+    model::TemplateInstance& front = *guide.instance(guide.instanceNamed("wheel_front")->id);
+    ASSERT_EQ(front.joints.size(), 3u);
+    front.joints[2].local.translate = Vec3(kRadius, 0.0, 0.0); // the contact beside the centre, not below it
+    PosedRig r(guide);
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    const std::string spin = "wheel_front.L::skin.spin";
+    const Mat3 rest = r.rig.nodes[r.index(spin)].worldMatrix;
+    ASSERT_NEAR(std::abs(glm::normalize(rest[0]).y), 1.0, 1e-9) << "the wheel's axle stands upright: it lies against the wall";
+    drive(r, pose, "tz", 0.6, 30);
+    const Mat3 posed = r.state().world[r.index(spin)].rotation();
+    // The tyre turned about its axle by travel / radius.
+    const double turned = std::acos(std::clamp(glm::dot(glm::normalize(rest[2]), glm::normalize(posed[2])), -1.0, 1.0));
+    EXPECT_NEAR(turned, 0.6 / kRadius, 1e-6);
+    EXPECT_NEAR(glm::dot(glm::normalize(rest[0]), glm::normalize(posed[0])), 1.0, 1e-9) << "about its axle only";
+    // The floor wheels behind roll as before.
+    EXPECT_NEAR(rollOf(r, "wheel_back.L"), 0.6 / kRadius, 1e-6);
 }
 
 TEST(WheelRoll, DrivingTurningAndDrivingOnRollsEachWheelItsOwnPathLength)
