@@ -99,6 +99,39 @@ TEST(WheelRoll, AWheelAgainstAWallRollsAlongItAsTheVehicleTravels)
     EXPECT_NEAR(rollOf(r, "wheel_back.L"), 0.6 / kRadius, 1e-6);
 }
 
+// Steering (turning the wheel control about its up) turns the wheel in place
+// without rolling it; driving on, the steered wheel rolls by the travel along
+// its new heading (the part across it is the tyre's slip).
+TEST(WheelRoll, SteeringTurnsTheWheelWithoutRollingItAndItThenRollsAlongItsHeading)
+{
+    PosedRig r("vehicle");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    auto rollInWheel = [&](const std::string& wheel) { // the tyre's turn in its (steered) control's frame
+        const Mat3 control = r.state().world[r.index(wheel + "::ctrls.wheel")].rotation();
+        const Vec3 up = glm::transpose(control) * glm::normalize(r.state().world[r.index(wheel + "::skin.spin")].rotation()[1]);
+        return std::atan2(up.z, up.y);
+    };
+    const double steer = glm::radians(30.0);
+    for (const std::string side : {"wheel_front.L", "wheel_front.R"}) {
+        const int ry = r.channel(side + "::ctrls.wheel", "ry");
+        for (int i = 1; i <= 10; ++i) { // the animator steers over ten frames
+            pose[ry] = 30.0 * i / 10;
+            r.evaluate(pose);
+        }
+    }
+    for (const std::string side : {"wheel_front.L", "wheel_front.R"}) {
+        EXPECT_NEAR(rollInWheel(side), 0.0, 1e-9) << side << " steering alone rolls nothing";
+        const Mat3 heading = r.state().world[r.index(side + "::ctrls.wheel")].rotation();
+        EXPECT_NEAR(std::abs(glm::normalize(heading[2]).z), std::cos(steer), 1e-9) << side << " is steered";
+    }
+    drive(r, pose, "tz", 1.0, 100);
+    for (const std::string side : {"wheel_front.L", "wheel_front.R"})
+        EXPECT_NEAR(rollInWheel(side), std::cos(steer) / kRadius, 1e-6) << side;
+    for (const std::string side : {"wheel_back.L", "wheel_back.R"})
+        EXPECT_NEAR(rollOf(r, side), 1.0 / kRadius, 1e-6) << side << " (not steered)";
+}
+
 TEST(WheelRoll, DrivingTurningAndDrivingOnRollsEachWheelItsOwnPathLength)
 {
     PosedRig r("vehicle");
