@@ -71,6 +71,7 @@ void addCameras(const model::Rig& rig, ExportScene& scene, CameraNodes& nodes)
             camera.nearClip = value("near_clip", camera.nearClip);
             camera.farClip = value("far_clip", camera.farClip);
             camera.orthographic = value("orthographic", 0.0) >= 0.5;
+            camera.orthoWidth = value("ortho_width", camera.orthoWidth);
         }
         scene.cameras.push_back(camera);
         nodes.views.push_back(view);
@@ -96,6 +97,7 @@ void applyLens(ExportCamera& camera, const eval::RigProgram& program, const eval
     camera.nearClip = valueIn(program, pose, lens, "near_clip", camera.nearClip);
     camera.farClip = valueIn(program, pose, lens, "far_clip", camera.farClip);
     camera.orthographic = valueIn(program, pose, lens, "orthographic", camera.orthographic ? 1.0 : 0.0) >= 0.5;
+    camera.orthoWidth = valueIn(program, pose, lens, "ortho_width", camera.orthoWidth);
 }
 
 double focalLengthIn(const eval::RigProgram& program, const eval::Pose& pose, model::RigNodeIndex lens, double fallback)

@@ -5,7 +5,7 @@
 // rolled, looking down its -Z with +Y up. Its lens is the attributes of the
 // nearest node above it that carries `focal_length` (the camera controller):
 // focal_length (mm), horizontal_aperture / vertical_aperture (film back,
-// inches), near_clip / far_clip (metres), orthographic (enum).
+// inches), near_clip / far_clip (metres), orthographic (enum), ortho_width (metres).
 #include "eval/RigProgram.h"
 #include "io/ExportScene.h"
 

@@ -156,7 +156,8 @@ struct ExportCamera {
     double filmHeight = 0.72;        // inches
     double nearClip = 0.01;          // file units once converted()
     double farClip = 1000.0;
-    bool orthographic = false;       // written as a perspective camera (see io/README.md)
+    bool orthographic = false;
+    double orthoWidth = 2.0;         // orthographic: the width it sees, metres (not converted: see io/README.md)
 };
 // The camera's field of view in radians at `focalLength` millimetres: across
 // the film's height (glTF's yfov) or width (FBX FieldOfView).

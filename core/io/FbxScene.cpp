@@ -196,7 +196,8 @@ std::vector<std::int64_t> addMaterials(Document& doc, const ExportScene& scene, 
 // A camera: a `Camera` Model (the frame turned to FBX's +X look) with its
 // Camera NodeAttribute: the lens as Blender's exporter writes it (focal
 // length in mm, film back in inches, FieldOfView across the film's width in
-// degrees, which Assimp reads), clip planes in file units, perspective.
+// degrees, which Assimp reads), clip planes in file units, perspective or
+// orthographic.
 void addCamera(Document& doc, const ExportCamera& camera, ModelIds& ids)
 {
     const std::int64_t model = addModel(doc, camera.name, "Camera", camera.poseWorld * glm::mat4_cast(fbxCameraTurn()));
@@ -220,7 +221,9 @@ void addCamera(Document& doc, const ExportCamera& camera, ModelIds& ids)
     p70.child("P").addString("FocalLength").addString("Number").addString("").addString("A").addDouble(camera.focalLength);
     propertyDouble(p70, "NearPlane", camera.nearClip);
     propertyDouble(p70, "FarPlane", camera.farClip);
-    propertyInt(p70, "CameraProjectionType", "enum", 0); // perspective
+    propertyInt(p70, "CameraProjectionType", "enum", camera.orthographic ? 1 : 0); // perspective, orthographic
+    if (camera.orthographic) // the width it sees, metres whatever the file's unit: Blender's ortho_scale
+        propertyDouble(p70, "OrthoZoom", camera.orthoWidth);
     attribute.child("TypeFlags").addString("Camera");
     attribute.child("GeometryVersion").addInt32(124);
     attribute.child("Position").addDouble(0.0).addDouble(0.0).addDouble(0.0);

@@ -266,16 +266,25 @@ int addCamera(tinygltf::Model& m, const ExportCamera& source, Diagnostics& repor
 {
     tinygltf::Camera camera;
     camera.name = source.name;
-    camera.type = "perspective";
-    camera.perspective.aspectRatio = source.filmWidth / source.filmHeight;
-    camera.perspective.yfov = verticalFieldOfView(source, source.focalLength);
-    camera.perspective.znear = source.nearClip;
-    camera.perspective.zfar = source.farClip;
+    double zfar = source.farClip;
     if (!(source.farClip > source.nearClip)) { // glTF needs zfar > znear (tinygltf always writes zfar)
-        camera.perspective.zfar = 1000.0 * source.nearClip;
+        zfar = 1000.0 * source.nearClip;
         report.push_back(makeWarning({}, "camera '" + source.name + "': its far clip (" + std::to_string(source.farClip) +
                                              ") is not beyond its near clip (" + std::to_string(source.nearClip) +
                                              "); the glTF's far plane is 1000 times the near clip"));
+    }
+    if (source.orthographic) { // half the width and height it sees, the film's aspect
+        camera.type = "orthographic";
+        camera.orthographic.xmag = 0.5 * source.orthoWidth;
+        camera.orthographic.ymag = 0.5 * source.orthoWidth * source.filmHeight / source.filmWidth;
+        camera.orthographic.znear = source.nearClip;
+        camera.orthographic.zfar = zfar;
+    } else {
+        camera.type = "perspective";
+        camera.perspective.aspectRatio = source.filmWidth / source.filmHeight;
+        camera.perspective.yfov = verticalFieldOfView(source, source.focalLength);
+        camera.perspective.znear = source.nearClip;
+        camera.perspective.zfar = zfar;
     }
     m.cameras.push_back(camera);
     tinygltf::Node node;

@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 
 namespace rs {
 namespace {
@@ -259,6 +260,52 @@ TEST(ExportCamera, AssimpFindsTheCameraOfTheGlbAndTheFbxWhereTheRigPutsIt)
             << extension;
         EXPECT_NEAR(camera.mClipPlaneFar, 1000.0, 1e-3) << extension;
     }
+}
+
+// An orthographic camera (util.camera's `orthographic`, `ortho_width`) is one
+// in every file: glTF's orthographic camera (half the width and height it
+// sees), FBX's projection type 1 with the width as OrthoZoom (what Blender
+// reads as its ortho_scale), and Assimp reads the glTF's width back.
+TEST(ExportCamera, AnOrthographicCameraIsExportedOrthographicWithTheWidthItSees)
+{
+    model::GuideDocument guide = test::loadSample("vehicle");
+    model::TemplateInstance& camera = *guide.instance(guide.instanceNamed("camera")->id);
+    camera.options["orthographic"] = true;
+    camera.options["ortho_width"] = 4.0;
+    const model::Rig rig = rigging::buildRig(guide, test::builtinTemplates());
+    const std::string path = test::temporaryPath("camera-ortho.gltf");
+    ASSERT_FALSE(hasErrors(io::exportRig(rig, path, {})));
+    const nlohmann::json gltf = nlohmann::json::parse(std::ifstream(path));
+    ASSERT_EQ(gltf["cameras"].size(), 1u);
+    EXPECT_EQ(gltf["cameras"][0]["type"], "orthographic");
+    EXPECT_FALSE(gltf["cameras"][0].contains("perspective"));
+    const auto& ortho = gltf["cameras"][0]["orthographic"];
+    EXPECT_NEAR(ortho["xmag"].get<double>(), 2.0, 1e-12);
+    EXPECT_NEAR(ortho["ymag"].get<double>(), 2.0 * 0.72 / 1.28, 1e-12);
+    EXPECT_NEAR(ortho["znear"].get<double>(), 0.01, 1e-12);
+    EXPECT_NEAR(ortho["zfar"].get<double>(), 1000.0, 1e-9);
+    Assimp::Importer importer;
+    const aiScene* read = importer.ReadFile(path, 0);
+    ASSERT_NE(read, nullptr) << importer.GetErrorString();
+    ASSERT_EQ(read->mNumCameras, 1u);
+    EXPECT_NEAR(read->mCameras[0]->mOrthographicWidth, 2.0, 1e-6) << "Assimp keeps glTF's xmag as its width";
+
+    const io::ExportScene scene = cameraScene(rig, {});
+    ASSERT_EQ(scene.cameras.size(), 1u);
+    EXPECT_TRUE(scene.cameras[0].orthographic);
+    const auto convention = io::conventionFor(io::ExportPreset::Unreal, true); // centimetres: the width stays metres
+    const auto bytes = io::fbxBytes(io::converted(scene, convention), convention);
+    ASSERT_TRUE(bytes);
+    const test::FbxFile file = test::readFbx(*bytes);
+    ASSERT_TRUE(file.error.empty()) << file.error;
+    const auto attributes = test::FbxObjects(file).ofKind("NodeAttribute", "Camera");
+    ASSERT_EQ(attributes.size(), 1u);
+    std::map<std::string, double> values;
+    for (const auto* p : attributes[0]->find("Properties70")->all("P"))
+        values[p->properties[0].text] = p->properties.back().type == 'D' ? p->properties.back().number
+                                                                          : double(p->properties.back().integer);
+    EXPECT_EQ(values["CameraProjectionType"], 1.0);
+    EXPECT_NEAR(values["OrthoZoom"], 4.0, 1e-12);
 }
 
 } // namespace rs

@@ -223,6 +223,7 @@ public:
         ctx.addAttribute(body.ctrl, "near_clip", ctx.optionFloat("near_clip"), 0.001, 1e6);
         ctx.addAttribute(body.ctrl, "far_clip", ctx.optionFloat("far_clip"), 0.001, 1e6);
         ctx.addEnumAttribute(body.ctrl, "orthographic", ctx.optionBool("orthographic") ? 1 : 0, {"off", "on"});
+        ctx.addAttribute(body.ctrl, "ortho_width", ctx.optionFloat("ortho_width"), 0.001, 1e6);
         if (ctx.optionBool("image_plane"))
             ctx.addAttribute(body.ctrl, "imageplane_depth", 100.0, 0.0, 1e6);
 
