@@ -158,12 +158,7 @@ const std::vector<std::string> kLegSpaces = {"world", "root", "cog", "hips", "ch
 
 void LimbBuilder::configure(BuildContext& ctx) const
 {
-    const auto group = ctx.findNode("spaces.ik");
-    const auto control = ctx.findNode(ctx.optionBool("do_ctrl") ? "ctrls.ik" : "roots.ik");
-    if (group && control)
-        kit::addSpaceSwitch(ctx, *group, *control, "ik_space", "cns.ik_space", ctx.node(*group).parent,
-                            legLike() ? kLegSpaces : kArmSpaces, false);
-    limb::addPoleSpaceSwitch(ctx);
+    limb::addSpaceSwitches(ctx, legLike() ? kLegSpaces : kArmSpaces, legLike());
 }
 
 void LimbBuilder::generate(BuildContext& ctx) const
@@ -199,7 +194,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
 
     // FK controls.
     std::vector<RigNodeIndex> fk;
-    RigNodeIndex parent = limbGroup;
+    RigNodeIndex parent = limb::addFkSpaceGroup(ctx, limbGroup, frames[0], g.limb[0]); // fk_space (configure())
     for (std::size_t i = 0; i < k; ++i) {
         const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], g.limb[i]);
         kit::animate(ctx, control, kit::kRotate); // FK: rotation only

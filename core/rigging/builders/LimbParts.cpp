@@ -46,6 +46,56 @@ RigNodeIndex addPoleSpaceGroups(BuildContext& ctx, RigNodeIndex world, RigNodeIn
                           source);
 }
 
+namespace {
+
+// An on/off option that is on unless the manifest says otherwise (a limb
+// template of a studio's own without the option keeps the default rig).
+bool optionOnUnlessOff(const BuildContext& ctx, const std::string& name)
+{
+    const Value& v = ctx.option(name);
+    return !std::holds_alternative<bool>(v) || std::get<bool>(v);
+}
+
+// A space switch on `control` (kit::addSpaceSwitch), or with `space_switch`
+// off the space `option` names followed for good, without a switch: nothing
+// when that is the group's own parent.
+void switchOrFollow(BuildContext& ctx, RigNodeIndex group, RigNodeIndex control, const std::string& option,
+                    const std::string& tag, const std::vector<kit::Space>& spaces, bool orientOnly)
+{
+    if (optionOnUnlessOff(ctx, "space_switch")) {
+        kit::addSpaceSwitch(ctx, group, control, option, tag, spaces, orientOnly);
+        return;
+    }
+    const std::string chosen = ctx.optionString(option);
+    RigNodeIndex target = spaces.front().node;
+    for (const kit::Space& space : spaces) {
+        if (space.name != chosen)
+            continue;
+        target = space.node != model::kNoNode ? space.node : ctx.space(space.name);
+        if (target == model::kNoNode) {
+            ctx.warning(option + " '" + chosen + "' is not a space of this rig; it follows '" + spaces.front().name + "'", option);
+            target = spaces.front().node;
+        }
+    }
+    if (target == ctx.node(group).parent)
+        return;
+    if (orientOnly)
+        ctx.addConstraint(tag, {group}, {target}, model::OrientConstraint{});
+    else
+        ctx.addConstraint(tag, {group}, {target}, model::ParentConstraint{});
+}
+
+// Entry 0 is `first`, the others the rig's named spaces.
+std::vector<kit::Space> spacesAfter(RigNodeIndex first, const std::vector<std::string>& names)
+{
+    std::vector<kit::Space> spaces;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        spaces.push_back({names[i], i == 0 ? first : model::kNoNode});
+    return spaces;
+}
+
+} // namespace
+
 void addPoleSpaceSwitch(BuildContext& ctx)
 {
     const bool controls = ctx.optionBool("do_ctrl");
@@ -58,7 +108,36 @@ void addPoleSpaceSwitch(BuildContext& ctx)
     std::vector<kit::Space> spaces;
     for (const std::string& name : poleSpaces())
         spaces.push_back({name, name == "follow" ? *follow : name == "ik" ? *ik : model::kNoNode});
-    kit::addSpaceSwitch(ctx, *group, *pole, "pv_space", "cns.pv_space", spaces, false);
+    switchOrFollow(ctx, *group, *pole, "pv_space", "cns.pv_space", spaces, false);
+}
+
+RigNodeIndex addFkSpaceGroup(BuildContext& ctx, RigNodeIndex limbGroup, const Mat4& frame, model::JointId source)
+{
+    return ctx.createNode(RigNodeKind::Group, "spaces.fk", ctx.nodeName(model::NameRole::Group, "fk_space"), limbGroup, frame,
+                          source);
+}
+
+const std::vector<std::string>& fkSpaces(bool leg)
+{
+    // A leg may follow the hips (a biped's thigh swinging free of the pelvis)
+    // or the chest (a quadruped's front leg on the chest).
+    static const std::vector<std::string> arm = {"parent", "chest", "cog", "world", "root"};
+    static const std::vector<std::string> legs = {"parent", "hips", "chest", "cog", "world", "root"};
+    return leg ? legs : arm;
+}
+
+void addSpaceSwitches(BuildContext& ctx, const std::vector<std::string>& ikSpaces, bool leg)
+{
+    const bool controls = ctx.optionBool("do_ctrl");
+    const auto ikGroup = ctx.findNode("spaces.ik");
+    const auto ik = ctx.findNode(controls ? "ctrls.ik" : "roots.ik");
+    if (ikGroup && ik)
+        switchOrFollow(ctx, *ikGroup, *ik, "ik_space", "cns.ik_space", spacesAfter(ctx.node(*ikGroup).parent, ikSpaces), false);
+    addPoleSpaceSwitch(ctx);
+    const auto fkGroup = ctx.findNode("spaces.fk");
+    const auto fk = ctx.findNode(controls ? "ctrls.fk.0" : "roots.fk.0");
+    if (fkGroup && fk)
+        switchOrFollow(ctx, *fkGroup, *fk, "fk_space", "cns.fk_space", spacesAfter(ctx.node(*fkGroup).parent, fkSpaces(leg)), true);
 }
 
 void addBlendVisibility(BuildContext& ctx, const model::AttributeRef& blend, const std::vector<RigNodeIndex>& fk,

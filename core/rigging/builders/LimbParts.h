@@ -31,6 +31,21 @@ model::RigNodeIndex addPoleSpaceGroups(BuildContext& ctx, model::RigNodeIndex wo
 // switch ("space" enum on the pole control, default from `pv_space`).
 void addPoleSpaceSwitch(BuildContext& ctx);
 
+// FK orientation isolation (`fk_space`): the group "spaces.fk" under
+// `limbGroup` at the first FK control's rest `frame`, which that control
+// hangs under. Returns it (the FK chain's parent).
+model::RigNodeIndex addFkSpaceGroup(BuildContext& ctx, model::RigNodeIndex limbGroup, const Mat4& frame, model::JointId source);
+// The spaces `fk_space` offers: "parent" (what the limb hangs from: the
+// clavicle or pelvis, else the hook), then the rig's named spaces.
+const std::vector<std::string>& fkSpaces(bool leg);
+// Made in configure(): the space switches of the limb's IK control (`ik_space`
+// over `ikSpaces`, entry 0 the IK space group's parent), pole (`pv_space`) and
+// first FK control (`fk_space`, orient only: the FK chain keeps its place on
+// the clavicle or pelvis and takes its orientation from the space). Each is a
+// "space" enum on the control. With `space_switch` off none gets a switch: each
+// follows the space its option names, fixed (nothing when that is its parent).
+void addSpaceSwitches(BuildContext& ctx, const std::vector<std::string>& ikSpaces, bool leg);
+
 // With `ik_fk_visibility` on: `fk` controls shown while `blend` < 1 and `ik`
 // controls while `blend` > 0 (model::VisibilityConstraint).
 void addBlendVisibility(BuildContext& ctx, const model::AttributeRef& blend, const std::vector<model::RigNodeIndex>& fk,
