@@ -3,7 +3,8 @@
 // leg keeps its place on the clavicle or pelvis and its orientation from the
 // chosen space, switchable live by the first FK control's `space` attribute),
 // mirrored on the right branch, and `space_switch` off giving the IK control,
-// the pole and the first FK control no switch but their option's space.
+// the pole and the first FK control no switch but their option's space; a
+// leg without its reverse foot (`reverse_lock` off).
 #include "EvalTestSupport.h"
 #include "core/IncrementalCheck.h"
 
@@ -236,6 +237,42 @@ TEST(LimbRig, FkSpaceAndSpaceSwitchRebuildIncrementallyAsAFullBuild)
         if (i.name == "leg")
             guide.instance(i.id)->options["fk_space"] = std::string("hips");
     test::buildAndCompare(guide, cache, "leg fk_space hips");
+}
+
+TEST(LimbRig, ALegWithoutReverseLockHasNoFootPivotsAndItsIkControlCarriesAnkleAndToe)
+{
+    PosedRig r(sampleWith("biped", {{"leg", {{"reverse_lock", false}}}}));
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
+    for (const char* leg : {"leg.L", "leg.R"}) {
+        const std::string ik = std::string(leg) + "::ctrls.ik";
+        for (const auto& node : r.rig.nodes)
+            EXPECT_EQ(node.path.rfind(std::string(leg) + "::rfoot.", 0), std::string::npos) << node.path;
+        EXPECT_FALSE(r.program->channels().find(r.index(ik), "roll").has_value()) << leg;
+        Pose pose = r.defaults();
+        pose[r.channel(std::string(leg) + "::ctrls.switch", "ik_blend")] = 1.0;
+        pose[r.channel(ik, "ty")] = 0.1;
+        pose[r.channel(ik, "rx")] = 30.0;
+        pose[r.channel(ik, "ry")] = 20.0;
+        r.evaluate(pose);
+        const eval::Affine carried = motionOf(r, ik);
+        for (const char* joint : {"::blend.2", "::blend.ball"}) {
+            const std::string id = std::string(leg) + joint;
+            EXPECT_LT(glm::length(r.position(id) - carried.apply(r.restPosition(id))), 1e-9) << id;
+            EXPECT_LT(largestDifference(rotationAt(r, id), carried.rotation() * r.program->restWorld(r.index(id)).rotation()), 1e-9)
+                << id;
+        }
+        // IK -> FK and back keep the leg in place.
+        auto fk = r.posing->ikToFk(pose, r.index(ik));
+        ASSERT_TRUE(fk) << formatAll(fk.diagnostics());
+        r.evaluate(*fk);
+        const Vec3 ball = r.position(std::string(leg) + "::blend.ball");
+        EXPECT_LT(glm::length(ball - carried.apply(r.restPosition(std::string(leg) + "::blend.ball"))), 1e-5) << leg;
+        auto back = r.posing->fkToIk(*fk, r.index(std::string(leg) + "::ctrls.fk.1"));
+        ASSERT_TRUE(back) << formatAll(back.diagnostics());
+        r.evaluate(*back);
+        EXPECT_LT(glm::length(r.position(std::string(leg) + "::blend.ball") - ball), 1e-5) << leg;
+    }
 }
 
 } // namespace

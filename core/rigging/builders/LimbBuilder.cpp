@@ -222,7 +222,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     kit::animate(ctx, poleCtrl, kit::kTranslate);
     const auto pinCtrl = limb::addPinControl(ctx, poleSpace, g.points[1], g.limb[1]);
     RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
-    if (legLike())
+    if (legLike() && limb::hasReverseFoot(ctx))
         buildReverseFoot(ctx, g, ikCtrl, normal, effector, toeTap);
 
     // IK chain (setup joints) and the blend chain everything else follows.
@@ -267,7 +267,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
         const auto toeFk = toeControl.ctrl;
         fkShown.push_back(toeFk);
         const auto ikBall = kit::addSetup(ctx, RigNodeKind::Joint, "ik.ball", "ik_toe", {}, ik.back(), frames[k], g.end);
-        ctx.addConstraint("cns.ik_ball", {ikBall}, {toeTap}, model::OrientConstraint{});
+        ctx.addConstraint("cns.ik_ball", {ikBall}, {toeTap != model::kNoNode ? toeTap : ikCtrl}, model::OrientConstraint{});
         end = kit::addSetup(ctx, RigNodeKind::Joint, "blend.ball", "blend_toe", {}, blend.back(), frames[k], g.end);
         ctx.addConstraint("cns.blend.ball", {end}, {toeFk, ikBall}, model::BlendConstraint{.weight = weight});
     }

@@ -223,6 +223,8 @@ void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& g, RigNodeIndex 
     ctx.addConstraint("cns.auto_clavicle.follow", {g.follow}, {g.rest, g.share}, model::BlendConstraint{.weight = ikBlend});
 }
 
+bool hasReverseFoot(const BuildContext& ctx) { return optionOnUnlessOff(ctx, "reverse_lock"); }
+
 RigNodeIndex addPinControl(BuildContext& ctx, RigNodeIndex poleSpace, const Vec3& mid, model::JointId source)
 {
     if (!ctx.optionBool("pin"))

@@ -77,6 +77,11 @@ AutoClavicle addAutoClavicleGroups(BuildContext& ctx, model::RigNodeIndex hook, 
 void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& groups, model::RigNodeIndex clavicle, model::RigNodeIndex ikControl,
                          const model::AttributeRef& ikBlend);
 
+// Legs build the reverse foot (heel, toe, ball and bank pivots under the IK
+// control) unless `reverse_lock` (Mikan's) is off: then the IK control drives
+// the ankle and the toe directly.
+bool hasReverseFoot(const BuildContext& ctx);
+
 // Pin (option `pin`): a control at the middle joint (elbow, knee) in the
 // pole's space; the IK's pin channel (on `settings`, 0 by default) locks the
 // middle joint to it. Returns kNoNode when the option is off.
