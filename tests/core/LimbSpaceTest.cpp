@@ -4,7 +4,8 @@
 // chosen space, switchable live by the first FK control's `space` attribute),
 // mirrored on the right branch, and `space_switch` off giving the IK control,
 // the pole and the first FK control no switch but their option's space; a
-// leg without its reverse foot (`reverse_lock` off).
+// leg without its reverse foot (`reverse_lock` off); the end joint's
+// orientation (`effector_plane`).
 #include "EvalTestSupport.h"
 #include "core/IncrementalCheck.h"
 
@@ -273,6 +274,60 @@ TEST(LimbRig, ALegWithoutReverseLockHasNoFootPivotsAndItsIkControlCarriesAnkleAn
         r.evaluate(*back);
         EXPECT_LT(glm::length(r.position(std::string(leg) + "::blend.ball") - ball), 1e-5) << leg;
     }
+}
+
+Vec3 restAxis(const PosedRig& r, const std::string& id, int column)
+{
+    return Vec3(r.rig.nodes[r.index(id)].worldMatrix[column]);
+}
+
+TEST(LimbRig, EffectorPlaneGroundLevelsTheFeetAndYTurnsTheHandsUpOnBothSides)
+{
+    PosedRig r(sampleWith("biped", {{"leg", {{"effector_plane", std::string("ground")}, {"ik_orient", std::string("joint")}}},
+                                    {"arm", {{"effector_plane", std::string("y")}}}}));
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
+    PosedRig before("biped");
+    const Vec3 up(0.0, 1.0, 0.0);
+    for (const char* leg : {"leg.L", "leg.R"})
+        for (const char* joint : {"::blend.2", "::blend.ball", "::ctrls.fk.2", "::ctrls.ik"}) {
+            const std::string id = std::string(leg) + joint;
+            EXPECT_LT(glm::length(restAxis(r, id, 1) - up), 1e-9) << id << ": Y straight up";
+            EXPECT_LT(std::abs(restAxis(r, id, 0).y), 1e-9) << id << ": X level";
+            EXPECT_LT(glm::length(r.restPosition(id) - before.restPosition(id)), 1e-9) << id << " moved";
+        }
+    for (const char* arm : {"arm.L", "arm.R"}) {
+        const std::string wrist = std::string(arm) + "::blend.2";
+        const Vec3 aim = restAxis(before, wrist, 0);
+        EXPECT_LT(glm::length(restAxis(r, wrist, 0) - aim), 1e-9) << arm << ": still aimed down the hand";
+        EXPECT_LT(glm::length(restAxis(r, wrist, 1) - glm::normalize(up - aim * glm::dot(up, aim))), 1e-9) << arm;
+        EXPECT_GT(glm::length(restAxis(before, wrist, 1) - restAxis(r, wrist, 1)), 0.1) << arm << ": auto differs";
+    }
+    // The leg still matches IK to FK and back with its levelled ankle.
+    Pose pose = r.defaults();
+    pose[r.channel("leg.L::ctrls.switch", "ik_blend")] = 0.0;
+    pose[r.channel("leg.L::ctrls.fk.0", "rx")] = 25.0;
+    pose[r.channel("leg.L::ctrls.fk.1", "rz")] = 40.0;
+    pose[r.channel("leg.L::ctrls.fk.2", "ry")] = 15.0;
+    r.evaluate(pose);
+    const Vec3 ball = r.position("leg.L::blend.ball"), ankle = r.position("leg.L::blend.2");
+    auto ik = r.posing->fkToIk(pose, r.index("leg.L::ctrls.fk.1"));
+    ASSERT_TRUE(ik) << formatAll(ik.diagnostics());
+    r.evaluate(*ik);
+    EXPECT_LT(glm::length(r.position("leg.L::blend.ball") - ball), 1e-5);
+    EXPECT_LT(glm::length(r.position("leg.L::blend.2") - ankle), 1e-5);
+}
+
+TEST(LimbRig, AnEffectorPlaneAlongTheAimWarnsAndKeepsTheLimbsPlane)
+{
+    const model::Rig rig = rigging::buildRig(sampleWith("biped", {{"arm", {{"effector_plane", std::string("x")}}}}),
+                                             test::builtinTemplates());
+    const model::Rig plain = rigging::buildRig(test::loadSample("biped"), test::builtinTemplates());
+    ASSERT_EQ(rig.diagnostics.size(), 2u) << formatAll(rig.diagnostics); // arm.L and arm.R
+    EXPECT_NE(rig.diagnostics[0].message.find("effector_plane 'x': the end joint aims along that axis"), std::string::npos)
+        << rig.diagnostics[0].message;
+    EXPECT_EQ(io::writeRigDump(rig).substr(0, io::writeRigDump(rig).find("diagnostics:")),
+              io::writeRigDump(plain).substr(0, io::writeRigDump(plain).find("diagnostics:")));
 }
 
 } // namespace

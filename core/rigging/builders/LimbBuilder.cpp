@@ -167,7 +167,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const std::size_t k = limbCount();
     Vec3 normal, poleDirection;
     bendOf(ctx, g, normal, poleDirection);
-    const auto frames = kit::chainFrames(g.points, normal); // limb1..limbK, end
+    const auto frames = limb::orientEffector(ctx, kit::chainFrames(g.points, normal), k); // limb1..limbK, end
     const RigNodeIndex world = ctx.space("world") != model::kNoNode ? ctx.space("world") : ctx.hookNode();
 
     // Clavicle / pelvis.

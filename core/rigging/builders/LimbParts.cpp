@@ -23,6 +23,41 @@ Mat4 ikControlFrame(const BuildContext& ctx, const Vec3& position, const Mat4& j
     return frame;
 }
 
+std::vector<Mat4> orientEffector(const BuildContext& ctx, std::vector<Mat4> frames, std::size_t k)
+{
+    const std::string plane = ctx.optionString("effector_plane");
+    if (plane != "x" && plane != "y" && plane != "z" && plane != "ground")
+        return frames; // auto, or a template without the option
+    const Vec3 up(0.0, 1.0, 0.0);
+    const Vec3 aim(frames[k - 1][0]);
+    Mat4 frame(1.0);
+    if (plane == "ground") {
+        const Vec3 level = aim - up * glm::dot(aim, up);
+        if (glm::length(level) < 1e-6) {
+            ctx.warning("effector_plane 'ground': the end joint aims straight up or down, so the ground gives no forward; "
+                        "it keeps the limb's plane (auto)",
+                        "effector_plane");
+            return frames;
+        }
+        frame = kit::aimFrame(Vec3(0.0), level, glm::cross(level, up));
+    } else {
+        const Vec3 axis(plane == "x" ? 1.0 : 0.0, plane == "y" ? 1.0 : 0.0, plane == "z" ? 1.0 : 0.0);
+        if (glm::length(glm::cross(glm::normalize(aim), axis)) < 1e-3) {
+            ctx.warning("effector_plane '" + plane + "': the end joint aims along that axis, so it gives no up; it keeps the "
+                        "limb's plane (auto)",
+                        "effector_plane");
+            return frames;
+        }
+        frame = kit::aimFrame(Vec3(0.0), aim, glm::cross(aim, axis)); // Z = X x axis, so Y leans towards the axis
+    }
+    for (std::size_t i = k - 1; i <= k && i < frames.size(); ++i) {
+        const Vec4 position = frames[i][3];
+        frames[i] = frame;
+        frames[i][3] = position;
+    }
+    return frames;
+}
+
 const std::vector<std::string>& poleSpaces()
 {
     static const std::vector<std::string> spaces = {"follow", "ik", "world", "root", "cog"};

@@ -17,6 +17,15 @@ namespace rs::rigging::limb {
 // `jointFrame`; `copy` the orientation the rigger gave the end's guide joint.
 Mat4 ikControlFrame(const BuildContext& ctx, const Vec3& position, const Mat4& jointFrame, model::JointId endGuide);
 
+// The frames of the limb's end joint (wrist, ankle: frames[k - 1]) and the
+// joint after it (hand tip, ball: frames[k]) for the option `effector_plane`
+// (Mikan's): `auto` keeps `frames` (the limb's bend plane carried on); `x`,
+// `y`, `z` keep each one's aim (X) and turn its Y towards that authored-space
+// axis; `ground` levels them: X the aim flattened onto the ground, Y straight
+// up. An axis along the aim (or a vertical aim for `ground`) keeps `auto` with
+// a warning. ik_orient `joint` then orients the IK control the same way.
+std::vector<Mat4> orientEffector(const BuildContext& ctx, std::vector<Mat4> frames, std::size_t k);
+
 // The pole's spaces: "follow" (a hidden group halfway between the limb's root
 // group and the IK control, turned like the root, so the knee or elbow keeps
 // its side when the body travels or turns away from a planted foot or hand,
