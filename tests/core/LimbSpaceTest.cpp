@@ -86,7 +86,7 @@ TEST(LimbRig, FkWorldSpaceKeepsTheUpperArmAndThighWorldOrientationWhileTheirPlac
 
 TEST(LimbRig, FkParentSpaceTurnsTheUpperArmWithTheBodyAsBefore)
 {
-    PosedRig r("biped");
+    PosedRig r(sampleWith("biped", {{"arm", {{"fk_space", std::string("parent")}}}})); // the sample's arms use chest
     ASSERT_TRUE(r.ok());
     for (const char* limb : kLimbs) {
         const std::string fk = std::string(limb) + "::ctrls.fk.0";
