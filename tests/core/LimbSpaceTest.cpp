@@ -222,6 +222,20 @@ TEST(LimbRig, SpaceSwitchOffGivesTheLimbControlsNoSwitchButTheirOptionsSpaces)
         << "pv_space follow, fixed";
 }
 
+TEST(LimbRig, AnUnknownFkSpaceIsReportedAndTheArmKeepsItsParent)
+{
+    const model::Rig rig = rigging::buildRig(sampleWith("biped", {{"arm", {{"fk_space", std::string("sideways")}}}}),
+                                             test::builtinTemplates());
+    const model::Rig parent = rigging::buildRig(sampleWith("biped", {{"arm", {{"fk_space", std::string("parent")}}}}),
+                                                test::builtinTemplates());
+    ASSERT_EQ(rig.diagnostics.size(), 2u) << formatAll(rig.diagnostics);
+    for (const auto& d : rig.diagnostics)
+        EXPECT_NE(d.message.find("option 'fk_space' = 'sideways' is not one of its labels, using the default"), std::string::npos)
+            << d.message;
+    const std::string dump = io::writeRigDump(rig), expected = io::writeRigDump(parent);
+    EXPECT_EQ(dump.substr(0, dump.find("diagnostics:")), expected.substr(0, expected.find("diagnostics:")));
+}
+
 TEST(LimbRig, FkSpaceAndSpaceSwitchRebuildIncrementallyAsAFullBuild)
 {
     model::GuideDocument guide = sampleWith("biped", {{"arm", {{"fk_space", std::string("chest")}}}});

@@ -1,8 +1,11 @@
 #pragma once
 // Parts of the limb builder (LimbBuilder.cpp) an animator judges a limb by,
 // each driven by a template option (templates/arm/limb, leg/limb, quad/leg):
-// where the IK control is oriented (`ik_orient`), what the pole follows
-// (`pv_space`), which of the FK and IK controls are shown for the blend
+// where the IK control is oriented (`ik_orient`), how the end joint is
+// oriented (`effector_plane`), what the pole follows (`pv_space`), what the
+// FK chain takes its orientation from (`fk_space`), whether the IK, pole and
+// FK controls get space switches (`space_switch`), whether a leg has its
+// reverse foot (`reverse_lock`), which of the FK and IK controls are shown for the blend
 // (`ik_fk_visibility`) and how the upper segment's twist is shared
 // (`non_rolling`, `twist_upper`, `twist_lower`). Everything is in authored
 // space (BuildContext), so a mirrored branch gets the mirror image.
