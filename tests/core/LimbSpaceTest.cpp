@@ -252,6 +252,12 @@ TEST(LimbRig, FkSpaceAndSpaceSwitchRebuildIncrementallyAsAFullBuild)
         if (i.name == "leg")
             guide.instance(i.id)->options["fk_space"] = std::string("hips");
     test::buildAndCompare(guide, cache, "leg fk_space hips");
+    for (const auto& i : guide.instances())
+        if (i.name == "leg") {
+            guide.instance(i.id)->options["reverse_lock"] = false;
+            guide.instance(i.id)->options["effector_plane"] = std::string("ground");
+        }
+    test::buildAndCompare(guide, cache, "leg without reverse foot, ground effector");
 }
 
 TEST(LimbRig, ALegWithoutReverseLockHasNoFootPivotsAndItsIkControlCarriesAnkleAndToe)
