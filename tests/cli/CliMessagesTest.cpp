@@ -61,8 +61,9 @@ TEST(Cli, AnEmptyPathForAnOutputOptionIsAnError)
 TEST(Cli, ARepeatedBranchNameIsOneErrorAboutTheInstance)
 {
     const fs::path folder = freshFolder("repeated-branch");
-    const fs::path guide = editedBiped(folder, "guide.yml", "    template: arm.limb\n    name: arm\n",
-                                       "    template: arm.limb\n    name: arm\n    options:\n      branches: \"[L, L]\"\n");
+    // The sample's arm has options already (fk_space): the branches go in the same block.
+    const fs::path guide = editedBiped(folder, "guide.yml", "    hook: 7\n    options:\n",
+                                       "    hook: 7\n    options:\n      branches: \"[L, L]\"\n");
     const CliRun run = runCli({"build", guide.string()}, folder);
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_EQ(countLines(run.errors, "error:"), 1u) << run.errors;

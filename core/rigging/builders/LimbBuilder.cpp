@@ -158,12 +158,7 @@ const std::vector<std::string> kLegSpaces = {"world", "root", "cog", "hips", "ch
 
 void LimbBuilder::configure(BuildContext& ctx) const
 {
-    const auto group = ctx.findNode("spaces.ik");
-    const auto control = ctx.findNode(ctx.optionBool("do_ctrl") ? "ctrls.ik" : "roots.ik");
-    if (group && control)
-        kit::addSpaceSwitch(ctx, *group, *control, "ik_space", "cns.ik_space", ctx.node(*group).parent,
-                            legLike() ? kLegSpaces : kArmSpaces, false);
-    limb::addPoleSpaceSwitch(ctx);
+    limb::addSpaceSwitches(ctx, legLike() ? kLegSpaces : kArmSpaces, legLike());
 }
 
 void LimbBuilder::generate(BuildContext& ctx) const
@@ -172,7 +167,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const std::size_t k = limbCount();
     Vec3 normal, poleDirection;
     bendOf(ctx, g, normal, poleDirection);
-    const auto frames = kit::chainFrames(g.points, normal); // limb1..limbK, end
+    const auto frames = limb::orientEffector(ctx, kit::chainFrames(g.points, normal), k); // limb1..limbK, end
     const RigNodeIndex world = ctx.space("world") != model::kNoNode ? ctx.space("world") : ctx.hookNode();
 
     // Clavicle / pelvis.
@@ -199,7 +194,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
 
     // FK controls.
     std::vector<RigNodeIndex> fk;
-    RigNodeIndex parent = limbGroup;
+    RigNodeIndex parent = limb::addFkSpaceGroup(ctx, limbGroup, frames[0], g.limb[0]); // fk_space (configure())
     for (std::size_t i = 0; i < k; ++i) {
         const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], g.limb[i]);
         kit::animate(ctx, control, kit::kRotate); // FK: rotation only
@@ -227,7 +222,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     kit::animate(ctx, poleCtrl, kit::kTranslate);
     const auto pinCtrl = limb::addPinControl(ctx, poleSpace, g.points[1], g.limb[1]);
     RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
-    if (legLike())
+    if (legLike() && limb::hasReverseFoot(ctx))
         buildReverseFoot(ctx, g, ikCtrl, normal, effector, toeTap);
 
     // IK chain (setup joints) and the blend chain everything else follows.
@@ -272,7 +267,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
         const auto toeFk = toeControl.ctrl;
         fkShown.push_back(toeFk);
         const auto ikBall = kit::addSetup(ctx, RigNodeKind::Joint, "ik.ball", "ik_toe", {}, ik.back(), frames[k], g.end);
-        ctx.addConstraint("cns.ik_ball", {ikBall}, {toeTap}, model::OrientConstraint{});
+        ctx.addConstraint("cns.ik_ball", {ikBall}, {toeTap != model::kNoNode ? toeTap : ikCtrl}, model::OrientConstraint{});
         end = kit::addSetup(ctx, RigNodeKind::Joint, "blend.ball", "blend_toe", {}, blend.back(), frames[k], g.end);
         ctx.addConstraint("cns.blend.ball", {end}, {toeFk, ikBall}, model::BlendConstraint{.weight = weight});
     }

@@ -23,6 +23,41 @@ Mat4 ikControlFrame(const BuildContext& ctx, const Vec3& position, const Mat4& j
     return frame;
 }
 
+std::vector<Mat4> orientEffector(const BuildContext& ctx, std::vector<Mat4> frames, std::size_t k)
+{
+    const std::string plane = ctx.optionString("effector_plane");
+    if (plane != "x" && plane != "y" && plane != "z" && plane != "ground")
+        return frames; // auto, or a template without the option
+    const Vec3 up(0.0, 1.0, 0.0);
+    const Vec3 aim(frames[k - 1][0]);
+    Mat4 frame(1.0);
+    if (plane == "ground") {
+        const Vec3 level = aim - up * glm::dot(aim, up);
+        if (glm::length(level) < 1e-6) {
+            ctx.warning("effector_plane 'ground': the end joint aims straight up or down, so the ground gives no forward; "
+                        "it keeps the limb's plane (auto)",
+                        "effector_plane");
+            return frames;
+        }
+        frame = kit::aimFrame(Vec3(0.0), level, glm::cross(level, up));
+    } else {
+        const Vec3 axis(plane == "x" ? 1.0 : 0.0, plane == "y" ? 1.0 : 0.0, plane == "z" ? 1.0 : 0.0);
+        if (glm::length(glm::cross(glm::normalize(aim), axis)) < 1e-3) {
+            ctx.warning("effector_plane '" + plane + "': the end joint aims along that axis, so it gives no up; it keeps the "
+                        "limb's plane (auto)",
+                        "effector_plane");
+            return frames;
+        }
+        frame = kit::aimFrame(Vec3(0.0), aim, glm::cross(aim, axis)); // Z = X x axis, so Y leans towards the axis
+    }
+    for (std::size_t i = k - 1; i <= k && i < frames.size(); ++i) {
+        const Vec4 position = frames[i][3];
+        frames[i] = frame;
+        frames[i][3] = position;
+    }
+    return frames;
+}
+
 const std::vector<std::string>& poleSpaces()
 {
     static const std::vector<std::string> spaces = {"follow", "ik", "world", "root", "cog"};
@@ -46,6 +81,56 @@ RigNodeIndex addPoleSpaceGroups(BuildContext& ctx, RigNodeIndex world, RigNodeIn
                           source);
 }
 
+namespace {
+
+// An on/off option that is on unless the manifest says otherwise (a limb
+// template of a studio's own without the option keeps the default rig).
+bool optionOnUnlessOff(const BuildContext& ctx, const std::string& name)
+{
+    const Value& v = ctx.option(name);
+    return !std::holds_alternative<bool>(v) || std::get<bool>(v);
+}
+
+// A space switch on `control` (kit::addSpaceSwitch), or with `space_switch`
+// off the space `option` names followed for good, without a switch: nothing
+// when that is the group's own parent.
+void switchOrFollow(BuildContext& ctx, RigNodeIndex group, RigNodeIndex control, const std::string& option,
+                    const std::string& tag, const std::vector<kit::Space>& spaces, bool orientOnly)
+{
+    if (optionOnUnlessOff(ctx, "space_switch")) {
+        kit::addSpaceSwitch(ctx, group, control, option, tag, spaces, orientOnly);
+        return;
+    }
+    const std::string chosen = ctx.optionString(option);
+    RigNodeIndex target = spaces.front().node;
+    for (const kit::Space& space : spaces) {
+        if (space.name != chosen)
+            continue;
+        target = space.node != model::kNoNode ? space.node : ctx.space(space.name);
+        if (target == model::kNoNode) {
+            ctx.warning(option + " '" + chosen + "' is not a space of this rig; it follows '" + spaces.front().name + "'", option);
+            target = spaces.front().node;
+        }
+    }
+    if (target == ctx.node(group).parent)
+        return;
+    if (orientOnly)
+        ctx.addConstraint(tag, {group}, {target}, model::OrientConstraint{});
+    else
+        ctx.addConstraint(tag, {group}, {target}, model::ParentConstraint{});
+}
+
+// Entry 0 is `first`, the others the rig's named spaces.
+std::vector<kit::Space> spacesAfter(RigNodeIndex first, const std::vector<std::string>& names)
+{
+    std::vector<kit::Space> spaces;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        spaces.push_back({names[i], i == 0 ? first : model::kNoNode});
+    return spaces;
+}
+
+} // namespace
+
 void addPoleSpaceSwitch(BuildContext& ctx)
 {
     const bool controls = ctx.optionBool("do_ctrl");
@@ -58,7 +143,36 @@ void addPoleSpaceSwitch(BuildContext& ctx)
     std::vector<kit::Space> spaces;
     for (const std::string& name : poleSpaces())
         spaces.push_back({name, name == "follow" ? *follow : name == "ik" ? *ik : model::kNoNode});
-    kit::addSpaceSwitch(ctx, *group, *pole, "pv_space", "cns.pv_space", spaces, false);
+    switchOrFollow(ctx, *group, *pole, "pv_space", "cns.pv_space", spaces, false);
+}
+
+RigNodeIndex addFkSpaceGroup(BuildContext& ctx, RigNodeIndex limbGroup, const Mat4& frame, model::JointId source)
+{
+    return ctx.createNode(RigNodeKind::Group, "spaces.fk", ctx.nodeName(model::NameRole::Group, "fk_space"), limbGroup, frame,
+                          source);
+}
+
+const std::vector<std::string>& fkSpaces(bool leg)
+{
+    // A leg may follow the hips (a biped's thigh swinging free of the pelvis)
+    // or the chest (a quadruped's front leg on the chest).
+    static const std::vector<std::string> arm = {"parent", "chest", "cog", "world", "root"};
+    static const std::vector<std::string> legs = {"parent", "hips", "chest", "cog", "world", "root"};
+    return leg ? legs : arm;
+}
+
+void addSpaceSwitches(BuildContext& ctx, const std::vector<std::string>& ikSpaces, bool leg)
+{
+    const bool controls = ctx.optionBool("do_ctrl");
+    const auto ikGroup = ctx.findNode("spaces.ik");
+    const auto ik = ctx.findNode(controls ? "ctrls.ik" : "roots.ik");
+    if (ikGroup && ik)
+        switchOrFollow(ctx, *ikGroup, *ik, "ik_space", "cns.ik_space", spacesAfter(ctx.node(*ikGroup).parent, ikSpaces), false);
+    addPoleSpaceSwitch(ctx);
+    const auto fkGroup = ctx.findNode("spaces.fk");
+    const auto fk = ctx.findNode(controls ? "ctrls.fk.0" : "roots.fk.0");
+    if (fkGroup && fk)
+        switchOrFollow(ctx, *fkGroup, *fk, "fk_space", "cns.fk_space", spacesAfter(ctx.node(*fkGroup).parent, fkSpaces(leg)), true);
 }
 
 void addBlendVisibility(BuildContext& ctx, const model::AttributeRef& blend, const std::vector<RigNodeIndex>& fk,
@@ -143,6 +257,8 @@ void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& g, RigNodeIndex 
     ctx.addConstraint("cns.auto_clavicle.share", {g.share}, {g.rest, g.aim}, model::BlendConstraint{.weight = share});
     ctx.addConstraint("cns.auto_clavicle.follow", {g.follow}, {g.rest, g.share}, model::BlendConstraint{.weight = ikBlend});
 }
+
+bool hasReverseFoot(const BuildContext& ctx) { return optionOnUnlessOff(ctx, "reverse_lock"); }
 
 RigNodeIndex addPinControl(BuildContext& ctx, RigNodeIndex poleSpace, const Vec3& mid, model::JointId source)
 {

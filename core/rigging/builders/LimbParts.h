@@ -1,8 +1,11 @@
 #pragma once
 // Parts of the limb builder (LimbBuilder.cpp) an animator judges a limb by,
 // each driven by a template option (templates/arm/limb, leg/limb, quad/leg):
-// where the IK control is oriented (`ik_orient`), what the pole follows
-// (`pv_space`), which of the FK and IK controls are shown for the blend
+// where the IK control is oriented (`ik_orient`), how the end joint is
+// oriented (`effector_plane`), what the pole follows (`pv_space`), what the
+// FK chain takes its orientation from (`fk_space`), whether the IK, pole and
+// FK controls get space switches (`space_switch`), whether a leg has its
+// reverse foot (`reverse_lock`), which of the FK and IK controls are shown for the blend
 // (`ik_fk_visibility`) and how the upper segment's twist is shared
 // (`non_rolling`, `twist_upper`, `twist_lower`). Everything is in authored
 // space (BuildContext), so a mirrored branch gets the mirror image.
@@ -17,6 +20,15 @@ namespace rs::rigging::limb {
 // `jointFrame`; `copy` the orientation the rigger gave the end's guide joint.
 Mat4 ikControlFrame(const BuildContext& ctx, const Vec3& position, const Mat4& jointFrame, model::JointId endGuide);
 
+// The frames of the limb's end joint (wrist, ankle: frames[k - 1]) and the
+// joint after it (hand tip, ball: frames[k]) for the option `effector_plane`
+// (Mikan's): `auto` keeps `frames` (the limb's bend plane carried on); `x`,
+// `y`, `z` keep each one's aim (X) and turn its Y towards that authored-space
+// axis; `ground` levels them: X the aim flattened onto the ground, Y straight
+// up. An axis along the aim (or a vertical aim for `ground`) keeps `auto` with
+// a warning. ik_orient `joint` then orients the IK control the same way.
+std::vector<Mat4> orientEffector(const BuildContext& ctx, std::vector<Mat4> frames, std::size_t k);
+
 // The pole's spaces: "follow" (a hidden group halfway between the limb's root
 // group and the IK control, turned like the root, so the knee or elbow keeps
 // its side when the body travels or turns away from a planted foot or hand,
@@ -30,6 +42,21 @@ model::RigNodeIndex addPoleSpaceGroups(BuildContext& ctx, model::RigNodeIndex wo
 // Made in configure(), once other instances' spaces exist: the pole's space
 // switch ("space" enum on the pole control, default from `pv_space`).
 void addPoleSpaceSwitch(BuildContext& ctx);
+
+// FK orientation isolation (`fk_space`): the group "spaces.fk" under
+// `limbGroup` at the first FK control's rest `frame`, which that control
+// hangs under. Returns it (the FK chain's parent).
+model::RigNodeIndex addFkSpaceGroup(BuildContext& ctx, model::RigNodeIndex limbGroup, const Mat4& frame, model::JointId source);
+// The spaces `fk_space` offers: "parent" (what the limb hangs from: the
+// clavicle or pelvis, else the hook), then the rig's named spaces.
+const std::vector<std::string>& fkSpaces(bool leg);
+// Made in configure(): the space switches of the limb's IK control (`ik_space`
+// over `ikSpaces`, entry 0 the IK space group's parent), pole (`pv_space`) and
+// first FK control (`fk_space`, orient only: the FK chain keeps its place on
+// the clavicle or pelvis and takes its orientation from the space). Each is a
+// "space" enum on the control. With `space_switch` off none gets a switch: each
+// follows the space its option names, fixed (nothing when that is its parent).
+void addSpaceSwitches(BuildContext& ctx, const std::vector<std::string>& ikSpaces, bool leg);
 
 // With `ik_fk_visibility` on: `fk` controls shown while `blend` < 1 and `ik`
 // controls while `blend` > 0 (model::VisibilityConstraint).
@@ -61,6 +88,11 @@ AutoClavicle addAutoClavicleGroups(BuildContext& ctx, model::RigNodeIndex hook, 
 // `clavicle` and the aim and blends.
 void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& groups, model::RigNodeIndex clavicle, model::RigNodeIndex ikControl,
                          const model::AttributeRef& ikBlend);
+
+// Legs build the reverse foot (heel, toe, ball and bank pivots under the IK
+// control) unless `reverse_lock` (Mikan's) is off: then the IK control drives
+// the ankle and the toe directly.
+bool hasReverseFoot(const BuildContext& ctx);
 
 // Pin (option `pin`): a control at the middle joint (elbow, knee) in the
 // pole's space; the IK's pin channel (on `settings`, 0 by default) locks the

@@ -8,7 +8,7 @@ $C new $G --name biped
 $C add $G world.character --name world
 $C add $G spine.torso --under world --name spine
 $C add $G neck.head --under spine --name neck
-$C add $G arm.limb --under spine --name arm
+$C add $G arm.limb --under spine --name arm --set fk_space=chest
 $C add $G leg.limb --under spine:hips --name leg
 $C add $G digit.finger --under arm:hand --name thumb --at 0.015,-0.01,0.035 --set number=4 --set length=0.07
 $C add $G digit.finger --under arm:hand --name index --at 0.03,0,0.035
