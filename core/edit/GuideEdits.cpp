@@ -140,6 +140,7 @@ private:
         auto& options = d.instance(m_id)->options;
         if (v) options[m_option] = *v;
         else options.erase(m_option);
+        d.instance(m_id)->optionSources.at.erase(m_option); // no longer the file's value
     }
     InstanceId m_id;
     std::string m_option;

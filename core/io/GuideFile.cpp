@@ -100,8 +100,12 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
         else if (key == "options") {
             if (!r.expectMap(v, "options")) { ok = false; continue; }
             for (const auto& o : v)
-                if (auto value = readValue(r, o.second, "option " + o.first.Scalar())) instance.options[o.first.Scalar()] = *value;
-                else ok = false;
+                if (auto value = readValue(r, o.second, "option " + o.first.Scalar())) {
+                    instance.options[o.first.Scalar()] = *value;
+                    instance.optionSources.at[o.first.Scalar()] = locationOf(o.second, r.file());
+                } else {
+                    ok = false;
+                }
             ok = checkAxisPair(r, v) && ok;
         } else if (key == "structure" || key == "names") {
             if (!r.expectMap(v, key)) { ok = false; continue; }

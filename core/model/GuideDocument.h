@@ -52,6 +52,12 @@ struct TemplateInstance {
     InstanceId parent = kNoId;       // kNoId: top-level instance
     JointId parentJoint = kNoId;     // the parent's joint this instance hangs under
     std::map<std::string, Value> options; // only values that differ from the defaults
+    // Where each option was read (file:line, for the build's messages about its
+    // value); an edited option has none. Not part of equality.
+    struct OptionSources {
+        std::map<std::string, SourceLocation> at;
+        bool operator==(const OptionSources&) const { return true; }
+    } optionSources;
     std::map<std::string, std::string> structure; // per-instance structure overrides: tag -> address
     // Per-instance naming: manifest name token -> name (the names of every node
     // the token makes). One node's own name is a display-name override (`overrides`).

@@ -60,29 +60,31 @@ void resolveList(const std::vector<templates::Parameter>& params, const model::T
     for (const templates::Parameter& p : params) {
         Value v = p.value;
         if (auto it = instance.options.find(p.name); it != instance.options.end()) {
+            const auto source = instance.optionSources.at.find(p.name);
+            const SourceLocation where = source != instance.optionSources.at.end() ? source->second : SourceLocation{};
             Value given = it->second;
             if (const auto* index = std::get_if<long long>(&given); index && p.isEnum()) // enum by index
                 for (const auto& [i, label] : p.enumLabels)
                     if (i == *index) given = label;
             if (const auto* d = std::get_if<double>(&given); d && !std::isfinite(*d)) {
                 // Readers refuse nan and inf at their line; this catches an edit or an API caller.
-                diagnostics.push_back(makeError({}, "instance '" + instance.name + "': option '" + p.name + "' = " +
+                diagnostics.push_back(makeError(where, "instance '" + instance.name + "': option '" + p.name + "' = " +
                                                         formatValue(given) + " is not a finite number; using the default"));
             } else if (auto c = coerce(given, p.value)) {
                 Value clamped = *c;
                 clampToRange(p, clamped);
                 if (clamped != *c)
-                    diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + p.name + "' = " +
+                    diagnostics.push_back(makeWarning(where, "instance '" + instance.name + "': option '" + p.name + "' = " +
                                                               formatValue(*c) + " is out of range, using " + formatValue(clamped)));
                 v = clamped;
                 if (p.isEnum() && std::none_of(p.enumLabels.begin(), p.enumLabels.end(),
                                                [&](auto& e) { return e.second == formatValue(v); })) {
-                    diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + p.name + "' = '" +
+                    diagnostics.push_back(makeWarning(where, "instance '" + instance.name + "': option '" + p.name + "' = '" +
                                                               formatValue(v) + "' is not one of its labels, using the default"));
                     v = p.value;
                 }
             } else {
-                diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + p.name + "' expects " +
+                diagnostics.push_back(makeWarning(where, "instance '" + instance.name + "': option '" + p.name + "' expects " +
                                                           typeName(typeOf(p.value)) + ", got '" + formatValue(it->second) +
                                                           "'; using the default"));
             }

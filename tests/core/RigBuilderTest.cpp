@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace rs;
 using model::RigNodeKind;
 
@@ -123,6 +125,7 @@ public:
         ctx.createNode(RigNodeKind::Controller, "ctrls.0", "c_same", model::kNoNode, Mat4(1.0));
     }
 };
+
 } // namespace
 
 TEST(RigBuilder, ReportsANameClash)
@@ -233,4 +236,33 @@ TEST(RigBuilder, ARepeatedBranchNameIsOneErrorAboutTheInstanceAndEachBranchIsBui
     EXPECT_EQ(errors.front().subject, Subject::ofInstance(4));
     EXPECT_TRUE(rig.findPath("arm.L::ctrls.0"));
     EXPECT_TRUE(rig.findPath("arm.R::ctrls.0"));
+}
+
+// A value the template does not take, read from a guide file, is named at
+// its file:line in the build's messages (the build goes on with the default).
+TEST(RigBuilder, ABadOptionValueIsReportedAtItsLineInTheGuideFile)
+{
+    const std::string text = test::readText(test::samplePath("biped"));
+    std::string bad = text;
+    const std::string good = "fk_space: chest";
+    const std::size_t at = bad.find(good);
+    ASSERT_NE(at, std::string::npos);
+    bad.replace(at, good.size(), "fk_space: chets");
+    const int line = 1 + int(std::count(bad.begin(), bad.begin() + std::ptrdiff_t(at), '\n'));
+    auto guide = io::readGuideText(bad, "biped-typo.yml");
+    ASSERT_TRUE(guide) << formatAll(guide.diagnostics());
+    const model::Rig rig = rigging::buildRig(*guide, test::builtinTemplates());
+    bool named = false;
+    for (const Diagnostic& d : rig.diagnostics)
+        if (d.message.find("'chets' is not one of its labels") != std::string::npos) {
+            EXPECT_EQ(d.where.file, "biped-typo.yml");
+            EXPECT_EQ(d.where.line, line);
+            named = true;
+        }
+    EXPECT_TRUE(named) << formatAll(rig.diagnostics);
+    // An edit of the option leaves the file's line behind.
+    model::GuideDocument edited = *guide;
+    model::TemplateInstance& arm = *edited.instance(edited.instanceNamed("arm")->id);
+    EXPECT_EQ(arm.optionSources.at.count("fk_space"), 1u);
+    EXPECT_EQ(arm, guide->instances()[std::size_t(*guide->indexOf(arm.id))]) << "where an option was read is not part of equality";
 }
