@@ -5,6 +5,7 @@
 #include "IncrementalCheck.h"
 #include "core/TestSupport.h"
 #include "eval/Channels.h"
+#include "io/GuideFile.h"
 #include "rigging/RigBuilder.h"
 
 #include <gtest/gtest.h>
@@ -170,8 +171,20 @@ TEST(CoreTemplates, FlipOrientMakesTheSameValuesMoveBothSidesAsMirrorImages)
     }
 }
 
-TEST(CoreTemplates, BadAddNodesAreRefusedNamingTheOption)
+TEST(CoreTemplates, BadAddNodesAreRefusedWhereTheyAreWritten)
 {
+    // In a guide file: at the option's line.
+    const std::string guide = "rigsmith_guide: 3\nname: g\ninstances:\n  - id: 1\n    template: core.bones\n    name: tail\n"
+                              "    options:\n      do_pose: on\n      add_nodes: \"[inf, 2nd, inf]\"\n    joints:\n"
+                              "      - {id: 1, t: [0, 0, 0]}\n      - {id: 2, parent: 1, t: [0, 1, 0]}\n";
+    auto read = io::readGuideText(guide, "bad.yml");
+    ASSERT_FALSE(read.ok());
+    const std::string all = formatAll(read.diagnostics());
+    EXPECT_NE(all.find("bad.yml:9:18: error: option add_nodes '2nd' is no node name"), std::string::npos) << all;
+    EXPECT_NE(all.find("bad.yml:9:18: error: option add_nodes names 'inf' twice"), std::string::npos) << all;
+    EXPECT_EQ(io::readGuideText(std::string(guide).replace(guide.find("2nd, inf"), 8, "c, dyn"), "good.yml").ok(), true);
+
+    // Set another way (an edit, the API): the build refuses it, naming the option.
     for (const std::string bad : {"[1st]", "[inf, inf]", "[root]", "[c, dyn, c]", "[in-f]", "{a: 1}"}) {
         const auto doc = chain("core.bones", {{"add_nodes", Value(bad)}});
         const model::Rig rig = rigging::buildRig(doc, test::builtinTemplates());

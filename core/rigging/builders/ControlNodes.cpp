@@ -1,6 +1,7 @@
 #include "rigging/builders/ControlNodes.h"
 
 #include "templates/Manifest.h"
+#include "templates/NodeNames.h"
 
 #include <algorithm>
 
@@ -10,47 +11,23 @@ namespace {
 
 bool declares(const BuildContext& ctx, const char* name) { return ctx.manifest().findOpt(name) != nullptr; }
 
-bool isIdentifier(const std::string& name)
-{
-    auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
-    if (name.empty() || !letter(name.front()))
-        return false;
-    return std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9'); });
-}
-
-// Names the stack gives its own nodes (and Mikan's marks for them): a group
-// named so would be mistaken for one of them.
-constexpr const char* kReserved[] = {"root", "roots", "ctrl", "ctrls", "skin", "sk", "hooks", "cns"};
-
 // The add_nodes list split at `c`; false (reported) when a name is bad.
 bool readAddNodes(const BuildContext& ctx, ControlNodeOptions& o)
 {
     const auto names = ctx.optionList("add_nodes");
     if (!names)
         return false;
-    bool ok = true, pastController = false;
-    std::vector<std::string> seen;
+    bool ok = true;
+    for (const std::string& problem : templates::addNodesProblems(*names)) {
+        ctx.error("add_nodes " + problem, "add_nodes");
+        ok = false;
+    }
+    bool pastController = false;
     for (const std::string& name : *names) {
-        if (name == "c") {
-            if (pastController) {
-                ctx.error("add_nodes names the controller 'c' twice", "add_nodes");
-                ok = false;
-            }
+        if (name == "c")
             pastController = true;
-            continue;
-        }
-        if (!isIdentifier(name)) {
-            ctx.error("add_nodes: '" + name + "' is no node name (letters, digits and '_', not starting with a digit)", "add_nodes");
-            ok = false;
-        } else if (std::find(std::begin(kReserved), std::end(kReserved), name) != std::end(kReserved)) {
-            ctx.error("add_nodes: '" + name + "' is a name the control already uses; pick another", "add_nodes");
-            ok = false;
-        } else if (std::find(seen.begin(), seen.end(), name) != seen.end()) {
-            ctx.error("add_nodes names '" + name + "' twice", "add_nodes");
-            ok = false;
-        }
-        seen.push_back(name);
-        (pastController ? o.below : o.above).push_back(name);
+        else
+            (pastController ? o.below : o.above).push_back(name);
     }
     return ok;
 }
