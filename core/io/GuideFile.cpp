@@ -1,5 +1,6 @@
 #include "io/GuideFile.h"
 
+#include "base/TextScalars.h"
 #include "io/AtomicFile.h"
 #include "io/GuidePose.h"
 #include "io/ModFile.h"
@@ -7,6 +8,7 @@
 #include "io/OverrideFile.h"
 #include "io/YamlSupport.h"
 #include "templates/Manifest.h"
+#include "templates/NodeNames.h"
 
 #include <algorithm>
 #include <cmath>
@@ -80,6 +82,17 @@ bool checkAxisPair(YamlReader& r, const YAML::Node& options)
     return false;
 }
 
+// add_nodes (builders/ControlNodes.h): a bad group name is refused where it is written.
+bool checkAddNodes(YamlReader& r, const YAML::Node& options)
+{
+    const YAML::Node v = options["add_nodes"];
+    auto items = v && v.IsScalar() ? parseFlowList(v.Scalar()) : Result<std::vector<std::string>>(std::vector<std::string>{});
+    const auto problems = items.ok() ? templates::addNodesProblems(*items) : std::vector<std::string>{"is no list"};
+    for (const std::string& problem : problems)
+        r.error(v, "option add_nodes " + problem);
+    return problems.empty();
+}
+
 bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std::map<model::InstanceId, YAML::Node>& nodes,
                   LegacyRecords& legacy)
 {
@@ -107,6 +120,7 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
                     ok = false;
                 }
             ok = checkAxisPair(r, v) && ok;
+            ok = checkAddNodes(r, v) && ok;
         } else if (key == "structure" || key == "names") {
             if (!r.expectMap(v, key)) { ok = false; continue; }
             auto& target = key == "structure" ? instance.structure : instance.names;

@@ -110,6 +110,14 @@ std::vector<model::JointId> BuildContext::taggedJoints(const std::string& tag) c
 
 bool BuildContext::mirrored() const { return m_assembly.copyOf(m_instance.id).mirror != Mat4(1.0); }
 
+const Mat4& BuildContext::mirrorMatrix() const { return m_assembly.copyOf(m_instance.id).mirror; }
+
+void BuildContext::setScaleCompensate(model::RigNodeIndex index, bool on)
+{
+    touch(index);
+    m_assembly.rig.nodes.at(index).scaleCompensate = on;
+}
+
 const model::RigNode& BuildContext::node(model::RigNodeIndex index) const
 {
     const model::RigNode& node = m_assembly.rig.nodes.at(index);
@@ -208,6 +216,16 @@ std::string BuildContext::nodeName(model::NameRole role, const std::string& toke
     std::string core = name(token, index);
     core.resize(core.size() - suffix.size());
     return m_assembly.guide.naming.make(role, core, suffix.empty() ? suffix : suffix.substr(1));
+}
+
+std::string BuildContext::markedName(const std::string& mark, const std::string& token, std::optional<int> index) const
+{
+    model::NamingRules rules = m_assembly.guide.naming;
+    rules.group = rules.suffixes ? "_" + mark : mark + "_";
+    const std::string suffix = m_assembly.copyOf(m_instance.id).suffix;
+    std::string core = name(token, index);
+    core.resize(core.size() - suffix.size());
+    return rules.make(model::NameRole::Group, core, suffix.empty() ? suffix : suffix.substr(1));
 }
 
 std::string BuildContext::name(const std::string& token, std::optional<int> index) const

@@ -54,6 +54,9 @@ public:
     std::string name(const std::string& token = {}, std::optional<int> index = std::nullopt) const;
     // The full node name by the document's naming rules: role mark, core name, branch.
     std::string nodeName(model::NameRole role, const std::string& token = {}, std::optional<int> index = std::nullopt) const;
+    // The same with a mark of the builder's in place of the role's ("pose":
+    // pose_finger_1_L, or finger_1_L_pose with the suffix preset).
+    std::string markedName(const std::string& mark, const std::string& token = {}, std::optional<int> index = std::nullopt) const;
 
     // Creates a node "<instance>::<tag>" at a rest world matrix (authored space)
     // under `parent` (kNoNode: the hook node); `source` is the guide joint it derives from.
@@ -84,6 +87,10 @@ public:
     void defineSpace(const std::string& name, model::RigNodeIndex index);
     model::RigNodeIndex space(const std::string& name) const;
     bool mirrored() const;
+    // The branch mirror M of this copy (W' = M W M): identity unless mirrored.
+    const Mat4& mirrorMatrix() const;
+    // Segment scale compensation on one of this instance's nodes (RigNode::scaleCompensate).
+    void setScaleCompensate(model::RigNodeIndex index, bool on);
     // Children templates hanging under `joint` attach to `node`.
     void setHook(model::JointId joint, model::RigNodeIndex node);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 namespace rs::rigging {
@@ -199,8 +200,13 @@ private:
 
 void compensateSegmentScale(RigAssembly& a)
 {
+    // Templates with a parent_scale option (builders/ControlNodes.h) set it themselves.
+    std::set<model::InstanceId> deciding;
+    for (const InstanceRecord& r : a.records)
+        if (r.manifest && r.manifest->findOpt("parent_scale"))
+            deciding.insert(a.copyOf(r.instance->id).original);
     for (auto& node : a.rig.nodes) {
-        if (node.parent == model::kNoNode || node.key.tag.rfind("roots.fk.", 0) != 0)
+        if (node.parent == model::kNoNode || node.key.tag.rfind("roots.fk.", 0) != 0 || deciding.count(node.owner))
             continue;
         const auto& parent = a.rig.nodes[node.parent];
         node.scaleCompensate = parent.kind == model::RigNodeKind::Controller && parent.key.tag.rfind("ctrls.fk.", 0) == 0;

@@ -286,7 +286,7 @@ void cloneCurves(RigAssembly& a, const PendingClone& c)
 
 // Pairs every node of a mirrored branch copy with its twin, and a mirrored
 // branch copy shows its twin's curves reflected (negative scale in the
-// controller's space, which is M * p for W' = M W M) and, on a flipped branch,
+// controller's space, which is M * p for W' = M W M; none for W' = M W) and, on a flipped branch,
 // with the hue turned 120 degrees, as Mikan does.
 void mirrorBranchShapes(RigAssembly& a)
 {
@@ -320,8 +320,12 @@ void mirrorBranchShapes(RigAssembly& a)
             node.shape = from.shape;
             node.curves = from.curves;
             node.shapeFromTwin = true;
+            // A flip_orient control (builders/ControlNodes.h) is itself the
+            // reflection M W of its twin: its curves need no reflecting.
+            const bool reflect = (glm::determinant(Mat3(node.worldMatrix)) < 0.0) == (glm::determinant(Mat3(from.worldMatrix)) < 0.0);
             for (auto& curve : node.curves) {
-                curve.transform(Mat4(m));
+                if (reflect)
+                    curve.transform(Mat4(m));
                 if (copy.flip) {
                     const auto c = templates::shiftHue({curve.color.x, curve.color.y, curve.color.z}, 120.0);
                     curve.color = Vec3(c.r, c.g, c.b);

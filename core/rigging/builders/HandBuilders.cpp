@@ -4,6 +4,8 @@
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
+#include "rigging/builders/ChainOrient.h"
+#include "rigging/builders/ControlNodes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +30,42 @@ constexpr HandAttribute kHandAttributes[] = {{"fist", 0.0, 1.0}, {"curl", -30.0,
 
 // The Z axis of a chain's root guide: the bend axis used where the chain is straight.
 Vec3 rootNormal(const BuildContext& ctx, JointId root) { return kit::guideAxis(ctx, root, 2, Vec3(0.0, 0.0, 1.0)); }
+
+// The default `orient`: each phalanx aims X at the next guide joint with Z on
+// the finger's bend normal (the root guide's Z where it is straight).
+bool chainOrient(const BuildContext& ctx)
+{
+    return !ctx.manifest().findOpt("orient") || ctx.optionString("orient") == "chain";
+}
+
+// A rotation about a signed unit local axis as a drive output and the sign of its factor.
+std::pair<DriveOutput, double> rotationAbout(const Vec3& axis)
+{
+    const int i = std::abs(axis.x) > 0.5 ? 0 : std::abs(axis.y) > 0.5 ? 1 : 2;
+    return {static_cast<DriveOutput>(i), axis[i] > 0.0 ? 1.0 : -1.0};
+}
+
+// How a digit's links are turned and posed: the frames, the axis a curl turns
+// about (up_axis: the bend normal) and the one a spread turns about.
+struct DigitFrames {
+    std::vector<Mat4> frames;
+    Vec3 curlAxis{0.0, 0.0, 1.0};
+    Vec3 spreadAxis{0.0, 1.0, 0.0};
+};
+
+DigitFrames digitFrames(const BuildContext& ctx, const std::vector<JointId>& chain, const std::vector<Vec3>& points)
+{
+    DigitFrames d;
+    if (chainOrient(ctx)) {
+        d.frames = kit::chainFrames(points, rootNormal(ctx, chain.front()));
+        return d;
+    }
+    const ChainOrient orient = readChainOrient(ctx, false).value_or(ChainOrient{}); // gather reported its problems
+    d.frames = orientFrames(ctx, chain);
+    d.curlAxis = orient.upAxis;
+    d.spreadAxis = glm::cross(orient.upAxis, orient.aimAxis); // turning about it moves the aim towards -up
+    return d;
+}
 
 class DigitBuilder final : public TemplateBuilder {
 public:
@@ -56,55 +94,65 @@ public:
         return specs;
     }
 
-    bool gather(const BuildContext& ctx) const override { return kit::chainOfAtLeast(ctx, 2, "a digit").has_value(); }
+    bool gather(const BuildContext& ctx) const override
+    {
+        const bool chain = kit::chainOfAtLeast(ctx, 2, "a digit").has_value();
+        const bool orient = readChainOrient(ctx, !chainOrient(ctx)).has_value();
+        return chain && orient && readControlNodes(ctx).has_value();
+    }
 
     void generate(BuildContext& ctx) const override
     {
         const auto chain = *ctx.structure("chain");
         const auto points = *kit::positions(ctx, chain);
-        const auto frames = kit::chainFrames(points, rootNormal(ctx, chain.front()));
+        const DigitFrames d = digitFrames(ctx, chain, points);
+        const auto& frames = d.frames;
+        const ControlNodeOptions nodes = readControlNodes(ctx).value_or(ControlNodeOptions{});
         const bool base = ctx.optionBool("base") && chain.size() > 2;
         RigNodeIndex parent = ctx.hookNode();
-        std::vector<kit::Control> controls;
+        std::vector<ControlStack> controls;
         for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
             const bool isBase = base && i == 0;
             const std::string token = isBase ? "base" : "";
             const std::optional<int> number = isBase ? std::nullopt : std::optional<int>(int(i) + (base ? 0 : 1));
-            const auto control = kit::addControl(ctx, "fk." + std::to_string(i), token, number, parent, frames[i], chain[i]);
-            kit::animate(ctx, control, kit::kRotate); // knuckles turn
-            kit::addSkin(ctx, std::to_string(i), token, number, control.ctrl, frames[i], chain[i]);
+            const ControlStack control = addControlStack(ctx, nodes, "fk." + std::to_string(i), token, number, parent, frames[i], chain[i], i > 0);
+            kit::animate(ctx, control.control(), kit::kRotate); // knuckles turn
+            kit::addSkin(ctx, std::to_string(i), token, number, control.skinParent, frames[i], chain[i]);
             ctx.setHook(chain[i], control.ctrl);
             controls.push_back(control);
             parent = control.ctrl;
         }
         ctx.setHook(chain.back(), parent);
         const std::size_t first = base ? 1 : 0; // the first phalanx: the knuckle, where a finger spreads
-        // Curl bends every phalanx about its bend axis (Z) from one attribute.
+        // Curl bends every phalanx about its bend axis (up_axis) from one attribute.
+        const auto [curlOutput, curlSign] = rotationAbout(d.curlAxis);
         const model::AttributeRef curl = ctx.addAttribute(controls.front().ctrl, "curl", 0.0, -30.0, 120.0);
         for (std::size_t i = first; i < controls.size(); ++i)
-            ctx.addConstraint("cns.curl." + std::to_string(i), {controls[i].offset}, {},
-                              DriveConstraint{.value = curl, .output = DriveOutput::RotateZ, .factor = 1.0,
+            ctx.addConstraint("cns.curl." + std::to_string(i), {controls[i].driven()}, {},
+                              DriveConstraint{.value = curl, .output = curlOutput, .factor = driveFactor(ctx, controls[i], curlOutput, curlSign),
                                               .response = DriveClamped{.low = -30.0, .high = 120.0}});
 
         // Spread turns the finger at its knuckle about the palm's normal (the
-        // phalanx's Y); positive spreads it towards the hand's side axis (the
-        // thumb side: the hand guide's Z, else the finger's own Z).
+        // phalanx's Y by default); positive spreads it towards the hand's side
+        // axis (the thumb side: the hand guide's Z, else the finger's own up).
         const RigNodeIndex hook = ctx.hookNode();
-        const Vec3 side = hook != model::kNoNode ? glm::normalize(Vec3(ctx.nodeWorld(hook)[2])) : Vec3(frames.front()[2]);
-        const double towardSide = glm::dot(Vec3(frames[first][2]), side) > 0.0 ? -1.0 : 1.0; // Y turns move X towards -Z
+        const Vec3 side = hook != model::kNoNode ? glm::normalize(Vec3(ctx.nodeWorld(hook)[2])) : Mat3(frames.front()) * d.curlAxis;
+        const double towardSide = glm::dot(Mat3(frames[first]) * d.curlAxis, side) > 0.0 ? -1.0 : 1.0; // spread turns move the aim towards -up
+        const auto [spreadOutput, spreadSign] = rotationAbout(d.spreadAxis);
         const model::AttributeRef spread = ctx.addAttribute(controls.front().ctrl, "spread", 0.0, -30.0, 45.0);
-        ctx.addConstraint("cns.spread", {controls[first].offset}, {},
-                          DriveConstraint{.value = spread, .output = DriveOutput::RotateY, .factor = towardSide,
+        ctx.addConstraint("cns.spread", {controls[first].driven()}, {},
+                          DriveConstraint{.value = spread, .output = spreadOutput,
+                                          .factor = driveFactor(ctx, controls[first], spreadOutput, towardSide * spreadSign),
                                           .response = DriveClamped{.low = -30.0, .high = 45.0}});
         if (hook != model::kNoNode)
-            followHand(ctx, controls, first, points, side, towardSide);
+            followHand(ctx, controls, first, points, side, towardSide, d);
     }
 
 private:
     // A finger on a digit.hand's master: its fist, curl, spread and cup drive
     // this finger by shares from where the finger sits across the hand.
-    static void followHand(BuildContext& ctx, const std::vector<kit::Control>& controls, std::size_t first,
-                           const std::vector<Vec3>& points, const Vec3& side, double towardSide)
+    static void followHand(BuildContext& ctx, const std::vector<ControlStack>& controls, std::size_t first,
+                           const std::vector<Vec3>& points, const Vec3& side, double towardSide, const DigitFrames& d)
     {
         const RigNodeIndex hand = ctx.hookNode();
         const model::RigNode& node = ctx.node(hand);
@@ -120,23 +168,25 @@ private:
         const double across = thumb ? 1.0
                                     : std::clamp(2.0 * glm::dot(points[first] - kit::positionOf(ctx.nodeWorld(hand)), side) /
                                                      std::max(length, 1e-6), -1.0, 1.0);
-        auto drive = [&](const std::string& tag, RigNodeIndex driven, const HandAttribute& a, DriveOutput output, double factor) {
+        // Each drive lands on the control's pose group (do_pose) or its offset.
+        auto drive = [&](const std::string& tag, const ControlStack& driven, const HandAttribute& a, const Vec3& axis, double factor) {
+            const auto [output, sign] = rotationAbout(axis);
             if (factor != 0.0)
-                ctx.addConstraint(tag, {driven}, {},
-                                  DriveConstraint{.value = {hand, a.name}, .output = output, .factor = factor,
+                ctx.addConstraint(tag, {driven.driven()}, {},
+                                  DriveConstraint{.value = {hand, a.name}, .output = output, .factor = driveFactor(ctx, driven, output, sign * factor),
                                                   .response = DriveClamped{.low = a.low, .high = a.high}});
         };
         const double fist = ctx.optionFloat("fist") * (thumb ? 0.6 : 1.0);
         for (std::size_t i = first; i < controls.size(); ++i) {
             const std::string index = std::to_string(i);
-            drive("cns.hand_fist." + index, controls[i].offset, kHandAttributes[0], DriveOutput::RotateZ, fist);
-            drive("cns.hand_curl." + index, controls[i].offset, kHandAttributes[1], DriveOutput::RotateZ, 1.0);
+            drive("cns.hand_fist." + index, controls[i], kHandAttributes[0], d.curlAxis, fist);
+            drive("cns.hand_curl." + index, controls[i], kHandAttributes[1], d.curlAxis, 1.0);
         }
-        drive("cns.hand_spread", controls[first].offset, kHandAttributes[2], DriveOutput::RotateY, across * towardSide);
+        drive("cns.hand_spread", controls[first], kHandAttributes[2], d.spreadAxis, across * towardSide);
         // Cup folds the palm: the metacarpals bend towards it, the little
         // finger's side (and the thumb) the most.
         if (first > 0)
-            drive("cns.hand_cup", controls.front().offset, kHandAttributes[3], DriveOutput::RotateZ,
+            drive("cns.hand_cup", controls.front(), kHandAttributes[3], d.curlAxis,
                   thumb ? 1.0 : std::clamp((1.0 - across) / 2.0, 0.0, 1.0));
     }
 };

@@ -2,6 +2,7 @@
 
 #include "rigging/builders/BuilderKit.h"
 #include "rigging/builders/ChainOrient.h"
+#include "rigging/builders/ControlNodes.h"
 #include "templates/Structure.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -29,24 +30,22 @@ std::optional<std::vector<model::JointId>> chainOf(const BuildContext& ctx)
     return templates::StructureResolver(ctx.manifest(), ctx.instance()).chain();
 }
 
-// One link of a chain at `frame`: an offset group, a controller (or none)
-// whose `animatable` channels animators touch (kit::animate) and a skin joint
-// (or none), numbered from 1 in names; the guide joint hooks on the controller
-// (or the offset). Returns what the next link hangs under.
-model::RigNodeIndex addLink(BuildContext& ctx, std::size_t i, const Mat4& frame, model::RigNodeIndex parent,
-                            model::JointId guide, bool controllers, bool skin, std::uint16_t animatable)
+// One link of a chain at `frame`: an offset group, the groups and controller
+// of ControlNodes.h (or none) whose `animatable` channels animators touch
+// (kit::animate) and a skin joint (or none), numbered from 1 in names; the
+// guide joint hooks on the controller (or the innermost group). Returns what
+// the next link hangs under.
+model::RigNodeIndex addLink(BuildContext& ctx, const ControlNodeOptions& options, std::size_t i, const Mat4& frame,
+                            model::RigNodeIndex parent, model::JointId guide, bool skin, std::uint16_t animatable)
 {
     const std::string index = std::to_string(i);
     const int number = static_cast<int>(i) + 1;
-    const auto offset = ctx.createNode(model::RigNodeKind::Group, "roots." + index, ctx.nodeName(model::NameRole::Offset, "", number), parent, frame);
-    model::RigNodeIndex driver = offset;
-    if (controllers)
-        driver = ctx.createNode(model::RigNodeKind::Controller, "ctrls." + index, ctx.nodeName(model::NameRole::Controller, "", number), offset, frame);
-    kit::animate(ctx, driver, animatable);
+    const ControlStack stack = addControlStack(ctx, options, index, "", number, parent, frame, model::kNoId, i > 0);
+    kit::animate(ctx, stack.ctrl, animatable);
     if (skin)
-        ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), driver, frame);
-    ctx.setHook(guide, driver);
-    return driver;
+        ctx.createNode(model::RigNodeKind::Joint, "skin." + index, ctx.nodeName(model::NameRole::Skin, "", number), stack.skinParent, frame);
+    ctx.setHook(guide, stack.ctrl);
+    return stack.ctrl;
 }
 
 class JointChainBuilder final : public TemplateBuilder {
@@ -73,7 +72,7 @@ public:
     bool gather(const BuildContext& ctx) const override
     {
         auto chain = chainOf(ctx);
-        if (!chain || !readChainOrient(ctx))
+        if (!chain || !readChainOrient(ctx) || !readControlNodes(ctx))
             return false;
         for (std::size_t i = 1; i < chain->size(); ++i) {
             const double length = glm::length(translationOf(ctx.guideWorldMatrix((*chain)[i])) -
@@ -88,14 +87,14 @@ public:
     void generate(BuildContext& ctx) const override
     {
         const auto chain = *chainOf(ctx);
-        const bool controllers = ctx.optionBool("do_ctrl");
         const bool skin = ctx.optionBool("do_skin");
         const auto frames = orientFrames(ctx, chain);
+        const ControlNodeOptions nodes = readControlNodes(ctx).value_or(ControlNodeOptions{}); // gather checked them
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i < chain.size(); ++i) {
             // A generic chain (props, modules without a builder of their own):
             // each control slides, turns and scales its part.
-            parent = addLink(ctx, i, frames[i], parent, chain[i], controllers, skin, kit::kTranslate | kit::kRotate | kit::kScale);
+            parent = addLink(ctx, nodes, i, frames[i], parent, chain[i], skin, kit::kTranslate | kit::kRotate | kit::kScale);
         }
     }
 };
@@ -129,12 +128,12 @@ public:
     void generate(BuildContext& ctx) const override
     {
         const auto chain = *chainOf(ctx);
-        const bool controllers = ctx.optionBool("do_ctrl");
         const bool skin = ctx.optionBool("do_skin");
         const auto frames = orientFrames(ctx, chain, true);
+        const ControlNodeOptions nodes = readControlNodes(ctx).value_or(ControlNodeOptions{}); // gather checked them
         model::RigNodeIndex parent = ctx.hookNode();
         for (std::size_t i = 0; i + 1 < chain.size(); ++i)
-            parent = addLink(ctx, i, frames[i], parent, chain[i], controllers, skin, kit::kRotate); // a bone turns about its head
+            parent = addLink(ctx, nodes, i, frames[i], parent, chain[i], skin, kit::kRotate); // a bone turns about its head
         // The tip keeps the last bone's orientation.
         const auto tip = ctx.createNode(model::RigNodeKind::Group, "hooks.tip", ctx.nodeName(model::NameRole::Offset, "tip"), parent,
                                         frames.back());
