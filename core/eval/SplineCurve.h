@@ -14,4 +14,12 @@ namespace rs::eval {
 std::string prepareSpline(CompiledConstraint& c, const std::vector<Affine>& rest);
 void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state);
 
+// Points on the curve a spline constraint draws through `targets` (their
+// world transforms at rest, in order, 2 to 16, no two at one place), for a
+// builder placing joints on it (rig.spline's bones): `count` (at least 2) from
+// the first target to the last, evenly by the curve's parameter or, with
+// `byLength`, at equal arc lengths (to about 1e-7 of the curve's length).
+// Empty when the targets do not make a curve.
+std::vector<Vec3> restCurvePoints(const std::vector<Affine>& targets, int count, bool byLength);
+
 } // namespace rs::eval
