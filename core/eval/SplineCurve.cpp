@@ -183,7 +183,7 @@ std::vector<Vec3> restCurvePoints(const std::vector<Affine>& targets, int count,
         k.rotation[i] = rotationOf(targets[i]);
         k.tangent[i] = glm::normalize(along);
     }
-    constexpr int kPerSegment = 2048;
+    constexpr int kPerSegment = 256;
     const int samples = kPerSegment * (k.count - 1) + 1;
     std::vector<double> arc(byLength ? samples : 0);
     if (byLength)

@@ -18,7 +18,7 @@ void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state
 // world transforms at rest, in order, 2 to 16, no two at one place), for a
 // builder placing joints on it (rig.spline's bones): `count` (at least 2) from
 // the first target to the last, evenly by the curve's parameter or, with
-// `byLength`, at equal arc lengths (to about 1e-7 of the curve's length).
+// `byLength`, at equal arc lengths (to about 1e-6 of the curve's length).
 // Empty when the targets do not make a curve.
 std::vector<Vec3> restCurvePoints(const std::vector<Affine>& targets, int count, bool byLength);
 
