@@ -7,6 +7,7 @@
 // the curve frame; without stretch it keeps its rest arc length instead (the
 // chain slides along the curve), and the stretch channel blends the two. The
 // slide channel moves every joint along the curve by metres of arc (rig.slide).
+// restCurvePoints is the one piece builders use: where that curve runs at rest.
 #include "eval/Solvers.h"
 
 namespace rs::eval {
