@@ -3,6 +3,7 @@
 #include "eval/DrivenKeys.h"
 #include "eval/Solvers.h"
 
+#include <algorithm>
 #include <deque>
 
 namespace rs::eval {
@@ -197,10 +198,20 @@ Result<RigProgram> RigProgram::compile(const model::Rig& rig)
     for (model::RigNodeIndex i = 0; i < n; ++i) expected += placed[i] ? 1 : 0;
     for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k) expected += isStep(k) ? 1 : 0;
     if (p.m_steps.size() != expected) {
+        // Peel off what merely waits on the cycle (nothing stuck depends on
+        // it), so the message names the constraints that form it.
+        std::vector<bool> stuck(ops);
+        for (std::uint32_t op = 0; op < ops; ++op) stuck[op] = pending[op] > 0;
+        for (bool peeled = true; peeled;) {
+            peeled = false;
+            for (std::uint32_t op = 0; op < ops; ++op)
+                if (stuck[op] && std::none_of(dependents[op].begin(), dependents[op].end(), [&](std::uint32_t d) { return bool(stuck[d]); }))
+                    stuck[op] = false, peeled = true;
+        }
         std::string list;
         int shown = 0;
         for (std::uint32_t k = 0; k < p.m_constraints.size(); ++k)
-            if (pending[n + k] > 0 && shown++ < 6)
+            if (stuck[n + k] && shown++ < 6)
                 list += (list.empty() ? "" : ", ") + rig.constraints[k].path;
         diagnostics.push_back(makeError({}, "the rig's constraints form a cycle (a node depends on itself through " + list +
                                                 "); the rig cannot be evaluated"));

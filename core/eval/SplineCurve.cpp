@@ -168,6 +168,38 @@ std::string prepareSpline(CompiledConstraint& c, const std::vector<Affine>& rest
     return {};
 }
 
+std::vector<Vec3> restCurvePoints(const std::vector<Affine>& targets, int count, bool byLength)
+{
+    const std::size_t n = targets.size();
+    if (n < 2 || n > kMaxControls || count < 2)
+        return {};
+    Controls k;
+    k.count = int(n);
+    for (std::size_t i = 0; i < n; ++i) { // at rest each tangent runs from the target before to the one after
+        const Vec3 along = targets[i + 1 < n ? i + 1 : i].translation - targets[i > 0 ? i - 1 : i].translation;
+        if (glm::length(along) < 1e-9)
+            return {};
+        k.position[i] = targets[i].translation;
+        k.rotation[i] = rotationOf(targets[i]);
+        k.tangent[i] = glm::normalize(along);
+    }
+    constexpr int kPerSegment = 256;
+    const int samples = kPerSegment * (k.count - 1) + 1;
+    std::vector<double> arc(byLength ? samples : 0);
+    if (byLength)
+        arcTable(k, kPerSegment, arc);
+    std::vector<Vec3> points;
+    for (int j = 0; j < count; ++j) {
+        double u = double(k.count - 1) * j / (count - 1), beyond = 0.0;
+        if (byLength)
+            u = parameterAt(arc, kPerSegment, samples, arc.back() * j / (count - 1), beyond);
+        Vec3 position, derivative;
+        curveAt(k, u, position, derivative);
+        points.push_back(position);
+    }
+    return points;
+}
+
 void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state)
 {
     std::vector<Affine>& world = state.world;

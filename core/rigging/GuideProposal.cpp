@@ -38,7 +38,7 @@ Result<model::TemplateInstance> makeInstance(const model::GuideDocument& guide, 
     Diagnostics diagnostics;
     const auto values = resolveOptions(*manifest, instance, diagnostics);
     for (const auto& [name, value] : options)
-        if (!values.count(name))
+        if (!values.count(name) && !manifest->findByOtherName(name))
             return Result<model::TemplateInstance>::failure(makeError({}, templateId + " has no option '" + name + "'"));
     std::map<std::string, Value> guideValues;
     for (const auto& p : manifest->guides)

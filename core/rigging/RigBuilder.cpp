@@ -54,18 +54,51 @@ void clampToRange(const templates::Parameter& p, Value& v)
     }
 }
 
+// on/off given for an enum with an `off` label (an on/off option that grew
+// choices, rig.spline's tweakers): off, or the first label after it, which the
+// manifest lists as what `on` used to build. Other enums keep the text.
+Value offOrFirstChoice(const templates::Parameter& p, bool on)
+{
+    const auto off = std::find_if(p.enumLabels.begin(), p.enumLabels.end(), [](auto& e) { return e.second == "off"; });
+    if (off == p.enumLabels.end())
+        return Value(on);
+    if (!on)
+        return Value(off->second);
+    const auto first = std::find_if(p.enumLabels.begin(), p.enumLabels.end(), [](auto& e) { return e.second != "off"; });
+    return first != p.enumLabels.end() ? Value(first->second) : Value(on);
+}
+
+// Where the guide file set an option (nothing when it was not read from a file).
+SourceLocation optionLocation(const model::TemplateInstance& instance, const std::string& option)
+{
+    const auto at = instance.optionSources.at.find(option);
+    return at != instance.optionSources.at.end() ? at->second : SourceLocation{};
+}
+
 void resolveList(const std::vector<templates::Parameter>& params, const model::TemplateInstance& instance,
                  std::map<std::string, Value>& out, Diagnostics& diagnostics)
 {
     for (const templates::Parameter& p : params) {
         Value v = p.value;
-        if (auto it = instance.options.find(p.name); it != instance.options.end()) {
-            const auto source = instance.optionSources.at.find(p.name);
-            const SourceLocation where = source != instance.optionSources.at.end() ? source->second : SourceLocation{};
+        auto it = instance.options.find(p.name);
+        // An option's other name (`legacy:` in its manifest: an older name, or
+        // Mikan's where ours differs) loads as the option; the option's own name wins.
+        if (auto other = p.legacy.empty() ? instance.options.end() : instance.options.find(p.legacy);
+            other != instance.options.end()) {
+            if (it == instance.options.end())
+                it = other;
+            else
+                diagnostics.push_back(makeWarning(optionLocation(instance, p.legacy), "instance '" + instance.name + "': options '" + p.name + "' and '" +
+                                                          p.legacy + "' are the same option; using '" + p.name + "'"));
+        }
+        if (it != instance.options.end()) {
+            const SourceLocation where = optionLocation(instance, it->first);
             Value given = it->second;
             if (const auto* index = std::get_if<long long>(&given); index && p.isEnum()) // enum by index
                 for (const auto& [i, label] : p.enumLabels)
                     if (i == *index) given = label;
+            if (const auto* on = std::get_if<bool>(&given); on && p.isEnum()) // an on/off option that grew choices
+                given = offOrFirstChoice(p, *on);
             if (const auto* d = std::get_if<double>(&given); d && !std::isfinite(*d)) {
                 // Readers refuse nan and inf at their line; this catches an edit or an API caller.
                 diagnostics.push_back(makeError(where, "instance '" + instance.name + "': option '" + p.name + "' = " +
@@ -133,8 +166,8 @@ std::map<std::string, Value> resolveOptions(const templates::TemplateManifest& m
     resolveList(manifest.guides, instance, out, diagnostics);
     resolveList(manifest.opts, instance, out, diagnostics);
     for (const auto& [name, value] : instance.options)
-        if (!out.count(name))
-            diagnostics.push_back(makeWarning({}, "instance '" + instance.name + "': option '" + name +
+        if (!out.count(name) && !manifest.findByOtherName(name))
+            diagnostics.push_back(makeWarning(optionLocation(instance, name), "instance '" + instance.name + "': option '" + name +
                                                       "' is not declared by " + manifest.id + " (ignored)"));
     return out;
 }

@@ -16,6 +16,15 @@ auto findByName(const List& list, const std::string& name) -> decltype(&list.fro
 const Parameter* TemplateManifest::findOpt(const std::string& n) const { return findByName(opts, n); }
 const Parameter* TemplateManifest::findGuide(const std::string& n) const { return findByName(guides, n); }
 
+const Parameter* TemplateManifest::findByOtherName(const std::string& n) const
+{
+    for (const auto* list : {&guides, &opts})
+        for (const Parameter& p : *list)
+            if (!p.legacy.empty() && p.legacy == n)
+                return &p;
+    return nullptr;
+}
+
 const ShapeSpec* TemplateManifest::findShape(const std::string& key) const
 {
     auto it = std::find_if(shapes.begin(), shapes.end(), [&](const ShapeSpec& s) { return s.key == key; });

@@ -21,7 +21,7 @@ struct Parameter {
     bool yaml = false;                    // value is flow-YAML text parsed on read
     std::string help;
     std::vector<std::string> presets;
-    std::string legacy;                   // old attribute name
+    std::string legacy;                   // another name it loads under (an old one, or Mikan's where ours differs)
     SourceLocation where;
 
     bool isEnum() const { return !enumLabels.empty(); }
@@ -94,6 +94,8 @@ struct TemplateManifest {
 
     const Parameter* findOpt(const std::string& name) const;
     const Parameter* findGuide(const std::string& name) const;
+    // The option or guide parameter whose other name (`legacy`) this is: iks for rig.spline's controls.
+    const Parameter* findByOtherName(const std::string& name) const;
     const ShapeSpec* findShape(const std::string& key) const;
     std::string defaultName(const std::string& token) const;
     std::optional<std::string> structureAddress(const std::string& tag) const;

@@ -58,7 +58,12 @@ std::uint16_t expectedAnimatable(const model::GuideDocument& guide, const model:
                             S = ChannelSettings::kScaleChannels;
     const std::string templateId = guide.instance(node.key.instance)->templateId;
     const std::string& tag = node.key.tag;
-    if (templateId == "core.joints" || templateId == "core.xform" || tag == "ctrls.scale")
+    if (templateId == "core.xform") { // a prop's part: what its do_* options leave on (all by default)
+        const auto& options = guide.instance(node.key.instance)->options;
+        auto off = [&](const char* option) { auto it = options.find(option); return it != options.end() && it->second == Value(false); };
+        return std::uint16_t((off("do_translate") ? 0 : T) | (off("do_rotate") ? 0 : R) | (off("do_scale") ? 0 : S));
+    }
+    if (templateId == "core.joints" || tag == "ctrls.scale")
         return T | R | S; // props' parts and the one global scale control
     if (tag == "ctrls.switch" || tag == "ctrls.hand")
         return 0; // attribute holders

@@ -157,6 +157,11 @@ std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model:
     std::vector<Mat4> guideWorld;
     for (model::JointId joint : chain)
         guideWorld.push_back(ctx.guideWorldMatrix(joint));
+    return orientFrames(ctx, guideWorld, aimAlways, rootGuideUp);
+}
+
+std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<Mat4>& guideWorld, bool aimAlways, bool rootGuideUp)
+{
     ChainOrient orient = readChainOrient(ctx, false).value_or(ChainOrient{}); // gather reported its problems
     orient.upDirFromRootGuide = rootGuideUp && !ctx.instance().options.count("up_dir");
     return orientChain(orient, guideWorld, aimAlways);

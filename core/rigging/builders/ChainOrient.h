@@ -63,6 +63,10 @@ std::vector<Mat4> orientChain(const ChainOrient& orient, const std::vector<Mat4>
 // takes the root guide's up axis instead (ChainOrient::upDirFromRootGuide).
 std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<model::JointId>& chain, bool aimAlways = false,
                                bool rootGuideUp = false);
+// The same at world matrices that stand for guide joints (authored space;
+// rig.spline's bones along its curve, the first standing for the root guide).
+std::vector<Mat4> orientFrames(const BuildContext& ctx, const std::vector<Mat4>& guideWorld, bool aimAlways = false,
+                               bool rootGuideUp = false);
 
 // The rotation taking local `aimAxis` onto unit `aim` and local `upAxis` onto
 // `up` made perpendicular to `aim`; nullopt when `up` lies along `aim`.

@@ -17,10 +17,12 @@ struct Controls {
     std::vector<double> along;              // each guide joint's length along the guides, metres
 };
 // `count` controllers spread evenly by length along the guide chain (`points`,
-// with `frames` from kit::chainFrames), the first under `parent`; animators
-// place and turn them.
+// with `frames` from kit::chainFrames), or with `byGuide` evenly by guide
+// joint (controller c at guide joint c * (n - 1) / (count - 1), between two
+// joints by its share of the segment: Mikan's uniform_ik), the first under
+// `parent`; animators place and turn them.
 Controls addControls(BuildContext& ctx, const std::vector<model::JointId>& chain, const std::vector<Vec3>& points,
-                     const std::vector<Mat4>& frames, int count, model::RigNodeIndex parent);
+                     const std::vector<Mat4>& frames, int count, model::RigNodeIndex parent, bool byGuide = false);
 
 // The most targets a model::SplineConstraint takes: a curve through its
 // guide joints (tweakers) has at most this many.
@@ -32,8 +34,16 @@ constexpr std::size_t kMaxCurvePoints = 16;
 // `tweakers` an animator's control ("ctrls.tweak.<i>", translations and
 // rotations) rides on each point. Returns what the curve goes through: the
 // tweakers, or the points.
+// Easing (rig.spline's fk_easing, with tweakers): the second point rides on
+// the first tweaker (`in`) and the second to last on the last (`out`),
+// instead of on the spline controllers: a point eased both ways (a chain of
+// three) follows both tweakers, half each.
+struct Easing {
+    bool in = false, out = false;
+};
 std::vector<model::RigNodeIndex> addCurvePoints(BuildContext& ctx, const std::vector<model::JointId>& chain,
-                                                const std::vector<Mat4>& frames, const Controls& controls, bool tweakers);
+                                                const std::vector<Mat4>& frames, const Controls& controls, bool tweakers,
+                                                Easing easing = {});
 
 // A driven joint ("drv.<i>", each under the previous one, the first under the
 // instance's hook) and a skin joint on it ("skin.<i>") at each of `frames`;
@@ -41,7 +51,11 @@ std::vector<model::RigNodeIndex> addCurvePoints(BuildContext& ctx, const std::ve
 // rotations) rides on each driven joint and carries its skin joint and hook,
 // so animators turn each joint on top of the curve. Returns the driven
 // joints, for the constraint.
+// With `sources` (rig.spline's bones: as many as `frames`, which need not be
+// one per guide joint), joint j derives from guide joint sources[j] and every
+// guide joint of `chain` hooks on the carrier of the joint nearest to it.
 std::vector<model::RigNodeIndex> addDrivenChain(BuildContext& ctx, const std::vector<model::JointId>& chain,
-                                                const std::vector<Mat4>& frames, bool fk = false);
+                                                const std::vector<Mat4>& frames, bool fk = false,
+                                                const std::vector<model::JointId>& sources = {});
 
 } // namespace rs::rigging::spline

@@ -1,4 +1,4 @@
-// spine.torso, neck.head and core.xform.
+// spine.torso and neck.head (core.xform is in XformBuilder.cpp).
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
@@ -219,53 +219,9 @@ public:
     }
 };
 
-class XformBuilder final : public TemplateBuilder {
-public:
-    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
-                                            const std::map<std::string, Value>&) const override
-    {
-        return {GuideJointSpec{-1, {}, {}, {}}};
-    }
-
-    bool gather(const BuildContext& ctx) const override { return ctx.structure("xform").has_value(); }
-
-    void generate(BuildContext& ctx) const override
-    {
-        const model::JointId joint = ctx.structure("xform")->front();
-        const Mat4 frame = rigidFrame(ctx.guideWorldMatrix(joint));
-        const auto control = kit::addControl(ctx, "xform", "", {}, ctx.hookNode(), frame, joint);
-        // A prop's part: moved, turned and scaled, unless its do_* options
-        // say otherwise; a channel it does not do is locked (core.group, a
-        // manifest on this builder without them, does them all).
-        std::uint16_t animatable = 0;
-        const std::pair<const char*, std::uint16_t> kinds[] = {
-            {"do_translate", kit::kTranslate}, {"do_rotate", kit::kRotate}, {"do_scale", kit::kScale}};
-        auto declares = [&](const std::string& option) {
-            const auto& opts = ctx.manifest().opts;
-            return std::any_of(opts.begin(), opts.end(), [&](const templates::Parameter& p) { return p.name == option; });
-        };
-        for (const auto& [option, channels] : kinds)
-            if (!declares(option) || ctx.optionBool(option)) // a manifest on this builder without it: on
-                animatable = std::uint16_t(animatable | channels);
-        kit::animate(ctx, control, animatable);
-        if (control.ctrl != control.offset) {
-            model::ChannelSettings& channels = ctx.channels(control.ctrl);
-            for (int c = 0; c < model::ChannelSettings::kCount; ++c)
-                if (!((animatable >> c) & 1u))
-                    channels.lock(c);
-            if (declares("rotate_order"))
-                if (const auto order = model::parseRotateOrder(ctx.optionString("rotate_order")))
-                    channels.rotateOrder = *order;
-        }
-        kit::addSkin(ctx, "xform", "", {}, control.ctrl, frame, joint);
-        ctx.setHook(joint, control.ctrl);
-    }
-};
-
 } // namespace
 
 std::unique_ptr<TemplateBuilder> makeSpineBuilder() { return std::make_unique<SpineBuilder>(); }
 std::unique_ptr<TemplateBuilder> makeNeckBuilder() { return std::make_unique<NeckBuilder>(); }
-std::unique_ptr<TemplateBuilder> makeXformBuilder() { return std::make_unique<XformBuilder>(); }
 
 } // namespace rs::rigging
