@@ -1,4 +1,4 @@
-// spine.torso, neck.head and core.xform.
+// spine.torso and core.xform (neck.head: NeckBuilder.cpp).
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
@@ -130,95 +130,6 @@ public:
     }
 };
 
-const std::vector<std::string> kHeadSpaces = {"neck", "chest", "cog", "world"};
-
-class NeckBuilder final : public TemplateBuilder {
-public:
-    std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
-                                            const std::map<std::string, Value>& guides) const override
-    {
-        // Neck base on the chest (1.5 m), head at 1.62 m, head top at 1.8 m.
-        const int count = std::max(1, static_cast<int>(kit::guideNumber(guides, "number", 2)));
-        std::vector<GuideJointSpec> specs;
-        int parent = kit::appendChain(specs, count, Vec3(0.0, 0.02, -0.01), Vec3(0.0, 0.06 / count, 0.01));
-        parent = kit::appendJoint(specs, parent, Vec3(0.0, 0.1 - 0.06 * (count - 1) / count, 0.01)); // head 0.12 above the chest
-        kit::appendJoint(specs, parent, Vec3(0.0, 0.18, 0.0));
-        return specs;
-    }
-
-    bool gather(const BuildContext& ctx) const override
-    {
-        return kit::chainOfAtLeast(ctx, 3, "the neck", " (a neck joint, the head, the head tip)").has_value();
-    }
-
-    void generate(BuildContext& ctx) const override
-    {
-        const auto chain = *ctx.structure("chain");
-        const auto points = *kit::positions(ctx, chain);
-        const auto frames = kit::sideFrames(points, sideAxis(ctx, chain.front()));
-        const std::size_t head = chain.size() - 2;
-        const bool spline = ctx.optionBool("spline");
-
-        RigNodeIndex parent = ctx.hookNode();
-        std::vector<RigNodeIndex> fk;
-        for (std::size_t i = 0; i < head; ++i) {
-            const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
-            kit::animate(ctx, control, kit::kRotate); // FK: rotation only
-            parent = control.ctrl;
-            fk.push_back(parent);
-            if (!spline) {
-                kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
-                ctx.setHook(chain[i], parent);
-            }
-        }
-        // The head's position follows the space head_point_space picks, its
-        // orientation the one head_space picks (configure() wires both).
-        const auto pointGroup = ctx.createNode(RigNodeKind::Group, "spaces.head_point",
-                                               ctx.nodeName(model::NameRole::Group, "head_point_space"), parent, frames[head], chain[head]);
-        const auto spaceGroup = ctx.createNode(RigNodeKind::Group, "spaces.head", ctx.nodeName(model::NameRole::Group, "head_space"),
-                                               pointGroup, frames[head], chain[head]);
-        const kit::Control headControl = kit::addControl(ctx, "head", "head", {}, spaceGroup, frames[head], chain[head]);
-        // The head turns on the neck; on a spline neck it also goes where the
-        // animator puts it (the neck bends and stretches to follow).
-        kit::animate(ctx, headControl, spline ? kit::kTranslate | kit::kRotate : kit::kRotate);
-        const auto headCtrl = headControl.ctrl;
-        if (spline) {
-            // A spline from the neck's base control to the head carries the
-            // neck joints: the neck bends and stretches to wherever the head
-            // goes (the other neck controls carry the head in neck space).
-            std::vector<RigNodeIndex> driven, targets{fk.front(), headCtrl};
-            RigNodeIndex drvParent = ctx.hookNode();
-            for (std::size_t i = 0; i <= head; ++i) {
-                drvParent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + std::to_string(i), "drv", int(i) + 1, drvParent, frames[i], chain[i]);
-                driven.push_back(drvParent);
-                if (i < head) {
-                    kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, drvParent, frames[i], chain[i]);
-                    ctx.setHook(chain[i], drvParent);
-                }
-            }
-            ctx.addConstraint("cns.spline", driven, targets, model::SplineConstraint{});
-        }
-        kit::addSkin(ctx, "head", "head", {}, headCtrl, frames[head], chain[head]);
-        ctx.setHook(chain[head], headCtrl);
-        ctx.setHook(chain.back(), headCtrl);
-        ctx.defineSpace("head", headCtrl);
-    }
-
-    void configure(BuildContext& ctx) const override
-    {
-        const auto point = ctx.findNode("spaces.head_point");
-        const auto group = ctx.findNode("spaces.head");
-        const auto headCtrl = ctx.findNode(ctx.optionBool("do_ctrl") ? "ctrls.head" : "roots.head");
-        if (!point || !group || !headCtrl)
-            return;
-        // Space 0 is the neck the head hangs from; the others are named spaces.
-        const RigNodeIndex neck = ctx.node(*point).parent;
-        kit::addSpaceSwitch(ctx, *point, *headCtrl, "head_point_space", "cns.head_point_space", neck, kHeadSpaces, false,
-                            "point_space");
-        kit::addSpaceSwitch(ctx, *group, *headCtrl, "head_space", "cns.head_space", neck, kHeadSpaces, true);
-    }
-};
-
 class XformBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
@@ -265,7 +176,6 @@ public:
 } // namespace
 
 std::unique_ptr<TemplateBuilder> makeSpineBuilder() { return std::make_unique<SpineBuilder>(); }
-std::unique_ptr<TemplateBuilder> makeNeckBuilder() { return std::make_unique<NeckBuilder>(); }
 std::unique_ptr<TemplateBuilder> makeXformBuilder() { return std::make_unique<XformBuilder>(); }
 
 } // namespace rs::rigging
