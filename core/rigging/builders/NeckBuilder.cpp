@@ -3,6 +3,7 @@
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
+#include "rigging/builders/SkinSpread.h"
 
 #include <algorithm>
 
@@ -42,14 +43,19 @@ public:
     {
         const auto chain = *ctx.structure("chain");
         const auto points = *kit::positions(ctx, chain);
-        const auto frames = kit::sideFrames(points, sideAxis(ctx, chain.front()));
+        const Vec3 side = sideAxis(ctx, chain.front());
+        const auto frames = kit::sideFrames(points, side);
         const std::size_t head = chain.size() - 2;
         const bool spline = ctx.optionBool("spline");
+        // orient_neck: the FK controls turn about the neck's own axes (X
+        // along it); off, about the world's, like the chest and the COG.
+        const bool orient = ctx.optionBool("orient_neck");
 
         RigNodeIndex parent = ctx.hookNode();
         std::vector<RigNodeIndex> fk;
         for (std::size_t i = 0; i < head; ++i) {
-            const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frames[i], chain[i]);
+            const Mat4 frame = orient ? frames[i] : kit::uprightFrame(points[i]);
+            const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frame, chain[i]);
             kit::animate(ctx, control, kit::kRotate); // FK: rotation only
             parent = control.ctrl;
             fk.push_back(parent);
@@ -69,22 +75,8 @@ public:
         // animator puts it (the neck bends and stretches to follow).
         kit::animate(ctx, headControl, spline ? kit::kTranslate | kit::kRotate : kit::kRotate);
         const auto headCtrl = headControl.ctrl;
-        if (spline) {
-            // A spline from the neck's base control to the head carries the
-            // neck joints: the neck bends and stretches to wherever the head
-            // goes (the other neck controls carry the head in neck space).
-            std::vector<RigNodeIndex> driven, targets{fk.front(), headCtrl};
-            RigNodeIndex drvParent = ctx.hookNode();
-            for (std::size_t i = 0; i <= head; ++i) {
-                drvParent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + std::to_string(i), "drv", int(i) + 1, drvParent, frames[i], chain[i]);
-                driven.push_back(drvParent);
-                if (i < head) {
-                    kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, drvParent, frames[i], chain[i]);
-                    ctx.setHook(chain[i], drvParent);
-                }
-            }
-            ctx.addConstraint("cns.spline", driven, targets, model::SplineConstraint{});
-        }
+        if (spline)
+            addSplineNeck(ctx, chain, points, frames, side, {fk.front(), headCtrl});
         kit::addSkin(ctx, "head", "head", {}, headCtrl, frames[head], chain[head]);
         ctx.setHook(chain[head], headCtrl);
         ctx.setHook(chain.back(), headCtrl);
@@ -96,13 +88,61 @@ public:
         const auto point = ctx.findNode("spaces.head_point");
         const auto group = ctx.findNode("spaces.head");
         const auto headCtrl = ctx.findNode(ctx.optionBool("do_ctrl") ? "ctrls.head" : "roots.head");
-        if (!point || !group || !headCtrl)
-            return;
+        if (!point || !group || !headCtrl || !ctx.optionBool("space_switch"))
+            return; // without space_switch the head simply rides on the neck
         // Space 0 is the neck the head hangs from; the others are named spaces.
         const RigNodeIndex neck = ctx.node(*point).parent;
         kit::addSpaceSwitch(ctx, *point, *headCtrl, "head_point_space", "cns.head_point_space", neck, kHeadSpaces, false,
                             "point_space");
         kit::addSpaceSwitch(ctx, *group, *headCtrl, "head_space", "cns.head_space", neck, kHeadSpaces, true);
+    }
+
+private:
+    // The spline from the neck's base control to the head (targets) carries
+    // the neck joints: the neck bends and stretches to wherever the head goes
+    // (the other neck controls carry the head in neck space). Its stretch,
+    // stretch mode and end rigidities are the head control's attributes and
+    // the instance's options; with `bones` the skin joints ride on a chain of
+    // their own along it, spread by bones_length.
+    static void addSplineNeck(BuildContext& ctx, const std::vector<model::JointId>& chain, const std::vector<Vec3>& points,
+                              const std::vector<Mat4>& frames, const Vec3& side, const std::vector<RigNodeIndex>& targets)
+    {
+        const std::size_t head = chain.size() - 2;
+        const RigNodeIndex headCtrl = targets.back();
+        const auto bones = static_cast<std::size_t>(std::max(0LL, ctx.optionInt("bones")));
+        model::SplineConstraint settings{.stretch = ctx.addAttribute(headCtrl, "stretch", ctx.optionBool("default_stretch") ? 1.0 : 0.0, 0.0, 1.0)};
+        settings.scaleStretch = ctx.optionString("stretch_mode") == "scale";
+        if (ctx.optionBool("rigidity")) {
+            settings.rigidityStart = ctx.addAttribute(headCtrl, "rigidity_dn", ctx.optionFloat("rigidity_dn"), 0.0, 1.0);
+            settings.rigidityEnd = ctx.addAttribute(headCtrl, "rigidity_up", ctx.optionFloat("rigidity_up"), 0.0, 1.0);
+        }
+        std::vector<RigNodeIndex> driven;
+        RigNodeIndex drvParent = ctx.hookNode();
+        for (std::size_t i = 0; i <= head; ++i) {
+            drvParent = kit::addSetup(ctx, RigNodeKind::Joint, "drv." + std::to_string(i), "drv", int(i) + 1, drvParent, frames[i], chain[i]);
+            driven.push_back(drvParent);
+            if (i == head)
+                break;
+            if (bones == 0)
+                kit::addSkin(ctx, std::to_string(i), "", int(i) + 1, drvParent, frames[i], chain[i]);
+            ctx.setHook(chain[i], drvParent);
+        }
+        ctx.addConstraint("cns.spline", driven, targets, settings);
+        if (bones == 0)
+            return;
+        const auto length = kit::parseBonesLength(ctx.optionString("bones_length")).value_or(kit::BonesLength::Equal);
+        const kit::Spread spread = kit::spreadAlong(std::vector<Vec3>(points.begin(), points.begin() + std::ptrdiff_t(head) + 1), bones, length);
+        const auto boneFrames = kit::sideFrames(spread.at, side);
+        std::vector<RigNodeIndex> def;
+        RigNodeIndex defParent = ctx.hookNode();
+        for (std::size_t k = 0; k <= bones; ++k) {
+            const model::JointId source = k == bones ? chain[head] : chain[spread.segment[k]];
+            defParent = kit::addSetup(ctx, RigNodeKind::Joint, "def." + std::to_string(k), "def", int(k) + 1, defParent, boneFrames[k], source);
+            def.push_back(defParent);
+            if (k < bones)
+                kit::addSkin(ctx, std::to_string(k), "", int(k) + 1, defParent, boneFrames[k], source);
+        }
+        ctx.addConstraint("cns.bones", def, targets, settings);
     }
 };
 
