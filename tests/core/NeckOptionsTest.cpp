@@ -250,6 +250,12 @@ TEST(NeckRig, ABadOptionValueIsReportedAndTheDefaultOrTheLimitUsed)
     EXPECT_NE(said.find("option 'stretch_mode' = 'stretchy' is not one of its labels, using the default"), std::string::npos) << said;
     EXPECT_TRUE(rig.findPath("neck::skin.15"));
     EXPECT_FALSE(rig.findPath("neck::skin.16"));
+
+    // Bones without the spline: said, and one skin joint per neck guide.
+    const model::Rig fk = rigging::buildRig(withNeckOptions({{"bones", Value(5LL)}, {"spline", Value(false)}}), test::builtinTemplates());
+    EXPECT_NE(formatAll(fk.diagnostics).find("bones needs spline"), std::string::npos) << formatAll(fk.diagnostics);
+    EXPECT_TRUE(fk.findPath("neck::skin.1"));
+    EXPECT_FALSE(fk.findPath("neck::skin.2"));
 }
 
 } // namespace

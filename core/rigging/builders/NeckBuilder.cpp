@@ -50,6 +50,8 @@ public:
         // orient_neck: the FK controls turn about the neck's own axes (X
         // along it); off, about the world's, like the chest and the COG.
         const bool orient = ctx.optionBool("orient_neck");
+        if (!spline && ctx.optionInt("bones") > 0)
+            ctx.warning("bones needs spline: without it the neck keeps one skin joint per neck guide", "bones");
 
         RigNodeIndex parent = ctx.hookNode();
         std::vector<RigNodeIndex> fk;
