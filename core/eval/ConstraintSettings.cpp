@@ -57,6 +57,9 @@ public:
         m_c.stretchChannel = optionalChannel(s.stretch, "stretch");
         m_c.volumeChannel = optionalChannel(s.volume, "volume");
         m_c.slideChannel = optionalChannel(s.slide, "slide");
+        m_c.rigidityStartChannel = optionalChannel(s.rigidityStart, "rigidity_start");
+        m_c.rigidityEndChannel = optionalChannel(s.rigidityEnd, "rigidity_end");
+        m_c.scaleStretch = s.scaleStretch;
         // A sliding chain's joints travel the whole curve: a finer arc-length
         // table keeps their spacing along a bent path to 1e-5 m.
         if (s.slide)

@@ -22,6 +22,8 @@ struct CompiledConstraint {
     std::vector<bool> identityOffset;  // per target: the offset is the identity (skipped)
     int weightChannel = -1, stretchChannel = -1, softChannel = -1, valueChannel = -1, breakChannel = -1,
         spaceChannel = -1, volumeChannel = -1, pinChannel = -1, slideChannel = -1; // -1: none
+    int rigidityStartChannel = -1, rigidityEndChannel = -1; // spline: tangent rigidity at its ends (-1: 1)
+    bool scaleStretch = false;                               // spline: stretch by scale
     double fraction = 0;               // twist
     bool nonRolling = false;           // twist: the start's roll relative to targets[2]
     bool showAbove = false;            // visibility: shown while value > threshold, else while value < threshold

@@ -32,6 +32,20 @@ Controls gather(const CompiledConstraint& c, const std::vector<Affine>& world)
     return k;
 }
 
+// Loosens the tangent at an end control (`end`, with `neighbour` the control
+// next to it) by its rigidity: 1 keeps the control's own tangent, 0 aims it
+// along the chord to the neighbour (the same direction at rest).
+void loosenEnd(Controls& k, int end, int neighbour, double rigidity)
+{
+    const Vec3 chord = end < neighbour ? k.position[neighbour] - k.position[end] : k.position[end] - k.position[neighbour];
+    const double length = glm::length(chord);
+    if (rigidity >= 1.0 || length < 1e-12)
+        return;
+    const Vec3 blended = glm::mix(chord / length, k.tangent[end], std::max(rigidity, 0.0));
+    if (const double b = glm::length(blended); b > 1e-9) // opposite directions half way: keep the control's
+        k.tangent[end] = blended / b;
+}
+
 int segmentOf(const Controls& k, double u, double& s)
 {
     const int segment = std::clamp(int(std::floor(u)), 0, k.count - 2);
@@ -203,21 +217,27 @@ std::vector<Vec3> restCurvePoints(const std::vector<Affine>& targets, int count,
 void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state)
 {
     std::vector<Affine>& world = state.world;
-    const Controls k = gather(c, world);
+    Controls k = gather(c, world);
+    if (c.rigidityStartChannel >= 0)
+        loosenEnd(k, 0, 1, pose[c.rigidityStartChannel]);
+    if (c.rigidityEndChannel >= 0)
+        loosenEnd(k, k.count - 1, k.count - 2, pose[c.rigidityEndChannel]);
     const double scale = c.chainParent != model::kNoNode ? world[c.chainParent].scale().x / c.restParentScale : 1.0;
     const double stretch = c.stretchChannel >= 0 ? std::clamp(pose[c.stretchChannel], 0.0, 1.0) : 1.0;
     const int count = c.samplesPerSegment * (k.count - 1) + 1;
     const double volume = c.volumeChannel >= 0 ? std::clamp(pose[c.volumeChannel], 0.0, 1.0) : 0.0;
     const double slide = c.slideChannel >= 0 ? pose[c.slideChannel] : 0.0;
-    if (stretch < 1.0 || volume > 0.0 || slide != 0.0)
+    if (stretch < 1.0 || volume > 0.0 || slide != 0.0 || c.scaleStretch)
         arcTable(k, c.samplesPerSegment, state.arcLengths);
     // Slid with the stretch, the shift grows with the curve as the joints' spacing does.
     const double stretchedSlide = slide != 0.0 && c.restLength > 0.0 ? slide * state.arcLengths[count - 1] / c.restLength : 0.0;
     // Volume: the chain's stretch (by the stretch share) thins it across, a squash thickens it.
-    double across = 1.0;
-    if (volume > 0.0 && c.restLength > 0.0) {
+    // Stretch by scale: the joints also grow along their bones by it.
+    double across = 1.0, along = 1.0;
+    if ((volume > 0.0 || c.scaleStretch) && c.restLength > 0.0) {
         const double s = std::max(1.0 + stretch * (state.arcLengths[count - 1] / (c.restLength * scale) - 1.0), 1e-3);
         across = std::pow(s, -0.5 * volume);
+        along = c.scaleStretch ? s : 1.0;
     }
     for (std::size_t j = 0; j < c.driven.size(); ++j) {
         double u = c.parameters[j], beyond = 0.0, stretchedBeyond = 0.0;
@@ -237,7 +257,8 @@ void solveSpline(const CompiledConstraint& c, const Pose& pose, EvalState& state
             position += glm::normalize(derivative) * beyond;
         Affine& driven = world[c.driven[j]];
         driven = compose(frameAt(c, k, u, derivative), Vec3(scale), position) * c.curveOffsets[j];
-        if (across != 1.0 && j + 1 < c.driven.size()) {
+        if ((across != 1.0 || along != 1.0) && j + 1 < c.driven.size()) {
+            driven.linear[0] *= along;
             driven.linear[1] *= across;
             driven.linear[2] *= across;
         }

@@ -7,6 +7,8 @@
 // the curve frame; without stretch it keeps its rest arc length instead (the
 // chain slides along the curve), and the stretch channel blends the two. The
 // slide channel moves every joint along the curve by metres of arc (rig.slide).
+// The rigidity channels loosen the end tangents towards the chords; with
+// stretch by scale the joints also grow along their bones.
 // restCurvePoints is the one piece builders use: where that curve runs at rest.
 #include "eval/Solvers.h"
 

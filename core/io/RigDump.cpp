@@ -127,6 +127,13 @@ public:
         field("stretch", attributeText(m_rig, s.stretch));
         field("volume", attributeText(m_rig, s.volume));
         field("slide", attributeText(m_rig, s.slide));
+        // Written only when set, so rigs without them dump as before.
+        if (s.rigidityStart)
+            field("rigidity_start", attributeText(m_rig, s.rigidityStart));
+        if (s.rigidityEnd)
+            field("rigidity_end", attributeText(m_rig, s.rigidityEnd));
+        if (s.scaleStretch)
+            field("stretch_mode", "scale");
     }
     void operator()(const model::SpaceConstraint& s)
     {

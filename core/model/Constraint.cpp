@@ -87,6 +87,8 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 optionalRef(settings.stretch);
                 optionalRef(settings.volume);
                 optionalRef(settings.slide);
+                optionalRef(settings.rigidityStart);
+                optionalRef(settings.rigidityEnd);
             } else if constexpr (std::is_same_v<T, SpaceConstraint>) {
                 ref(settings.choice);
             } else if constexpr (std::is_same_v<T, VisibilityConstraint>) {

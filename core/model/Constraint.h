@@ -151,6 +151,19 @@ struct SplineConstraint {
     // by it times the curve's length over its rest length. A joint slid past
     // an end of the curve goes on straight along the end's tangent. None: 0.
     std::optional<AttributeRef> slide{};
+    // Tangent rigidity at the first and last target (necks: at the base and
+    // the head). 1: the curve leaves that end along the control's rest chain
+    // direction, turning with the control; 0: it is free there, aiming along
+    // the chord to its neighbouring control; in between the two directions
+    // blend. At rest they agree, so the rest pose does not depend on it.
+    // Clamped to [0, 1]. None: 1.
+    std::optional<AttributeRef> rigidityStart{};
+    std::optional<AttributeRef> rigidityEnd{};
+    // Stretch by scale: every driven joint but the last is also scaled along
+    // its local X axis (its bone) by the chain's stretch (as volume measures
+    // it), so a stretched chain's joints grow with their spacing; off, they
+    // only move apart and keep the chain parent's scale.
+    bool scaleStretch = false;
     bool operator==(const SplineConstraint&) const = default;
 };
 

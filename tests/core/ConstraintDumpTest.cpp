@@ -56,8 +56,7 @@ private:
                                                          optionalAttribute("volume"), optionalAttribute("pin")};
         if (kind == "twist") return model::TwistConstraint{number("fraction"), flag("non_rolling")};
         if (kind == "visibility") return visibility();
-        if (kind == "spline") return model::SplineConstraint{optionalAttribute("stretch"), optionalAttribute("volume"),
-                                                                             optionalAttribute("slide")};
+        if (kind == "spline") return spline();
         if (kind == "space") return model::SpaceConstraint{attribute("choice"), flag("orient_only"), flag("keep_offset")};
         if (kind == "drive") return drive();
         if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
@@ -102,6 +101,16 @@ private:
         r.mode = mode == "axis" ? model::RollMode::Axis : model::RollMode::Path;
         r.jump = number("jump");
         return r;
+    }
+
+    // Rigidity and the stretch mode are written only when set.
+    model::SplineConstraint spline()
+    {
+        model::SplineConstraint s{optionalAttribute("stretch"), optionalAttribute("volume"), optionalAttribute("slide")};
+        if (m_entry["rigidity_start"]) s.rigidityStart = attribute("rigidity_start");
+        if (m_entry["rigidity_end"]) s.rigidityEnd = attribute("rigidity_end");
+        if (m_entry["stretch_mode"]) s.scaleStretch = field("stretch_mode").as<std::string>() == "scale";
+        return s;
     }
 
     model::DrivenKeyConstraint drivenKey()
