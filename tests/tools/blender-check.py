@@ -62,29 +62,48 @@ def check_armature(arm):
             failures.append(f'armature scale {tuple(scale)}, expected {unit_scale}')
 
 
-def check_animation(arm):
-    actions = [a.name for a in bpy.data.actions]
-    action = arm.animation_data.action if arm.animation_data else None
-    for clip in reference.get('clips', []):
-        if not any(clip['name'] in name for name in actions):
-            failures.append(f"no action for clip {clip['name']} (actions: {actions})")
-    if action is None or not action.fcurves:
-        failures.append(f'the armature has no action with curves (actions: {actions})')
-        return
-    scaled = set(n for clip in reference.get('clips', []) for n in clip['scaled'])
+def clip_action(name):
+    """The armature's action Blender made for the clip `name` (named after the
+    clip, not followed by another digit: range_of_motion_1 is not _10; the one
+    with bone curves, not a controller object's)."""
+    for action in bpy.data.actions:
+        at = action.name.find(name)
+        after = action.name[at + len(name):at + len(name) + 1] if at >= 0 else ''
+        if at >= 0 and not after.isdigit() and any(fc.data_path.startswith('pose.bones[') for fc in action.fcurves):
+            return action
+    return None
+
+
+def scale_moving(action):
     moving = set()
     for fc in action.fcurves:
         if fc.data_path.endswith('.scale') and fc.data_path.startswith('pose.bones["'):
             values = [k.co[1] for k in fc.keyframe_points]
             if values and max(values) - min(values) > 1e-4:
                 moving.add(fc.data_path[len('pose.bones["'):-len('"].scale')])
-    first, last = action.frame_range
-    print(f'CHECK {path}: action {action.name}: {len(action.fcurves)} curves, frames {first:g}-{last:g}, '
-          f'scale moves on {len(moving)} bones (reference: {len(scaled)})')
-    if moving != scaled:
-        failures.append(f'scale moves on {sorted(moving - scaled)} but should not; '
-                        f'does not move on {sorted(scaled - moving)}')
+    return moving
 
+
+def check_animation(arm):
+    actions = [a.name for a in bpy.data.actions]
+    action = arm.animation_data.action if arm.animation_data else None
+    if action is None or not action.fcurves:
+        failures.append(f'the armature has no action with curves (actions: {actions})')
+        return
+    first, last = action.frame_range
+    print(f'CHECK {path}: action {action.name}: {len(action.fcurves)} curves, frames {first:g}-{last:g}')
+    # Each clip's action scales exactly the bones the reference says that clip scales.
+    for clip in reference.get('clips', []):
+        clip_act = clip_action(clip['name'])
+        if clip_act is None:
+            failures.append(f"no action for clip {clip['name']} (actions: {actions})")
+            continue
+        scaled, moving = set(clip['scaled']), scale_moving(clip_act)
+        print(f"CHECK {path}: clip {clip['name']} (action {clip_act.name}): scale moves on {len(moving)} bones "
+              f'(reference: {len(scaled)})')
+        if moving != scaled:
+            failures.append(f"clip {clip['name']}: scale moves on {sorted(moving - scaled)} but should not; "
+                            f'does not move on {sorted(scaled - moving)}')
 
 def check_mesh(obj, expected):
     tree = KDTree(len(expected['vertices']))
