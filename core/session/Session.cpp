@@ -93,8 +93,35 @@ void Session::setDocumentName(const std::string& name)
     emitChange(Change::of(ChangeKind::Names));
 }
 
+namespace {
+
+// An option written under its other name (Mikan's `iks` for rig.spline's
+// `controls`) is the option itself in the editor: the Options dock shows and
+// edits it by its own name (the build reads either).
+void adoptOtherOptionNames(model::GuideDocument& document, const templates::TemplateRegistry& templates)
+{
+    for (const model::TemplateInstance& i : document.instances()) {
+        const templates::TemplateManifest* manifest = templates.find(i.templateId);
+        if (!manifest)
+            continue;
+        model::TemplateInstance& instance = *document.instance(i.id);
+        for (const templates::Parameter& p : manifest->opts) {
+            const auto other = p.legacy.empty() ? instance.options.end() : instance.options.find(p.legacy);
+            if (other == instance.options.end() || instance.options.count(p.name))
+                continue;
+            instance.options[p.name] = other->second;
+            instance.options.erase(other);
+            if (auto source = instance.optionSources.at.extract(p.legacy))
+                instance.optionSources.at[p.name] = source.mapped();
+        }
+    }
+}
+
+} // namespace
+
 void Session::replaceDocument(model::GuideDocument document)
 {
+    adoptOtherOptionNames(document, *m_templates);
     m_guideDrag.reset();
     m_shapeDrag.reset();
     m_cvDrag.reset();

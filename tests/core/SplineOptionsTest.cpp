@@ -9,6 +9,7 @@
 #include "core/TestSupport.h"
 #include "eval/SplineCurve.h"
 #include "rigging/RigBuilder.h"
+#include "session/Session.h"
 
 #include <gtest/gtest.h>
 
@@ -190,6 +191,23 @@ TEST(Evaluator, TailSplineLoadsMikansNamesAndOnOffTweakers)
     const model::Rig one = rigging::buildRig(curledTail({{"bones", Value(1LL)}}), test::builtinTemplates());
     EXPECT_TRUE(hasErrors(one.diagnostics));
     EXPECT_NE(formatAll(one.diagnostics).find("(option 'bones')"), std::string::npos) << formatAll(one.diagnostics);
+}
+
+// The editor opens a guide that uses Mikan's name as the option itself, so
+// the Options dock shows and edits `controls`, not a default beside `iks`.
+TEST(Evaluator, TailSplineOpenedInTheEditorShowsMikansNameAsTheOption)
+{
+    session::Session s(std::make_shared<templates::TemplateRegistry>(test::builtinTemplates()));
+    s.replaceDocument(curledTail({{"iks", Value(5LL)}, {"controls", Value(3LL)}}, 7));
+    const model::TemplateInstance& both = s.document().instances().front();
+    EXPECT_EQ(both.options.at("controls"), Value(3LL)) << "both given: ours stays";
+    s.replaceDocument(curledTail({{"iks", Value(5LL)}}));
+    const model::TemplateInstance& tail = s.document().instances().front();
+    EXPECT_EQ(tail.options.count("iks"), 0u);
+    EXPECT_EQ(tail.options.at("controls"), Value(5LL));
+    s.build();
+    EXPECT_TRUE(s.rig()->findPath(at("ctrls.spline.4")));
+    EXPECT_FALSE(s.rig()->findPath(at("ctrls.spline.5")));
 }
 
 TEST(ChainOrient, SplineOptionsMirrorExactlyOnABranch)
