@@ -98,13 +98,17 @@ struct IkConstraint {
     // (hard IK).
     std::optional<AttributeRef> soft{};
     // Volume: a bone stretched by s (its length over its rest length) is
-    // scaled across (its local Y and Z) by s^(-volume / 2), so a fully
-    // volume-preserving limb keeps its volume: 1 / sqrt(s). None: 0.
+    // scaled across (its local Y and Z) by s^(volumePower * volume), so a
+    // fully volume-preserving limb with the default power keeps its volume:
+    // 1 / sqrt(s). None: 0.
     std::optional<AttributeRef> volume{};
     // Pin: the middle joint moves to targets[2] by this share (1: locked on
     // the pin, both bones then reaching from it); needs the third target.
     // None: 0.
     std::optional<AttributeRef> pin{};
+    // The power of the volume compensation (Mikan's stomp_power), in [-1, 0]:
+    // -0.5 is 1 / sqrt(s), -1 is 1 / s, 0 keeps the thickness. Clamped.
+    double volumePower = -0.5;
     bool operator==(const IkConstraint&) const = default;
 };
 
@@ -124,9 +128,23 @@ struct IkConstraint {
 // and one at the end (fraction 1) rolls fully, like the start joint itself:
 // no candy wrapper at the shoulder. The swing is undefined when the bone
 // points straight opposite its rest direction relative to the reference.
+//
+// Bendy (a limb's bend controls): five more targets follow the two or three
+// above: [curve start, start tangent, bend control, curve end, end tangent].
+// The joint then rides a curve instead of the straight segment: two cubic
+// Hermite pieces, curve start -> bend control -> curve end, the tangent at
+// each end along the tangent node's rest direction of the segment (so it
+// turns with that node) and at the bend control along its own, each as long
+// as the chord it spans. Rest: the bend control halfway, every tangent along
+// the segment, so the curve is the segment itself, travelled at constant
+// speed, and nothing moves. The joint sits at `fraction` of the curve by
+// parameter or, with byLength, by arc length; it keeps its twist (above) and
+// is swung by the shortest arc from the segment onto the curve's tangent.
 struct TwistConstraint {
     double fraction = 0.0; // 0 at targets[0], 1 at targets[1]
     bool nonRolling = false; // the start's roll relative to targets[2] (above)
+    bool bendy = false; // rides the curve of the five last targets (above)
+    bool byLength = true; // bendy: `fraction` of the curve's arc length, else of its parameter
     bool operator==(const TwistConstraint&) const = default;
 };
 

@@ -1,0 +1,103 @@
+#include "eval/BendyCurve.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace rs::eval {
+
+namespace {
+
+constexpr int kSamples = 32;
+
+// Cubic Hermite position and derivative on one piece, s in [0, 1].
+void hermite(const Vec3& p0, const Vec3& m0, const Vec3& p1, const Vec3& m1, double s, Vec3& position, Vec3& derivative)
+{
+    const double s2 = s * s, s3 = s2 * s;
+    position = (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
+    derivative = (6 * s2 - 6 * s) * p0 + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * p1 + (3 * s2 - 2 * s) * m1;
+}
+
+} // namespace
+
+void BendyCurve::at(double u, Vec3& position, Vec3& derivative) const
+{
+    u = std::clamp(u, 0.0, 1.0);
+    const double first = glm::length(mid - start), second = glm::length(end - mid);
+    const Vec3 midTangentScaled = midTangent * (0.5 * (first + second));
+    if (u <= 0.5) {
+        hermite(start, startTangent * first, mid, midTangentScaled, 2.0 * u, position, derivative);
+    } else {
+        hermite(mid, midTangentScaled, end, endTangent * second, 2.0 * u - 1.0, position, derivative);
+    }
+    derivative *= 2.0; // per unit of u, which spans each piece in half
+}
+
+double BendyCurve::parameterAtLength(double share) const
+{
+    std::array<double, kSamples + 1> arc{};
+    Vec3 previous, d;
+    at(0.0, previous, d);
+    for (int i = 1; i <= kSamples; ++i) {
+        Vec3 p;
+        at(double(i) / kSamples, p, d);
+        arc[i] = arc[i - 1] + glm::length(p - previous);
+        previous = p;
+    }
+    if (arc[kSamples] < 1e-12)
+        return share;
+    const double wanted = std::clamp(share, 0.0, 1.0) * arc[kSamples];
+    const auto it = std::lower_bound(arc.begin() + 1, arc.end(), wanted);
+    const int i = std::min(int(it - arc.begin()), kSamples);
+    const double span = arc[i] - arc[i - 1];
+    const double t = span > 1e-15 ? (wanted - arc[i - 1]) / span : 0.0;
+    return (double(i - 1) + t) / kSamples;
+}
+
+BendyCurve bendyCurveOf(const CompiledConstraint& c, const std::vector<Affine>& world)
+{
+    const std::size_t b = bendTargetsBegin(c);
+    BendyCurve curve;
+    curve.start = world[c.targets[b]].translation;
+    curve.mid = world[c.targets[b + 2]].translation;
+    curve.end = world[c.targets[b + 3]].translation;
+    curve.startTangent = world[c.targets[b + 1]].rotation() * c.localTangents[0];
+    curve.midTangent = world[c.targets[b + 2]].rotation() * c.localTangents[1];
+    curve.endTangent = world[c.targets[b + 4]].rotation() * c.localTangents[2];
+    return curve;
+}
+
+std::string prepareBendy(CompiledConstraint& c, const std::vector<Affine>& rest)
+{
+    const std::size_t b = bendTargetsBegin(c);
+    if (c.targets.size() != b + 5)
+        return "needs five targets after the twist's own to be bendy (curve start, start tangent, bend control, curve end, "
+               "end tangent)";
+    const Vec3 segment = rest[c.targets[b + 3]].translation - rest[c.targets[b]].translation;
+    if (glm::length(segment) < 1e-9)
+        return "its curve starts and ends at the same place";
+    const Vec3 along = glm::normalize(segment);
+    c.localTangents.clear();
+    for (std::size_t k : {b + 1, b + 2, b + 4})
+        c.localTangents.push_back(glm::transpose(rest[c.targets[k]].rotation()) * along);
+    return {};
+}
+
+void bendJoint(const CompiledConstraint& c, const std::vector<Affine>& world, const Vec3& boneAxis, Mat3& twisted,
+               Vec3& position)
+{
+    const BendyCurve curve = bendyCurveOf(c, world);
+    const double u = c.byLength ? curve.parameterAtLength(c.fraction) : c.fraction;
+    Vec3 derivative;
+    curve.at(u, position, derivative);
+    if (glm::length(derivative) < 1e-12 || glm::length(boneAxis) < 1e-12)
+        return;
+    const Vec3 from = glm::normalize(boneAxis), to = glm::normalize(derivative);
+    const double d = glm::dot(from, to);
+    if (d < -1.0 + 1e-9)
+        return; // the curve doubles back on the bone: no defined swing, keep the twist's own aim
+    const Vec3 axis = glm::cross(from, to);
+    twisted = glm::mat3_cast(glm::normalize(Quat(1.0 + d, axis.x, axis.y, axis.z))) * twisted;
+}
+
+} // namespace rs::eval
