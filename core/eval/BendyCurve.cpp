@@ -54,32 +54,74 @@ double BendyCurve::parameterAtLength(double share) const
     return (double(i - 1) + t) / kSamples;
 }
 
+namespace {
+
+// The target positions, world.
+Vec3 at(const CompiledConstraint& c, const std::vector<Affine>& world, std::size_t k)
+{
+    return world[c.targets[bendTargetsBegin(c) + k]].translation;
+}
+
+Vec3 unit(const Vec3& v, const Vec3& fallback)
+{
+    const double length = glm::length(v);
+    return length > 1e-12 ? v / length : fallback;
+}
+
+// `from` turned towards `to` by `angle` radians in their plane (`between` the
+// angle between them, > angle).
+Vec3 turnedTowards(const Vec3& from, const Vec3& to, double between, double angle)
+{
+    return (std::sin(between - angle) * from + std::sin(angle) * to) / std::sin(between);
+}
+
+} // namespace
+
 BendyCurve bendyCurveOf(const CompiledConstraint& c, const std::vector<Affine>& world)
 {
     const std::size_t b = bendTargetsBegin(c);
+    const Vec3 start = at(c, world, 0), middle = at(c, world, 1), end = at(c, world, 2);
+    const Vec3 upper = unit(middle - start, Vec3(1, 0, 0)), lower = unit(end - middle, upper);
+    // The tangents at the middle joint: each bone turned towards the other
+    // until they are no more than the rest angle apart.
+    Vec3 in = upper, out = lower;
+    const double between = std::acos(std::clamp(glm::dot(upper, lower), -1.0, 1.0));
+    if (between > c.restKink + 1e-12 && std::sin(between) > 1e-9) {
+        const double turn = 0.5 * (between - c.restKink);
+        in = turnedTowards(upper, lower, between, turn);
+        out = turnedTowards(lower, upper, between, turn);
+    }
+    // The tweak's own turn, world: its rotation relative to its space.
+    const Mat3 tweak = world[c.targets[b + 3]].rotation() * glm::transpose(world[c.targets[b + 4]].rotation());
     BendyCurve curve;
-    curve.start = world[c.targets[b]].translation;
-    curve.mid = world[c.targets[b + 2]].translation;
-    curve.end = world[c.targets[b + 3]].translation;
-    curve.startTangent = world[c.targets[b + 1]].rotation() * c.localTangents[0];
-    curve.midTangent = world[c.targets[b + 2]].rotation() * c.localTangents[1];
-    curve.endTangent = world[c.targets[b + 4]].rotation() * c.localTangents[2];
+    curve.mid = at(c, world, 5);
+    curve.midTangent = world[c.targets[b + 5]].rotation() * c.localTangents[0];
+    if (c.bendyLower) {
+        curve.start = at(c, world, 3);
+        curve.startTangent = tweak * out;
+        curve.end = end;
+        curve.endTangent = lower;
+    } else {
+        curve.start = start;
+        curve.startTangent = upper;
+        curve.end = at(c, world, 3);
+        curve.endTangent = tweak * in;
+    }
     return curve;
 }
 
 std::string prepareBendy(CompiledConstraint& c, const std::vector<Affine>& rest)
 {
     const std::size_t b = bendTargetsBegin(c);
-    if (c.targets.size() != b + 5)
-        return "needs five targets after the twist's own to be bendy (curve start, start tangent, bend control, curve end, "
-               "end tangent)";
-    const Vec3 segment = rest[c.targets[b + 3]].translation - rest[c.targets[b]].translation;
-    if (glm::length(segment) < 1e-9)
-        return "its curve starts and ends at the same place";
-    const Vec3 along = glm::normalize(segment);
-    c.localTangents.clear();
-    for (std::size_t k : {b + 1, b + 2, b + 4})
-        c.localTangents.push_back(glm::transpose(rest[c.targets[k]].rotation()) * along);
+    if (c.targets.size() != b + 6)
+        return "needs six targets after the twist's own to be bendy (limb start, middle joint, limb end, tweak, tweak space, "
+               "bend control)";
+    const Vec3 start = at(c, rest, 0), middle = at(c, rest, 1), end = at(c, rest, 2);
+    if (glm::length(middle - start) < 1e-9 || glm::length(end - middle) < 1e-9)
+        return "its limb joints are at the same place";
+    const Vec3 upper = glm::normalize(middle - start), lower = glm::normalize(end - middle);
+    c.restKink = std::acos(std::clamp(glm::dot(upper, lower), -1.0, 1.0));
+    c.localTangents = {glm::transpose(rest[c.targets[b + 5]].rotation()) * (c.bendyLower ? lower : upper)};
     return {};
 }
 

@@ -1,12 +1,8 @@
 #pragma once
 // Internal to rs::eval: the curve a bendy limb's twist joints ride
-// (model::TwistConstraint with `bendy`). Two cubic Hermite pieces, curve
-// start -> bend control -> curve end; the tangent at each of the three turns
-// with its node (the rest direction of the segment in that node's rest
-// frame) and is as long as the chord it spans (the bend control's is the
-// mean of its two chords, so the curve's derivative is continuous there). At
-// rest, with the bend control halfway and every tangent along the segment,
-// the curve is the straight segment travelled at constant speed.
+// (model::TwistConstraint with `bendy`, which documents the curve). Two cubic
+// Hermite pieces, segment start -> bend control -> segment end, the tweak
+// control standing for the middle joint.
 #include "eval/Solvers.h"
 
 namespace rs::eval {
@@ -22,12 +18,14 @@ struct BendyCurve {
     double parameterAtLength(double share) const;
 };
 
-// Index of the first of the five bend targets of a twist constraint.
+// Index of the first of the six bend targets of a twist constraint:
+// [limb start, middle joint, limb end, tweak, tweak's space, bend control].
 inline std::size_t bendTargetsBegin(const CompiledConstraint& c) { return c.nonRolling ? 3 : 2; }
 // The curve in `world` (targets read from c.targets by bendTargetsBegin).
 BendyCurve bendyCurveOf(const CompiledConstraint& c, const std::vector<Affine>& world);
-// Checks the targets and stores the rest tangents in c.localTangents (start,
-// bend control, end); returns an error message, empty when usable.
+// Checks the targets and stores the rest data: the bend control's rest
+// direction of the segment in its frame (c.localTangents[0]) and the angle
+// between the bones (c.restKink); returns an error message, empty when usable.
 std::string prepareBendy(CompiledConstraint& c, const std::vector<Affine>& rest);
 // The place a bendy twist joint takes: the curve point at its fraction (by
 // arc length or parameter) and the rotation `twisted` (what the straight

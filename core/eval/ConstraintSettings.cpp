@@ -47,6 +47,7 @@ public:
         m_c.fraction = s.fraction;
         m_c.nonRolling = s.nonRolling;
         m_c.bendy = s.bendy;
+        m_c.bendyLower = s.lower;
         m_c.byLength = s.byLength;
     }
     void operator()(const model::VisibilityConstraint& s)

@@ -341,7 +341,7 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
     case ConstraintKind::DrivenKey:
         return checkCurveKeys(c.keys);
     case ConstraintKind::Twist: {
-        const std::size_t own = c.bendy ? t - std::min<std::size_t>(t, 5) : t; // bendy: five curve targets follow
+        const std::size_t own = c.bendy ? t - std::min<std::size_t>(t, 6) : t; // bendy: six curve targets follow
         if (c.nonRolling && own != 3) return "needs three targets (start, end, reference) to be non-rolling";
         if (!c.nonRolling && own != 2) return "needs two targets (start, end)";
         if (c.bendy)

@@ -82,7 +82,7 @@ const char* boolText(bool b) { return b ? "true" : "false"; }
 
 // The typed settings of one constraint, every field by name in declaration order
 // (model/Constraint.h): absent attribute references are `~`. The fields added
-// for bendy limbs (twist `bendy`, `by_length`; IK `volume_power`) are written
+// for bendy limbs (twist `bendy`, `lower`, `by_length`; IK `volume_power`) are written
 // only when set off their defaults, so the dumps of rigs without them are
 // byte for byte what they were.
 class SettingsWriter {
@@ -113,6 +113,7 @@ public:
         field("non_rolling", boolText(s.nonRolling));
         if (s.bendy) { // written when set, so the dumps of straight limbs stay as they were
             field("bendy", boolText(s.bendy));
+            field("lower", boolText(s.lower));
             field("by_length", boolText(s.byLength));
         }
     }

@@ -53,12 +53,9 @@ BendControls addBendControls(BuildContext& ctx, const std::vector<Vec3>& points,
         ctx.addConstraint("cns.bendy." + std::string(segment[s]) + ".orient", {group}, {blend[s]}, model::OrientConstraint{});
         const kit::Control bend = kit::addControl(ctx, key, "bend", int(s) + 1, group, frame, guides[s]);
         kit::animate(ctx, bend, kit::kTranslate | kit::kRotate); // rotation turns the curve's tangent there
-        // [curve start, start tangent, bend control, curve end, end tangent]:
-        // the upper curve leaves the shoulder along the upper bone and reaches
-        // the tweak along its rest direction there; the lower leaves the tweak
-        // and reaches the wrist along the lower bone.
-        out.curveTargets.push_back(s == 0 ? std::vector<RigNodeIndex>{blend[0], blend[0], bend.ctrl, tweak.ctrl, tweak.ctrl}
-                                          : std::vector<RigNodeIndex>{tweak.ctrl, tweak.ctrl, bend.ctrl, blend[2], blend[1]});
+        // model::TwistConstraint's bendy targets: the limb's three joints, the
+        // tweak and its space, the segment's bend control.
+        out.curveTargets.push_back({blend[0], blend[1], blend[2], tweak.ctrl, tweak.offset, bend.ctrl});
     }
     return out;
 }

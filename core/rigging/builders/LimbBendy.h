@@ -5,10 +5,11 @@
 // then ride a curve through the segment's start, its bend control and its
 // end instead of the straight bone (model::TwistConstraint's bendy curve):
 // moving a bend control bows its segment, moving the tweak moves the bend
-// point both segments share (the middle of both follows). Both tangents at
-// the elbow turn with the tweak, which is oriented halfway between the two
-// bones, so they keep their rest angle (a limb built straight stays smooth
-// there). The controls ride the blend chain, so they are shown in IK and FK.
+// point both segments share (the middle of both follows). The tangents at
+// the elbow never open wider than at rest (a limb built straight stays
+// smooth there) and turn with the tweak, which is oriented halfway between
+// the two bones. The controls ride the blend chain, so they are shown in IK
+// and FK.
 // A quadruped hind leg bends its upper two segments (the cannon has no twist
 // joints). Everything is in authored space, so a mirrored branch gets the
 // mirror image.
@@ -20,7 +21,7 @@ namespace rs::rigging::limb {
 
 struct BendControls {
     // Per segment (0 upper, 1 lower): what its twist joints' curve reads,
-    // model::TwistConstraint's five bend targets. Empty when `bendy` is off
+    // model::TwistConstraint's six bend targets. Empty when `bendy` is off
     // or the instance has no skin joints (nothing would bend).
     std::vector<std::vector<model::RigNodeIndex>> curveTargets;
     bool isOn() const { return !curveTargets.empty(); }

@@ -98,7 +98,8 @@ void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const st
             if (bendy)
                 targets.insert(targets.end(), bendCurves[s].begin(), bendCurves[s].end());
             ctx.addConstraint("cns." + key, {joint}, targets,
-                              model::TwistConstraint{.fraction = fraction, .nonRolling = upper, .bendy = bendy, .byLength = byLength});
+                              model::TwistConstraint{.fraction = fraction, .nonRolling = upper, .bendy = bendy, .lower = bendy && s == 1,
+                                                     .byLength = byLength});
         }
     }
 }
