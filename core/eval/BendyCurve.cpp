@@ -8,7 +8,7 @@ namespace rs::eval {
 
 namespace {
 
-constexpr int kSamples = 32;
+constexpr int kSamples = 24;
 
 // Cubic Hermite position and derivative on one piece, s in [0, 1].
 void hermite(const Vec3& p0, const Vec3& m0, const Vec3& p1, const Vec3& m1, double s, Vec3& position, Vec3& derivative)
@@ -20,10 +20,15 @@ void hermite(const Vec3& p0, const Vec3& m0, const Vec3& p1, const Vec3& m1, dou
 
 } // namespace
 
+void BendyCurve::setChords()
+{
+    first = glm::length(mid - start);
+    second = glm::length(end - mid);
+}
+
 void BendyCurve::at(double u, Vec3& position, Vec3& derivative) const
 {
     u = std::clamp(u, 0.0, 1.0);
-    const double first = glm::length(mid - start), second = glm::length(end - mid);
     const Vec3 midTangentScaled = midTangent * (0.5 * (first + second));
     if (u <= 0.5) {
         hermite(start, startTangent * first, mid, midTangentScaled, 2.0 * u, position, derivative);
@@ -107,6 +112,7 @@ BendyCurve bendyCurveOf(const CompiledConstraint& c, const std::vector<Affine>& 
         curve.end = at(c, world, 3);
         curve.endTangent = tweak * in;
     }
+    curve.setChords();
     return curve;
 }
 

@@ -11,10 +11,13 @@ namespace rs::eval {
 struct BendyCurve {
     Vec3 start{0.0}, mid{0.0}, end{0.0};           // positions, world
     Vec3 startTangent{0.0}, midTangent{0.0}, endTangent{0.0}; // unit directions, world
+    double first = 0.0, second = 0.0;                         // the pieces' chords (setChords)
+
+    void setChords();
 
     // Position and derivative at the curve parameter u in [0, 1] (0.5 at the bend control).
     void at(double u, Vec3& position, Vec3& derivative) const;
-    // The parameter at `share` (0..1) of the arc length (sampled, 32 steps).
+    // The parameter at `share` (0..1) of the arc length (sampled, 24 steps).
     double parameterAtLength(double share) const;
 };
 
