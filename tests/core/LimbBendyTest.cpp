@@ -413,6 +413,16 @@ TEST(LimbBendy, StompPowerSetsTheVolumeCompensation)
     EXPECT_TRUE(warned) << formatAll(clamped.rig.diagnostics);
 }
 
+TEST(LimbBendy, BendyWithoutTwistJointsWarnsThatNothingBends)
+{
+    const model::Rig rig = rigging::buildRig(bendyBiped({{"twist_upper", Value(0LL)}, {"twist_lower", Value(0LL)}}),
+                                             test::builtinTemplates());
+    int warnings = 0;
+    for (const auto& d : rig.diagnostics)
+        warnings += d.message.find("no joint rides the bend controls' curves") != std::string::npos ? 1 : 0;
+    EXPECT_EQ(warnings, 4) << formatAll(rig.diagnostics); // each arm and leg copy
+}
+
 TEST(LimbBendy, IncrementalBuildMakesWhatAFullBuildMakes)
 {
     model::GuideDocument guide = bendyBiped();

@@ -29,6 +29,10 @@ BendControls addBendControls(BuildContext& ctx, const std::vector<Vec3>& points,
     BendControls out;
     if (!ctx.optionBool("bendy") || !ctx.optionBool("do_skin"))
         return out;
+    if (ctx.optionInt("twist_upper") == 0 && ctx.optionInt("twist_lower") == 0)
+        ctx.warning("bendy: twist_upper and twist_lower are 0, so no joint rides the bend controls' curves; add twist "
+                    "joints for them to bend anything",
+                    "bendy");
     // The tweak: at the middle joint, turned halfway between the two bones.
     const Mat4 tweakFrame = halfwayFrame(frames[0], frames[1], points[1]);
     const auto tweakGroup = kit::addSetup(ctx, RigNodeKind::Group, "bendy.tweak", "tweak_space", {}, limbRoot, tweakFrame, guides[1]);
