@@ -40,11 +40,15 @@ public:
         m_c.softChannel = optionalChannel(s.soft, "soft");
         m_c.volumeChannel = optionalChannel(s.volume, "volume");
         m_c.pinChannel = optionalChannel(s.pin, "pin");
+        m_c.volumePower = std::clamp(s.volumePower, -1.0, 0.0);
     }
     void operator()(const model::TwistConstraint& s)
     {
         m_c.fraction = s.fraction;
         m_c.nonRolling = s.nonRolling;
+        m_c.bendy = s.bendy;
+        m_c.bendyLower = s.lower;
+        m_c.byLength = s.byLength;
     }
     void operator()(const model::VisibilityConstraint& s)
     {

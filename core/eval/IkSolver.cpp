@@ -132,7 +132,7 @@ void solveIk(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>&
         const Mat3 virtualBone = frameFromAxes(bone, normal);
         positions[2] = positions[1] + virtualBone * c.midOffset * (glm::length(bone) / c.lengths[3]);
     }
-    // Volume: each bone, stretched by s, is scaled across by s^(-volume / 2).
+    // Volume: each bone, stretched by s, is scaled across by s^(power * volume).
     const double volume = c.volumeChannel >= 0 ? std::clamp(pose[c.volumeChannel], 0.0, 1.0) : 0.0;
     for (std::size_t i = 0; i + 1 < joints; ++i) {
         const Vec3 bone = positions[i + 1] - positions[i];
@@ -141,7 +141,7 @@ void solveIk(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>&
         Vec3 scales(scale);
         if (volume > 0.0) {
             const double rest = c.lengths[i] * scale;
-            const double across = std::pow(std::max(glm::length(bone) / rest, 1e-6), -0.5 * volume);
+            const double across = std::pow(std::max(glm::length(bone) / rest, 1e-6), c.volumePower * volume);
             for (int k = 0; k < 3; ++k)
                 if (k != c.boneAxes[i])
                     scales[k] *= across;

@@ -2,6 +2,8 @@
 // default channels: offsets, bone frames and curve parameters are measured on
 // the rest pose at compile time and re-applied at evaluation.
 #include "eval/Solvers.h"
+
+#include "eval/BendyCurve.h"
 #include "eval/DrivenKeys.h"
 
 #include "eval/IkSolver.h"
@@ -118,6 +120,17 @@ Quat shortestArc(const Vec3& from, const Vec3& to)
     return glm::normalize(Quat(1.0 + d, axis.x, axis.y, axis.z));
 }
 
+// A twist joint at `fraction` of its segment a -> b turned to `r`, or, bendy,
+// on its curve and swung onto the curve's tangent (BendyCurve.h).
+void placeTwistJoint(const CompiledConstraint& c, std::vector<Affine>& world, const Affine& a, const Affine& b, Mat3 r)
+{
+    Vec3 position = glm::mix(a.translation, b.translation, c.fraction);
+    if (c.bendy)
+        bendJoint(c, world, a.rotation() * c.twistAxis, r, position);
+    Affine& driven = world[c.driven.front()];
+    driven = compose(r, driven.scale(), position + a.linear * c.restDelta);
+}
+
 // The roll of targets[0] about its bone relative to targets[2], and the
 // swing-only frame it is measured from (model::TwistConstraint, non-rolling).
 void solveNonRollingTwist(const CompiledConstraint& c, std::vector<Affine>& world)
@@ -132,10 +145,8 @@ void solveNonRollingTwist(const CompiledConstraint& c, std::vector<Affine>& worl
     if (roll.w < 0.0)
         roll = -roll;
     const double angle = 2.0 * std::atan2(glm::dot(Vec3(roll.x, roll.y, roll.z), c.twistAxis), roll.w);
-    const Mat3 r = glm::mat3_cast(qr * swung * glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
-    Affine& driven = world[c.driven.front()];
-    const Vec3 position = glm::mix(a.translation, b.translation, c.fraction) + a.linear * c.restDelta;
-    driven = compose(r, driven.scale(), position);
+    Mat3 r = glm::mat3_cast(qr * swung * glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
+    placeTwistJoint(c, world, a, b, r);
 }
 
 void solveTwist(const CompiledConstraint& c, EvalState& state)
@@ -163,10 +174,8 @@ void solveTwist(const CompiledConstraint& c, EvalState& state)
         angle = 2.0 * std::atan2(along, delta.w);
         state.twistAngles[c.slot] = angle;
     }
-    const Mat3 r = ra * glm::mat3_cast(glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
-    Affine& driven = world[c.driven.front()];
-    const Vec3 position = glm::mix(a.translation, b.translation, c.fraction) + a.linear * c.restDelta;
-    driven = compose(r, driven.scale(), position);
+    Mat3 r = ra * glm::mat3_cast(glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
+    placeTwistJoint(c, world, a, b, r);
 }
 
 void solveSpace(const CompiledConstraint& c, const Pose& pose, std::vector<Affine>& world)
@@ -336,8 +345,12 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
     case ConstraintKind::DrivenKey:
         return checkCurveKeys(c.keys);
     case ConstraintKind::Twist: {
-        if (c.nonRolling && t != 3) return "needs three targets (start, end, reference) to be non-rolling";
-        if (!c.nonRolling && t != 2) return "needs two targets (start, end)";
+        const std::size_t own = c.bendy ? t - std::min<std::size_t>(t, 6) : t; // bendy: six curve targets follow
+        if (c.nonRolling && own != 3) return "needs three targets (start, end, reference) to be non-rolling";
+        if (!c.nonRolling && own != 2) return "needs two targets (start, end)";
+        if (c.bendy)
+            if (std::string error = prepareBendy(c, rest); !error.empty())
+                return error;
         if (c.nonRolling)
             c.restFromReference = glm::conjugate(rotationOf(rest[c.targets[2]])) * rotationOf(rest[c.targets[0]]);
         const Affine& a = rest[c.targets[0]];
@@ -348,8 +361,13 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         const Vec3 bone = b.translation - a.translation;
         if (glm::length(bone) < 1e-9) return "its two targets are at the same place";
         c.twistAxis = glm::normalize(glm::transpose(a.rotation()) * bone);
-        c.restDelta = glm::transpose(a.rotation()) * (d.translation - glm::mix(a.translation, b.translation, c.fraction)) /
-                      a.scale().x;
+        Vec3 restPlace = glm::mix(a.translation, b.translation, c.fraction);
+        if (c.bendy) { // where the curve puts it at rest (the straight segment's point when the bend control is halfway)
+            const BendyCurve curve = bendyCurveOf(c, rest);
+            Vec3 derivative;
+            curve.at(c.byLength ? curve.parameterAtLength(c.fraction) : c.fraction, restPlace, derivative);
+        }
+        c.restDelta = glm::transpose(a.rotation()) * (d.translation - restPlace) / a.scale().x;
         c.offsets[0].linear = glm::transpose(a.rotation()) * d.rotation();
         return {};
     }

@@ -26,6 +26,9 @@ struct CompiledConstraint {
     bool scaleStretch = false;                               // spline: stretch by scale
     double fraction = 0;               // twist
     bool nonRolling = false;           // twist: the start's roll relative to targets[2]
+    bool bendy = false, bendyLower = false, byLength = true; // twist: rides the curve of its last six targets (BendyCurve.h)
+    double restKink = 0.0;             // bendy twist: the angle between the two bones at rest, radians
+    double volumePower = -0.5;         // IK: the volume compensation's power
     bool showAbove = false;            // visibility: shown while value > threshold, else while value < threshold
     double threshold = 0;
     bool orientOnly = false;           // space

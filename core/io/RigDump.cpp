@@ -81,7 +81,10 @@ std::string number(double v)
 const char* boolText(bool b) { return b ? "true" : "false"; }
 
 // The typed settings of one constraint, every field by name in declaration order
-// (model/Constraint.h): absent attribute references are `~`.
+// (model/Constraint.h): absent attribute references are `~`. The fields added
+// for bendy limbs (twist `bendy`, `lower`, `by_length`; IK `volume_power`) are written
+// only when set off their defaults, so the dumps of rigs without them are
+// byte for byte what they were.
 class SettingsWriter {
 public:
     SettingsWriter(std::ostream& out, const model::Rig& rig) : m_out(out), m_rig(rig) {}
@@ -101,11 +104,18 @@ public:
         field("soft", attributeText(m_rig, s.soft));
         field("volume", attributeText(m_rig, s.volume));
         field("pin", attributeText(m_rig, s.pin));
+        if (s.volumePower != model::IkConstraint{}.volumePower) // written when set, so older dumps stay as they were
+            field("volume_power", number(s.volumePower));
     }
     void operator()(const model::TwistConstraint& s)
     {
         field("fraction", number(s.fraction));
         field("non_rolling", boolText(s.nonRolling));
+        if (s.bendy) { // written when set, so the dumps of straight limbs stay as they were
+            field("bendy", boolText(s.bendy));
+            field("lower", boolText(s.lower));
+            field("by_length", boolText(s.byLength));
+        }
     }
     void operator()(const model::VisibilityConstraint& s)
     {

@@ -98,13 +98,17 @@ struct IkConstraint {
     // (hard IK).
     std::optional<AttributeRef> soft{};
     // Volume: a bone stretched by s (its length over its rest length) is
-    // scaled across (its local Y and Z) by s^(-volume / 2), so a fully
-    // volume-preserving limb keeps its volume: 1 / sqrt(s). None: 0.
+    // scaled across (its local Y and Z) by s^(volumePower * volume), so a
+    // fully volume-preserving limb with the default power keeps its volume:
+    // 1 / sqrt(s). None: 0.
     std::optional<AttributeRef> volume{};
     // Pin: the middle joint moves to targets[2] by this share (1: locked on
     // the pin, both bones then reaching from it); needs the third target.
     // None: 0.
     std::optional<AttributeRef> pin{};
+    // The power of the volume compensation (Mikan's stomp_power), in [-1, 0]:
+    // -0.5 is 1 / sqrt(s), -1 is 1 / s, 0 keeps the thickness. Clamped.
+    double volumePower = -0.5;
     bool operator==(const IkConstraint&) const = default;
 };
 
@@ -124,9 +128,32 @@ struct IkConstraint {
 // and one at the end (fraction 1) rolls fully, like the start joint itself:
 // no candy wrapper at the shoulder. The swing is undefined when the bone
 // points straight opposite its rest direction relative to the reference.
+//
+// Bendy (a limb's bend controls): six more targets follow the two or three
+// above: [limb start, middle joint, limb end, tweak, tweak's space, bend
+// control] (shoulder, elbow, wrist; the tweak control at the elbow and its
+// offset parent). The joint then rides a curve instead of the straight
+// segment: two cubic Hermite pieces through the segment's start, its bend
+// control and its end, the tweak standing for the middle joint (the upper
+// segment ends there, the lower starts there; `lower` says which). Tangents:
+// at the limb's start and end along the bone; at the bend control along its
+// rest direction of the segment, turned with it; at the tweak, the two bones'
+// directions each turned towards the other until the angle between them is
+// no more than at rest (so the curve is smooth through an elbow bent past its
+// rest angle, and follows the bones when straighter), then turned by the
+// tweak's own rotation in its space. Each tangent is as long as the chord it
+// spans. Everything but the tweak's and the bend control's own channels comes
+// from joint positions, so the curve does not depend on the bones' roll. At
+// rest the curve is the straight segment travelled at constant speed and
+// nothing moves. The joint sits at `fraction` of the curve by parameter or,
+// with byLength, by arc length; it keeps its twist (above), swung by the
+// shortest arc from its bone onto the curve's tangent.
 struct TwistConstraint {
     double fraction = 0.0; // 0 at targets[0], 1 at targets[1]
     bool nonRolling = false; // the start's roll relative to targets[2] (above)
+    bool bendy = false; // rides the curve of the six last targets (above)
+    bool lower = false; // bendy: the lower segment (from the tweak), else the upper (to it)
+    bool byLength = true; // bendy: `fraction` of the curve's arc length, else of its parameter
     bool operator==(const TwistConstraint&) const = default;
 };
 

@@ -8,6 +8,7 @@
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
+#include "rigging/builders/LimbBendy.h"
 #include "rigging/builders/LimbParts.h"
 
 #include <algorithm>
@@ -247,7 +248,7 @@ void LimbBuilder::generate(BuildContext& ctx) const
     const AttributeRef stretch = ctx.addAttribute(ikCtrl, "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
     const AttributeRef soft = ctx.addAttribute(ikCtrl, "soft_ik", ctx.optionFloat("soft_ik"), 0.0, 1.0);
     const AttributeRef volume = ctx.addAttribute(ikCtrl, "volume", ctx.optionBool("volume") ? 1.0 : 0.0, 0.0, 1.0);
-    model::IkConstraint solver{.stretch = stretch, .soft = soft, .volume = volume};
+    model::IkConstraint solver{.stretch = stretch, .soft = soft, .volume = volume, .volumePower = ctx.optionFloat("stomp_power")};
     std::vector<RigNodeIndex> ikTargets = {effector, poleCtrl};
     std::vector<RigNodeIndex> ikShown = {ikCtrl, poleCtrl};
     if (pinCtrl != model::kNoNode) {
@@ -281,7 +282,8 @@ void LimbBuilder::generate(BuildContext& ctx) const
         kit::addSkin(ctx, "ball", "toe", {}, end, frames[k], g.end);
     limb::addBlendVisibility(ctx, weight, fkShown, ikShown);
     if (ctx.optionBool("do_skin")) {
-        limb::addTwistJoints(ctx, g.points, frames, g.limb, blend, skin, limbGroup);
+        const limb::BendControls bend = limb::addBendControls(ctx, g.points, frames, g.limb, blend, limbGroup);
+        limb::addTwistJoints(ctx, g.points, frames, g.limb, blend, skin, limbGroup, bend.curveTargets);
         if (ctx.optionBool("blend_joints"))
             for (std::size_t i = 1; i < k; ++i) {
                 const auto joint = kit::addSkin(ctx, "mid." + std::to_string(i - 1), "mid", int(i), skin[i - 1], frames[i], g.limb[i]);

@@ -186,8 +186,10 @@ void addBlendVisibility(BuildContext& ctx, const model::AttributeRef& blend, con
 
 void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const std::vector<Mat4>& frames,
                     const std::vector<model::JointId>& guides, const std::vector<RigNodeIndex>& blend,
-                    const std::vector<RigNodeIndex>& skin, RigNodeIndex limbRoot)
+                    const std::vector<RigNodeIndex>& skin, RigNodeIndex limbRoot,
+                    const std::vector<std::vector<RigNodeIndex>>& bendCurves)
 {
+    const bool byLength = bendCurves.empty() || ctx.optionString("smooth_type") != "parametric";
     const bool nonRolling = ctx.optionBool("non_rolling");
     if (nonRolling && skin[0] != model::kNoNode) // the upper segment's own skin joint keeps the parent's roll
         ctx.addConstraint("cns.up.start", {skin[0]}, {blend[0], blend[1], limbRoot},
@@ -206,7 +208,12 @@ void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const st
             std::vector<RigNodeIndex> targets = {blend[s], blend[s + 1]};
             if (upper)
                 targets.push_back(limbRoot);
-            ctx.addConstraint("cns." + key, {joint}, targets, model::TwistConstraint{.fraction = fraction, .nonRolling = upper});
+            const bool bendy = s < bendCurves.size();
+            if (bendy)
+                targets.insert(targets.end(), bendCurves[s].begin(), bendCurves[s].end());
+            ctx.addConstraint("cns." + key, {joint}, targets,
+                              model::TwistConstraint{.fraction = fraction, .nonRolling = upper, .bendy = bendy, .lower = bendy && s == 1,
+                                                     .byLength = byLength});
         }
     }
 }

@@ -69,9 +69,12 @@ void addBlendVisibility(BuildContext& ctx, const model::AttributeRef& blend, con
 // `non_rolling` the upper segment's skin joint `upperSkin` does not roll and
 // the upper twist joints share the upper bone's roll relative to `limbRoot`
 // linearly (0 at the shoulder or hip, all of it at the elbow or knee).
+// `bendCurves` (LimbBendy.h, per segment; empty: straight) makes them ride
+// their segment's bendy curve, spaced by `smooth_type`.
 void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const std::vector<Mat4>& frames,
                     const std::vector<model::JointId>& guides, const std::vector<model::RigNodeIndex>& blend,
-                    const std::vector<model::RigNodeIndex>& skin, model::RigNodeIndex limbRoot);
+                    const std::vector<model::RigNodeIndex>& skin, model::RigNodeIndex limbRoot,
+                    const std::vector<std::vector<model::RigNodeIndex>>& bendCurves = {});
 
 // Auto-clavicle (arms): hidden groups under `hook` at the clavicle's frame.
 // `follow` (what the clavicle control hangs under) turns towards `aim` (aimed
