@@ -10,6 +10,9 @@
 
 namespace rs::io {
 
+// The key a guide file starts with, its value the schema version.
+inline constexpr const char* kGuideFormatKey = "rigsmith_guide";
+
 // Relative `models:` paths are resolved against the file's folder (an older
 // guide's `reference_model:` is read as the first of its models).
 Result<model::GuideDocument> readGuideFile(const std::string& path);
