@@ -210,6 +210,34 @@ TEST(Evaluator, TailSplineOpenedInTheEditorShowsMikansNameAsTheOption)
     EXPECT_FALSE(s.rig()->findPath(at("ctrls.spline.5")));
 }
 
+// Guides dragged onto each other leave no curve to spread the bones on: the
+// build warns, spreads them by guide joint and makes a rig that evaluates
+// (review finding: it indexed an empty curve).
+TEST(Evaluator, TailSplineBonesOnCoincidentGuidesWarnAndBuild)
+{
+    for (const char* mode : {"equal", "parametric", "cvs"}) {
+        model::GuideDocument onTop = curledTail({{"tweakers", Value(std::string("unchained"))}, {"bones", Value(4LL)},
+                                                 {"bone_length", Value(std::string(mode))}});
+        model::TemplateInstance& tail = *onTop.instance(onTop.instances().front().id);
+        tail.joints[1].local.translate = Vec3(0.0); // the second guide dragged onto the first
+        const model::Rig rig = rigging::buildRig(onTop, test::builtinTemplates());
+        EXPECT_FALSE(hasErrors(rig.diagnostics)) << mode << ": " << formatAll(rig.diagnostics);
+        EXPECT_TRUE(rig.findPath(at("skin.3"))) << mode << ": four bones";
+        if (std::string(mode) != "cvs")
+            EXPECT_NE(formatAll(rig.diagnostics).find("two points at one place"), std::string::npos)
+                << mode << ": " << formatAll(rig.diagnostics);
+        // Every guide at one place: no curve, no crash.
+        model::GuideDocument point = onTop;
+        for (std::size_t j = 1; j < point.instance(tail.id)->joints.size(); ++j)
+            point.instance(tail.id)->joints[j].local.translate = Vec3(0.0);
+        const model::Rig collapsed = rigging::buildRig(point, test::builtinTemplates());
+        EXPECT_TRUE(collapsed.findPath(at("skin.0"))) << mode << ": " << formatAll(collapsed.diagnostics);
+        PosedRig posed(onTop);
+        ASSERT_TRUE(posed.ok()) << mode;
+        posed.evaluate(posed.defaults());
+    }
+}
+
 TEST(ChainOrient, SplineOptionsMirrorExactlyOnABranch)
 {
     Options options{{"bones", Value(9LL)},

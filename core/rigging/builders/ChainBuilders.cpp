@@ -98,20 +98,27 @@ private:
         const std::string mode = ctx.optionString("bone_length");
         std::vector<Vec3> at;
         std::vector<double> guideAt; // where each bone is along the guides, in guide joints (for its source and roll)
-        if (mode == "cvs") {
-            for (int j = 0; j < count; ++j) {
-                const double g = double(points.size() - 1) * j / (count - 1);
-                const std::size_t k = std::min(std::size_t(g), points.size() - 2);
-                at.push_back(glm::mix(points[k], points[k + 1], g - double(k)));
-                guideAt.push_back(g);
-            }
-        } else {
+        if (mode != "cvs") {
             std::vector<eval::Affine> targets;
             for (RigNodeIndex node : through)
                 targets.push_back(eval::Affine::fromMatrix(ctx.nodeWorld(node)));
             at = eval::restCurvePoints(targets, count, mode == "equal");
             for (const Vec3& p : at) // the nearest guide segment's start
                 guideAt.push_back(double(nearestSegment(points, p)));
+            if (at.size() != std::size_t(count)) { // no curve: two of its points at one place
+                ctx.warning("the curve has two points at one place, so the bones are spread by guide joint (as with "
+                            "bone_length: cvs) until they are apart", "bone_length");
+                at.clear();
+                guideAt.clear();
+            }
+        }
+        if (at.empty()) { // cvs: along the guide chain, evenly by guide joint
+            for (int j = 0; j < count; ++j) {
+                const double g = double(points.size() - 1) * j / (count - 1);
+                const std::size_t k = std::min(std::size_t(g), points.size() - 2);
+                at.push_back(glm::mix(points[k], points[k + 1], g - double(k)));
+                guideAt.push_back(g);
+            }
         }
         std::vector<Mat4> standIns;
         for (std::size_t j = 0; j < at.size(); ++j) {

@@ -92,6 +92,8 @@ std::vector<RigNodeIndex> addDrivenChain(BuildContext& ctx, const std::vector<Jo
                                          bool fk, const std::vector<JointId>& sources)
 {
     std::vector<RigNodeIndex> driven, carriers;
+    if (frames.empty())
+        return driven;
     RigNodeIndex parent = ctx.hookNode();
     for (std::size_t i = 0; i < frames.size(); ++i) {
         const std::string index = std::to_string(i);
