@@ -79,6 +79,12 @@ bool checkAddNodes(YamlReader& r, const YAML::Node& options)
 {
     const YAML::Node v = options["add_nodes"];
     auto items = v && v.IsScalar() ? parseFlowList(v.Scalar()) : Result<std::vector<std::string>>(std::vector<std::string>{});
+    if (v && v.IsSequence()) { // written unquoted: [inf, pose]
+        std::vector<std::string> names;
+        for (const auto& e : v)
+            names.push_back(e.IsScalar() ? e.Scalar() : std::string());
+        items = Result<std::vector<std::string>>(std::move(names));
+    }
     const auto problems = items.ok() ? templates::addNodesProblems(*items) : std::vector<std::string>{"is no list"};
     for (const std::string& problem : problems)
         r.error(v, "option add_nodes " + problem);

@@ -260,6 +260,19 @@ bool YamlReader::expectSequence(const YAML::Node& node, const std::string& what)
 std::optional<Value> readValue(YamlReader& r, const YAML::Node& node, const std::string& what)
 {
     if (node.IsSequence()) {
+        // A list of names (branches: [L, R], add_nodes: [inf, pose]) is the
+        // text its quoted form gives ("[L, R]"); three numbers are a vector.
+        bool names = node.size() > 0;
+        for (const auto& e : node) { // `inf` and `nan` are names here (a node called inf), not numbers
+            const auto number = e.IsScalar() ? parseNumber(e.Scalar()) : std::nullopt;
+            names = names && e.IsScalar() && !e.Scalar().empty() && !(number && std::isfinite(*number));
+        }
+        if (names) {
+            std::string text = "[";
+            for (std::size_t i = 0; i < node.size(); ++i)
+                text += (i ? ", " : "") + node[i].Scalar();
+            return Value(text + "]");
+        }
         if (auto v = r.vec3(node, what))
             return Value(*v);
         return std::nullopt;

@@ -183,6 +183,16 @@ TEST(CoreTemplates, BadAddNodesAreRefusedWhereTheyAreWritten)
     EXPECT_NE(all.find("bad.yml:9:18: error: option add_nodes '2nd' is no node name"), std::string::npos) << all;
     EXPECT_NE(all.find("bad.yml:9:18: error: option add_nodes names 'inf' twice"), std::string::npos) << all;
     EXPECT_EQ(io::readGuideText(std::string(guide).replace(guide.find("2nd, inf"), 8, "c, dyn"), "good.yml").ok(), true);
+    // Written unquoted (a YAML list), the same.
+    std::string plain = guide;
+    plain.replace(plain.find("\"[inf, 2nd, inf]\""), 17, "[inf, 2nd, inf]");
+    auto plainRead = io::readGuideText(plain, "plain.yml");
+    ASSERT_FALSE(plainRead.ok());
+    EXPECT_NE(formatAll(plainRead.diagnostics()).find("plain.yml:9:18: error: option add_nodes '2nd' is no node name"),
+              std::string::npos) << formatAll(plainRead.diagnostics());
+    auto plainGood = io::readGuideText(std::string(plain).replace(plain.find("2nd, inf"), 8, "c, dyn"), "plain-good.yml");
+    ASSERT_TRUE(plainGood.ok()) << formatAll(plainGood.diagnostics());
+    EXPECT_EQ(plainGood->instances().front().options.at("add_nodes"), Value(std::string("[inf, c, dyn]")));
 
     // Set another way (an edit, the API): the build refuses it, naming the option.
     for (const std::string bad : {"[1st]", "[inf, inf]", "[root]", "[c, dyn, c]", "[in-f]", "{a: 1}"}) {

@@ -72,6 +72,28 @@ TEST(GuideFile, ReportsMalformedYamlAndWrongTypes)
     EXPECT_NE(other.diagnostics()[0].message.find("not a Rigsmith guide"), std::string::npos);
 }
 
+// Mikan's manifests and hand-written guides write lists of names unquoted:
+// they load as the quoted text the editor writes.
+TEST(GuideFile, AnUnquotedListOfNamesLoadsAsItsQuotedText)
+{
+    const std::string quoted = test::readText(test::samplePath("vehicle"));
+    std::string plain = quoted;
+    for (std::size_t at = plain.find("\"[L, R]\""); at != std::string::npos; at = plain.find("\"[L, R]\""))
+        plain.replace(at, 8, "[L, R]");
+    ASSERT_NE(plain, quoted);
+    auto a = io::readGuideText(quoted, "quoted.yml");
+    auto b = io::readGuideText(plain, "plain.yml");
+    ASSERT_TRUE(a) << formatAll(a.diagnostics());
+    ASSERT_TRUE(b) << formatAll(b.diagnostics());
+    EXPECT_EQ(*a, *b);
+    EXPECT_EQ(io::writeGuideText(*b), io::writeGuideText(*a)) << "written back quoted";
+    EXPECT_NE(io::writeGuideText(*b).find("branches: \"[L, R]\""), std::string::npos);
+    // Three numbers stay a vector; a list mixing names and numbers is refused at its line.
+    auto mixed = io::readGuideText(std::string(quoted).replace(quoted.find("\"[L, R]\""), 8, "[L, 2]"), "mixed.yml");
+    EXPECT_FALSE(mixed);
+    EXPECT_NE(formatAll(mixed.diagnostics()).find("mixed.yml:"), std::string::npos) << formatAll(mixed.diagnostics());
+}
+
 TEST(GuideFile, FailedSaveLeavesThePreviousFileUntouched)
 {
     const std::string path = test::temporaryPath("keep.yml");
