@@ -16,27 +16,17 @@ namespace {
 
 using test::PosedRig;
 
-model::TemplateInstance add(model::GuideDocument& doc, const std::string& templateId, model::JointId under,
-                            const std::map<std::string, Value>& options = {})
-{
-    auto made = rigging::makeInstance(doc, test::builtinTemplates(), templateId, under, options);
-    EXPECT_TRUE(made.ok()) << formatAll(made.diagnostics());
-    model::TemplateInstance instance = made.take();
-    doc.insertInstance(instance, doc.instances().size());
-    return instance;
-}
-
 // A bent chain of four guide joints (three bones) with a prop hanging from its tip.
 model::GuideDocument bentBones()
 {
     model::GuideDocument doc;
-    model::TemplateInstance bones = add(doc, "core.bones", model::kNoId, {{"number", Value(4LL)}});
+    model::TemplateInstance bones = test::addInstance(doc, "core.bones", model::kNoId, {{"number", Value(4LL)}});
     model::TemplateInstance* b = doc.instance(bones.id);
     b->joints[0].local.translate = Vec3(0.0, 1.0, 0.0);
     b->joints[1].local.translate = Vec3(0.3, 0.0, 0.0);
     b->joints[2].local.translate = Vec3(0.0, 0.2, 0.1);
     b->joints[3].local.translate = Vec3(0.0, 0.0, 0.25);
-    add(doc, "core.xform", b->joints.back().id);
+    test::addInstance(doc, "core.xform", b->joints.back().id);
     return doc;
 }
 
@@ -74,7 +64,7 @@ TEST(CoreTemplates, BonesAimEachSegmentAtTheNextGuideJointAndTheTipIsAHook)
 TEST(CoreTemplates, BonesRefuseASingleGuideJoint)
 {
     model::GuideDocument doc;
-    model::TemplateInstance bones = add(doc, "core.bones", model::kNoId);
+    model::TemplateInstance bones = test::addInstance(doc, "core.bones", model::kNoId);
     doc.instance(bones.id)->joints.resize(1);
     const model::Rig rig = rigging::buildRig(doc, test::builtinTemplates());
     bool reported = false;
@@ -87,10 +77,10 @@ TEST(CoreTemplates, BonesRefuseASingleGuideJoint)
 TEST(CoreTemplates, GroupMakesNoControllerOrSkinJointAndCarriesWhatHangsUnderIt)
 {
     model::GuideDocument doc;
-    model::TemplateInstance root = add(doc, "core.xform", model::kNoId);
-    model::TemplateInstance group = add(doc, "core.group", root.joints.front().id);
+    model::TemplateInstance root = test::addInstance(doc, "core.xform", model::kNoId);
+    model::TemplateInstance group = test::addInstance(doc, "core.group", root.joints.front().id);
     doc.instance(group.id)->joints.front().local.translate = Vec3(0.5, 0.0, 0.0);
-    model::TemplateInstance part = add(doc, "core.xform", group.joints.front().id);
+    model::TemplateInstance part = test::addInstance(doc, "core.xform", group.joints.front().id);
     doc.instance(part.id)->joints.front().local.translate = Vec3(0.0, 0.4, 0.0);
     PosedRig r(doc);
     ASSERT_TRUE(r.ok());
@@ -113,9 +103,9 @@ TEST(CoreTemplates, GroupMakesNoControllerOrSkinJointAndCarriesWhatHangsUnderIt)
 TEST(CoreTemplates, XformDoOptionsLockWhatAnimatorsDoNotTouchAndSetTheRotateOrder)
 {
     model::GuideDocument doc;
-    const model::TemplateInstance plain = add(doc, "core.xform", model::kNoId);
+    const model::TemplateInstance plain = test::addInstance(doc, "core.xform", model::kNoId);
     const model::TemplateInstance wheelCap =
-        add(doc, "core.xform", plain.joints.front().id, {{"do_scale", Value(false)}, {"do_translate", Value(false)}, {"rotate_order", Value(std::string("zxy"))}});
+        test::addInstance(doc, "core.xform", plain.joints.front().id, {{"do_scale", Value(false)}, {"do_translate", Value(false)}, {"rotate_order", Value(std::string("zxy"))}});
     PosedRig r(doc);
     ASSERT_TRUE(r.ok());
     const model::ChannelSettings& free = r.rig.nodes[r.index(plain.name + "::ctrls.xform")].channels;

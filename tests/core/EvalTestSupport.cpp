@@ -10,6 +10,16 @@
 
 namespace rs::test {
 
+model::TemplateInstance addInstance(model::GuideDocument& doc, const std::string& templateId, model::JointId under,
+                                    const std::map<std::string, Value>& options)
+{
+    auto made = rigging::makeInstance(doc, builtinTemplates(), templateId, under, options);
+    EXPECT_TRUE(made.ok()) << formatAll(made.diagnostics());
+    model::TemplateInstance instance = made.take();
+    doc.insertInstance(instance, doc.instances().size());
+    return instance;
+}
+
 PosedRig::PosedRig(const std::string& sample) : PosedRig(loadSample(sample)) {}
 
 PosedRig::PosedRig(const model::GuideDocument& guide) : rig(rigging::buildRig(guide, builtinTemplates()))

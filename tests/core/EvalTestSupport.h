@@ -5,10 +5,17 @@
 #include "eval/Pickwalk.h"
 #include "eval/PoseTools.h"
 
+#include <map>
 #include <memory>
 #include <string>
 
 namespace rs::test {
+
+// A new instance of `templateId` (its default guide, `options`) under the
+// guide joint `under` (kNoId: top level), appended to `doc`; fails the test
+// when the template refuses it.
+model::TemplateInstance addInstance(model::GuideDocument& doc, const std::string& templateId, model::JointId under,
+                                    const std::map<std::string, Value>& options = {});
 
 class PosedRig {
 public:

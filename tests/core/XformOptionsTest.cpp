@@ -17,23 +17,13 @@ namespace {
 
 using test::PosedRig;
 
-model::TemplateInstance add(model::GuideDocument& doc, const std::string& templateId, model::JointId under,
-                            const std::map<std::string, Value>& options = {})
-{
-    auto made = rigging::makeInstance(doc, test::builtinTemplates(), templateId, under, options);
-    EXPECT_TRUE(made.ok()) << formatAll(made.diagnostics());
-    model::TemplateInstance instance = made.take();
-    doc.insertInstance(instance, doc.instances().size());
-    return instance;
-}
-
 // A prop part off the mirror plane, turned, with [L, R] branches.
 model::GuideDocument turnedPart(const std::map<std::string, Value>& options)
 {
     model::GuideDocument doc;
     std::map<std::string, Value> all = options;
     all["branches"] = Value(std::string("[L, R]"));
-    const model::TemplateInstance part = add(doc, "core.xform", model::kNoId, all);
+    const model::TemplateInstance part = test::addInstance(doc, "core.xform", model::kNoId, all);
     auto& joint = doc.instance(part.id)->joints.front();
     joint.local.translate = Vec3(0.4, 1.1, 0.2);
     joint.local.rotateDegrees = Vec3(20.0, 35.0, -10.0);
@@ -51,11 +41,11 @@ bool exports(const model::Rig& rig, const std::string& id)
 TEST(CoreTemplates, XformJointOptionMakesAJointTheExportCarriesWithoutDoSkin)
 {
     model::GuideDocument doc;
-    const model::TemplateInstance root = add(doc, "core.xform", model::kNoId);
-    const model::TemplateInstance plain = add(doc, "core.group", root.joints.front().id);
-    const model::TemplateInstance bone = add(doc, "core.group", root.joints.front().id, {{"joint", Value(true)}});
+    const model::TemplateInstance root = test::addInstance(doc, "core.xform", model::kNoId);
+    const model::TemplateInstance plain = test::addInstance(doc, "core.group", root.joints.front().id);
+    const model::TemplateInstance bone = test::addInstance(doc, "core.group", root.joints.front().id, {{"joint", Value(true)}});
     const model::TemplateInstance locator =
-        add(doc, "core.xform", root.joints.front().id, {{"do_skin", Value(false)}, {"joint", Value(true)}});
+        test::addInstance(doc, "core.xform", root.joints.front().id, {{"do_skin", Value(false)}, {"joint", Value(true)}});
     PosedRig r(doc);
     ASSERT_TRUE(r.ok());
     EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
