@@ -236,6 +236,34 @@ TEST(SplineTweak, ChainedTweakersRebuildIncrementallyAsAFullBuild)
     test::buildAndCompare(guide, cache, "a guide joint moved");
 }
 
+// A carry that cannot be evaluated is refused when the rig compiles, naming
+// the constraint: a carried node with no channels, pivots not one per node.
+TEST(SplineTweak, ACarryOfANodeWithoutChannelsIsACompileError)
+{
+    model::Rig rig = rigging::buildRig(curledTail(tail("chained")), test::builtinTemplates());
+    ASSERT_TRUE(eval::RigProgram::compile(rig).ok());
+    model::RigConstraint* carry = nullptr;
+    for (model::RigConstraint& c : rig.constraints)
+        if (c.path == at("cns.carry.3"))
+            carry = &c;
+    ASSERT_NE(carry, nullptr);
+    auto& settings = std::get<model::CarryConstraint>(carry->settings);
+    ASSERT_EQ(settings.carried.size(), 3u) << "tweakers 0, 1 and 2";
+    model::Rig groupCarried = rig;
+    std::get<model::CarryConstraint>(groupCarried.constraints[std::size_t(carry - rig.constraints.data())].settings).carried[1] =
+        *rig.findPath(at("mch.curve.1"));
+    const auto refused = eval::RigProgram::compile(groupCarried);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(formatAll(refused.diagnostics()).find("constraint '" + at("cns.carry.3") + "': node '" + at("mch.curve.1") +
+                                                    "' has no transform channels to carry"), std::string::npos)
+        << formatAll(refused.diagnostics());
+    settings.carried.pop_back();
+    const auto mismatched = eval::RigProgram::compile(rig);
+    ASSERT_FALSE(mismatched.ok());
+    EXPECT_NE(formatAll(mismatched.diagnostics()).find("carries 2 nodes with 3 pivots"), std::string::npos)
+        << formatAll(mismatched.diagnostics());
+}
+
 TEST(SplineTweak, PickwalkGoesDownTheChainedTweakers)
 {
     const model::Rig chained = rigging::buildRig(curledTail(tail("chained")), test::builtinTemplates());
