@@ -5,6 +5,7 @@
 #include "EvalTestSupport.h"
 #include "SplineTestSupport.h"
 #include "core/IncrementalCheck.h"
+#include "io/GuideFile.h"
 
 #include <gtest/gtest.h>
 
@@ -122,6 +123,15 @@ TEST(SplineControlNodes, BadControlOptionsAreRefusedNamingTheOption)
         EXPECT_NE(formatAll(rig.diagnostics).find("option 'add_nodes'"), std::string::npos) << bad << ": " << formatAll(rig.diagnostics);
         EXPECT_FALSE(rig.findPath(at("ctrls.spline.0"))) << "no half-built tail";
     }
+    // In a guide file: at the option's line.
+    const std::string guide = "rigsmith_guide: 3\nname: g\ninstances:\n  - id: 1\n    template: rig.spline\n    name: tail\n"
+                              "    options:\n      add_nodes: \"[inf, 2nd]\"\n      tweakers: chained\n    joints:\n"
+                              "      - {id: 1, t: [0, 0, 0]}\n      - {id: 2, parent: 1, t: [0, 0, -0.2]}\n"
+                              "      - {id: 3, parent: 2, t: [0, 0, -0.2]}\n";
+    const auto read = io::readGuideText(guide, "tail.yml");
+    ASSERT_FALSE(read.ok());
+    EXPECT_NE(formatAll(read.diagnostics()).find("tail.yml:8:18: error: option add_nodes '2nd' is no node name"), std::string::npos)
+        << formatAll(read.diagnostics());
     // A rotate order that is none of the enum's: said so, and the default used (as for every enum option).
     const model::Rig order = rigging::buildRig(curledTail({{"rotate_order", Value(std::string("xxz"))}}), test::builtinTemplates());
     EXPECT_NE(formatAll(order.diagnostics).find("option 'rotate_order' = 'xxz' is not one of its labels"), std::string::npos)
