@@ -74,6 +74,20 @@ TEST(SplineControlNodes, PoseGroupAndAddedNodesSitAroundEachControlAndChangeNoMo
                                        stacked.state().worldMatrix(stacked.index(node.path))), 1e-9) << node.path;
 }
 
+// flip_orient: the curve follows a group with the mirror frame under each
+// controller, and the stretch attribute stays on the first controller.
+TEST(SplineControlNodes, FlipOrientKeepsTheStretchAttributeOnTheFirstController)
+{
+    PosedRig r(curledTail({{"flip_orient", Value(true)}, {"branches", Value(std::string("[L, R]"))}}));
+    ASSERT_TRUE(r.ok());
+    for (const char* side : {"L", "R"}) {
+        const std::string first = std::string("tail.") + side + "::ctrls.spline.0";
+        const model::RigNode& follow = test::node(r.rig, std::string("tail.") + side + "::mch.follow.spline.0");
+        EXPECT_EQ(r.rig.nodes[follow.parent].path, first);
+        r.channel(first, "stretch"); // fails the test when it is not there
+    }
+}
+
 TEST(SplineControlNodes, ParentScaleOffKeepsTheNextSplineControllersSize)
 {
     for (const bool parentScale : {true, false}) {

@@ -62,7 +62,7 @@ public:
         const ControlNodeOptions stacks = readControlNodes(ctx).value_or(ControlNodeOptions{});
         const spline::Controls controls = spline::addControls(ctx, chain, points, frames, static_cast<int>(ctx.optionInt("controls")),
                                                               ctx.hookNode(), ctx.optionBool("uniform_ik"), &stacks);
-        const model::AttributeRef stretch = ctx.addAttribute(controls.nodes.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+        const model::AttributeRef stretch = ctx.addAttribute(controls.controllers.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
         // With tweakers the curve goes through a point on every guide joint
         // (following the controllers around it), each with a control on it;
         // chained, each tweaker also carries the ones after it.

@@ -69,6 +69,7 @@ Controls addControls(BuildContext& ctx, const std::vector<JointId>& chain, const
         kit::animate(ctx, made.control, kit::kTranslate | kit::kRotate); // a curve's controls: placed and turned
         parent = made.control.ctrl;
         out.nodes.push_back(made.follow);
+        out.controllers.push_back(parent);
         out.at.push_back(at);
     }
     return out;

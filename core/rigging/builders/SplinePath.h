@@ -13,7 +13,8 @@ namespace rs::rigging::spline {
 Vec3 rootNormal(const BuildContext& ctx, model::JointId root);
 
 struct Controls {
-    std::vector<model::RigNodeIndex> nodes; // "ctrls.spline.<i>", each under the previous one (what the curve follows)
+    std::vector<model::RigNodeIndex> nodes;       // what the curve follows: the controllers, or their follow groups
+    std::vector<model::RigNodeIndex> controllers; // "ctrls.spline.<i>", each under the previous one (attributes go here)
     std::vector<double> at;                 // each one's length along the guides from the first guide, metres
     std::vector<double> along;              // each guide joint's length along the guides, metres
 };
