@@ -39,6 +39,23 @@ Made addOne(BuildContext& ctx, const ControlNodeOptions* stacks, const std::stri
     return made;
 }
 
+// Chained tweakers: tweaker i's carry group takes the offsets of the
+// tweakers before it, each about its ride; eased out, the second to last
+// tweaker's ride (its ease group) takes the last tweaker's.
+void addCarries(BuildContext& ctx, const std::vector<RigNodeIndex>& rides, const std::vector<RigNodeIndex>& carries,
+                const std::vector<RigNodeIndex>& tweaks, bool easedOut)
+{
+    const std::size_t last = tweaks.size() - 1;
+    if (easedOut && last >= 2)
+        ctx.addConstraint("cns.ease." + std::to_string(last - 1), {rides[last - 1]}, {rides[last]},
+                          model::CarryConstraint{.carried = {tweaks[last]}});
+    for (std::size_t i = 1; i <= last; ++i) {
+        const auto before = std::ptrdiff_t(i);
+        ctx.addConstraint("cns.carry." + std::to_string(i), {carries[i]}, std::vector<RigNodeIndex>(rides.begin(), rides.begin() + before),
+                          model::CarryConstraint{.carried = std::vector<RigNodeIndex>(tweaks.begin(), tweaks.begin() + before)});
+    }
+}
+
 } // namespace
 
 Vec3 rootNormal(const BuildContext& ctx, JointId root) { return kit::guideAxis(ctx, root, 2, Vec3(0.0, 0.0, 1.0)); }
@@ -128,14 +145,8 @@ std::vector<RigNodeIndex> addCurvePoints(BuildContext& ctx, const std::vector<Jo
         if (easing.out && i + 1 == last) on.push_back(ends.back());
         ctx.addConstraint("cns.curve." + std::to_string(i), {points[i]}, on, model::ParentConstraint{});
     }
-    if (!chained)
-        return curve;
-    if (easing.out && last >= 2)
-        ctx.addConstraint("cns.ease." + std::to_string(last - 1), {rides[last - 1]}, {rides[last]},
-                          model::CarryConstraint{.carried = {tweaks[last]}});
-    for (std::size_t i = 1; i <= last; ++i) // tweaker i carries the offsets of the tweakers before it, each about its ride
-        ctx.addConstraint("cns.carry." + std::to_string(i), {carries[i]}, std::vector<RigNodeIndex>(rides.begin(), rides.begin() + std::ptrdiff_t(i)),
-                          model::CarryConstraint{.carried = std::vector<RigNodeIndex>(tweaks.begin(), tweaks.begin() + std::ptrdiff_t(i))});
+    if (chained)
+        addCarries(ctx, rides, carries, tweaks, easing.out);
     return curve;
 }
 
