@@ -166,6 +166,19 @@ TEST(SplineTweak, EasedChainedTweakersCarryTheEasedPointOnce)
     const Vec3 end = translationOf(last);
     EXPECT_LT(glm::length(out.position(tweak(5)) - (end + swing * (out.restPosition(tweak(5)) - end))), 1e-6);
     EXPECT_LT(glm::length(out.position(tweak(4)) - out.restPosition(tweak(4))), 1e-12);
+    // A chain of three eased both ways: its middle point rides on both ends' places and takes both
+    // end tweakers' offsets; it builds and evaluates (no loop), at rest where it was built.
+    PosedRig three(curledTail(tail("chained", "in-out"), 3));
+    ASSERT_TRUE(three.ok());
+    EXPECT_TRUE(three.rig.diagnostics.empty()) << formatAll(three.rig.diagnostics);
+    eval::Pose threePose = three.defaults();
+    threePose[three.channel(tweak(2), "ty")] = 0.05;
+    three.evaluate(threePose);
+    EXPECT_NEAR(glm::length(three.position(tweak(1)) - three.restPosition(tweak(1))), 0.05, 1e-9) << "the last one's offset";
+    threePose[three.channel(tweak(2), "ty")] = 0.0;
+    const auto& threeRest = three.evaluate(threePose).world;
+    for (model::RigNodeIndex i = 0; i < three.rig.nodes.size(); ++i)
+        EXPECT_LT(maxAbsDifference(threeRest[i].matrix(), three.rig.nodes[i].worldMatrix), 1e-9) << three.rig.nodes[i].path;
 }
 
 TEST(SplineTweak, ChainedTweakersMirrorExactlyOnABranch)
