@@ -4,6 +4,7 @@
 #include "eval/Solvers.h"
 
 #include "eval/DrivenKeys.h"
+#include "eval/OffsetCarry.h"
 
 #include <algorithm>
 
@@ -105,6 +106,8 @@ public:
         m_c.aimAxis = static_cast<int>(s.aim);
         m_c.upAxis = static_cast<int>(s.up);
     }
+
+    void operator()(const model::CarryConstraint& s) { m_ok = readCarry(s, m_rc, m_rig, m_channels, m_c, m_diagnostics) && m_ok; }
 
     void operator()(const model::DrivenKeyConstraint& s)
     {

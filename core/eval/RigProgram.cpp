@@ -1,6 +1,7 @@
 #include "eval/RigProgram.h"
 
 #include "eval/DrivenKeys.h"
+#include "eval/OffsetCarry.h"
 #include "eval/Solvers.h"
 
 #include <algorithm>
@@ -9,15 +10,6 @@
 namespace rs::eval {
 
 namespace {
-
-Affine channelAffine(const Pose& pose, int first)
-{
-    const double* v = pose.data() + first;
-    Mat3 r(1.0);
-    if (v[3] != 0.0 || v[4] != 0.0 || v[5] != 0.0) // most controls are not rotated: skip the trigonometry
-        r = eulerRotation({v[3], v[4], v[5]}, rotateOrderOf(pose, first));
-    return {Mat3(r[0] * v[6], r[1] * v[7], r[2] * v[8]), Vec3(v[0], v[1], v[2])};
-}
 
 // Attribute references resolved, then the rest data of the constraint's solver.
 // A constraint that cannot be evaluated keeps its slot (indices stay aligned

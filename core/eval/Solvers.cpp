@@ -7,6 +7,7 @@
 #include "eval/DrivenKeys.h"
 
 #include "eval/IkSolver.h"
+#include "eval/OffsetCarry.h"
 #include "eval/RigProgram.h"
 #include "eval/SplineCurve.h"
 
@@ -377,6 +378,8 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         return prepareIk(c, rest);
     case ConstraintKind::Spline:
         return prepareSpline(c, rest);
+    case ConstraintKind::Carry:
+        return prepareCarry(c, rest);
     }
     return {};
 }
@@ -397,6 +400,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Ik: solveIk(c, pose, world); break;
     case ConstraintKind::Spline: solveSpline(c, pose, state); break;
     case ConstraintKind::Roll: solveRoll(c, pose, state); break;
+    case ConstraintKind::Carry: solveCarry(c, pose, world); break;
     case ConstraintKind::Visibility: break; // RigProgram::evaluate writes EvalState::visible
     case ConstraintKind::DrivenKey: break;  // RigProgram::evaluate computes the driven channels first
     }

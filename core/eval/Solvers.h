@@ -72,6 +72,12 @@ struct CompiledConstraint {
     std::vector<Affine> curveOffsets;
     int samplesPerSegment = 12;
 
+    // Carry (OffsetCarry.h): per carried node, the node, its first transform
+    // channel and its rest offset from its pivot (targets[k]).
+    std::vector<model::RigNodeIndex> carried;
+    std::vector<int> carriedChannels;
+    std::vector<Affine> carriedOffsets;
+
     // Aim: axes and rest offset.
     int aimAxis = 0, upAxis = 1;
 

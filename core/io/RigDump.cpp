@@ -168,6 +168,13 @@ public:
             field("break", attributeText(m_rig, past->breakAngle));
         }
     }
+    void operator()(const model::CarryConstraint& s)
+    {
+        std::string carried = "[";
+        for (std::size_t i = 0; i < s.carried.size(); ++i)
+            carried += (i ? ", " : "") + nodeText(m_rig, s.carried[i]);
+        field("carried", carried + "]");
+    }
     void operator()(const model::AimConstraint& s)
     {
         field("aim", model::axisName(s.aim));

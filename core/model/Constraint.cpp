@@ -40,6 +40,7 @@ const char* constraintKindName(ConstraintKind kind)
     case ConstraintKind::Visibility: return "visibility";
     case ConstraintKind::Roll: return "roll";
     case ConstraintKind::DrivenKey: return "driven_key";
+    case ConstraintKind::Carry: return "carry";
     }
     return "parent";
 }
@@ -98,6 +99,9 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
             } else if constexpr (std::is_same_v<T, DrivenKeyConstraint>) {
                 visit(settings.driver.node);
                 visit(settings.driven.node);
+            } else if constexpr (std::is_same_v<T, CarryConstraint>) {
+                for (RigNodeIndex& carried : settings.carried)
+                    visit(carried);
             } else if constexpr (std::is_same_v<T, DriveConstraint>) {
                 ref(settings.value);
                 std::visit(

@@ -352,13 +352,32 @@ struct DrivenKeyConstraint {
     bool operator==(const DrivenKeyConstraint&) const = default;
 };
 
+// Carry (rig.spline's chained tweakers: an FK chain's offsets without its
+// hierarchy): driven[0], once its parent placed it, also moves by the
+// animated offset of each node of `carried`, first one outermost:
+//   world(driven) = D_0 D_1 ... D_n-1 world(driven),
+//   D_k = F_k C_k F_k^-1, F_k = world(targets[k]) rest(targets[k])^-1 rest(carried[k]),
+// C_k being carried[k]'s own channel transform (translate, rotate in its
+// rotate order, scale): the carried node's animation about its zero pose,
+// where F_k puts that pose as its pivot targets[k] (what it rides on,
+// uncarried) moves. Exactly one target per carried node; each carried node
+// must have transform channels (a controller), else the rig does not
+// compile. A carried node is read by its channels, not its world, so it may
+// itself be carried by the driven node's chain. At rest (every C_k the
+// identity) the driven node is where its parent puts it.
+struct CarryConstraint {
+    std::vector<RigNodeIndex> carried{};
+    bool operator==(const CarryConstraint&) const = default;
+};
+
 // What a constraint does; the index of its settings in ConstraintSettings.
-enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale, Visibility, Roll, DrivenKey };
+enum class ConstraintKind { Parent, Orient, Point, Blend, Ik, Twist, Spline, Space, Drive, Aim, Scale, Visibility, Roll, DrivenKey, Carry };
 const char* constraintKindName(ConstraintKind kind); // "parent", "orient"...
 
 using ConstraintSettings = std::variant<ParentConstraint, OrientConstraint, PointConstraint, BlendConstraint, IkConstraint,
                                         TwistConstraint, SplineConstraint, SpaceConstraint, DriveConstraint, AimConstraint,
-                                        ScaleConstraint, VisibilityConstraint, RollConstraint, DrivenKeyConstraint>;
+                                        ScaleConstraint, VisibilityConstraint, RollConstraint, DrivenKeyConstraint,
+                                        CarryConstraint>;
 
 template <ConstraintKind kind>
 using SettingsOf = std::variant_alternative_t<static_cast<std::size_t>(kind), ConstraintSettings>;
@@ -376,7 +395,8 @@ static_assert(std::is_same_v<SettingsOf<ConstraintKind::Scale>, ScaleConstraint>
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Visibility>, VisibilityConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::Roll>, RollConstraint>);
 static_assert(std::is_same_v<SettingsOf<ConstraintKind::DrivenKey>, DrivenKeyConstraint>);
-static_assert(std::variant_size_v<ConstraintSettings> == 14);
+static_assert(std::is_same_v<SettingsOf<ConstraintKind::Carry>, CarryConstraint>);
+static_assert(std::variant_size_v<ConstraintSettings> == 15);
 
 struct RigConstraint {
     NodeKey key;                       // identity, as a node's

@@ -3,7 +3,7 @@
 // the dump's 6 decimals), no field the kind does not have, and the rig
 // evaluates as before. Aim, point and scale constraints (no builder makes
 // them) and a driven key are added to the prop, so every kind is covered (the
-// vehicle brings the wheels' roll).
+// vehicle brings the wheels' roll, the quadruped's chained tail tweakers the carry).
 #include "EvalTestSupport.h"
 #include "io/RigDump.h"
 
@@ -71,6 +71,11 @@ private:
         if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
         if (kind == "roll") return roll();
         if (kind == "driven_key") return drivenKey();
+        if (kind == "carry") {
+            model::CarryConstraint carry;
+            for (const auto& n : field("carried")) carry.carried.push_back(node(n));
+            return carry;
+        }
         ADD_FAILURE() << "unknown kind " << kind;
         return {};
     }

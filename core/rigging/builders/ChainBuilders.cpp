@@ -3,6 +3,7 @@
 
 #include "rigging/builders/BuilderKit.h"
 #include "rigging/builders/ChainOrient.h"
+#include "rigging/builders/ControlNodes.h"
 #include "rigging/builders/SplinePath.h"
 
 #include "eval/SplineCurve.h"
@@ -35,15 +36,13 @@ public:
     bool gather(const BuildContext& ctx) const override
     {
         const auto chain = kit::chainOfAtLeast(ctx, 3, "a spline chain");
-        if (!chain || !readChainOrient(ctx))
+        if (!chain || !readChainOrient(ctx) || !readControlNodes(ctx))
             return false;
         if (tweakers(ctx) != "off" && chain->size() > spline::kMaxCurvePoints) {
             ctx.error("tweakers put a curve point on every guide joint, at most " + std::to_string(spline::kMaxCurvePoints) +
                           "; this chain has " + std::to_string(chain->size()), "tweakers");
             return false;
         }
-        if (tweakers(ctx) == "chained")
-            ctx.warning("chained tweakers are not built yet: they are built unchained (each moves its own curve point)", "tweakers");
         if (ctx.optionString("fk_easing") != "off" && tweakers(ctx) == "off")
             ctx.warning("fk_easing eases the end tweakers: it does nothing without tweakers", "fk_easing");
         if (ctx.optionInt("bones") == 1) {
@@ -59,25 +58,29 @@ public:
         const auto points = *kit::positions(ctx, chain);
         // orient, aim_axis, up_axis, up_dir, up_auto; up_dir left unset: the root guide's up axis, as before them.
         const auto frames = orientFrames(ctx, chain, false, true);
+        // do_pose, add_nodes, parent_scale, rotate_order, flip_orient: every control's stack (gather checked them).
+        const ControlNodeOptions stacks = readControlNodes(ctx).value_or(ControlNodeOptions{});
         const spline::Controls controls = spline::addControls(ctx, chain, points, frames, static_cast<int>(ctx.optionInt("controls")),
-                                                              ctx.hookNode(), ctx.optionBool("uniform_ik"));
-        const model::AttributeRef stretch = ctx.addAttribute(controls.nodes.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
+                                                              ctx.hookNode(), ctx.optionBool("uniform_ik"), &stacks);
+        const model::AttributeRef stretch = ctx.addAttribute(controls.controllers.front(), "stretch", ctx.optionBool("stretch") ? 1.0 : 0.0, 0.0, 1.0);
         // With tweakers the curve goes through a point on every guide joint
-        // (following the controllers around it), each with a control on it.
+        // (following the controllers around it), each with a control on it;
+        // chained, each tweaker also carries the ones after it.
         const std::string easing = ctx.optionString("fk_easing");
         const std::vector<RigNodeIndex> through =
             tweakers(ctx) != "off"
                 ? spline::addCurvePoints(ctx, chain, frames, controls, true,
-                                         {.in = easing == "in" || easing == "in-out", .out = easing == "out" || easing == "in-out"})
+                                         {.in = easing == "in" || easing == "in-out", .out = easing == "out" || easing == "in-out"},
+                                         {.chained = tweakers(ctx) == "chained", .stacks = &stacks})
                 : controls.nodes;
         // The driven chain follows the curve; skin joints ride on it (on an FK control each with `fk`).
         std::vector<RigNodeIndex> driven;
         if (const int bones = static_cast<int>(ctx.optionInt("bones")); bones >= 2) {
             std::vector<model::JointId> sources;
             const auto boneFrames = placeBones(ctx, chain, points, through, bones, sources);
-            driven = spline::addDrivenChain(ctx, chain, boneFrames, ctx.optionBool("fk"), sources);
+            driven = spline::addDrivenChain(ctx, chain, boneFrames, ctx.optionBool("fk"), sources, &stacks);
         } else {
-            driven = spline::addDrivenChain(ctx, chain, frames, ctx.optionBool("fk"));
+            driven = spline::addDrivenChain(ctx, chain, frames, ctx.optionBool("fk"), {}, &stacks);
         }
         ctx.addConstraint("cns.spline", driven, through, model::SplineConstraint{.stretch = stretch});
     }
