@@ -62,7 +62,7 @@ TEST(Face, EyesFollowTheLookTargetAndTheLidsFollowTheGaze)
     for (const std::string side : {"eye.L", "eye.R"})
         for (const std::string id : {"skin.eye", "skin.lid_up", "skin.lid_low"})
             rest[side + id] = pitch(forward(side, id));
-    pose[r.channel("eye.L::ctrls.look", "ty")] = 0.15; // look up: both eyes turn up
+    pose[r.channel("eye.L::ctrls.look", "ty")] = 0.25; // look up (the target is 0.6 m ahead): both eyes turn up
     r.evaluate(pose);
     for (const std::string side : {"eye.L", "eye.R"}) {
         const double eye = pitch(forward(side, "skin.eye")) - rest[side + "skin.eye"];

@@ -161,7 +161,7 @@ TEST(VehicleTemplates, TheDoorSlidesAlongItsRailWithinItsLimits)
     const int slide = r.channel("door::ctrls.slide", "tz");
     const auto& layout = r.program->channels();
     EXPECT_TRUE(layout[std::size_t(slide)].limited);
-    EXPECT_DOUBLE_EQ(layout.clamp(slide, 2.0), 0.8) << "no further than the rail's end";
+    EXPECT_DOUBLE_EQ(layout.clamp(slide, 2.0), 0.7) << "no further than its limit_max, short of the rail's end (0.8 m)";
     EXPECT_DOUBLE_EQ(layout.clamp(slide, -0.3), 0.0) << "no further back than its start";
     EXPECT_TRUE(layout[std::size_t(r.channel("door::ctrls.slide", "tx"))].locked);
     EXPECT_TRUE(layout[std::size_t(r.channel("door::ctrls.slide", "ty"))].locked);
