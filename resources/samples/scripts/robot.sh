@@ -13,7 +13,7 @@ $C add $G spine.torso --under world --name spine --set isolate_skin=on
 $C add $G neck.head --under spine --name neck --set spline=off --set space_switch=off --set orient_neck=off \
   --set isolate_skin=on
 $C add $G arm.limb --under spine --name arm --set clavicle=off --set twist_upper=0 --set twist_lower=0 \
-  --set blend_joints=off --set stretch=off --set non_rolling=off --set ik_orient=joint --set ik_blend=0 --set isolate_skin=on
+  --set blend_joints=off --set stretch=off --set ik_orient=joint --set ik_blend=0 --set isolate_skin=on
 $C add $G leg.limb --under spine:hips --name leg --set pelvis=on --set twist_upper=0 --set twist_lower=0 \
   --set blend_joints=off --set stretch=off --set non_rolling=off --set effector_plane=ground --set isolate_skin=on
 $C add $G digit.hand --under arm:hand --name hand --set isolate_skin=on
