@@ -30,8 +30,13 @@ using namespace rs;
 namespace {
 
 constexpr const char* kToDo = "not in a sample yet (issue 22 item 7, to do)";
-constexpr const char* kLimbsLater = "not in a sample yet: the limbs' option blocks change in another helper's work this session";
-constexpr const char* kFingersLater = "not in a sample yet: the fingers' option blocks change in another helper's work this session";
+constexpr const char* kLimbsLater =
+    "not in a sample yet: the limbs' option blocks change in another helper's work this session";
+constexpr const char* kBothSides =
+    "both sides by default; one side is the common branches option, which the wheels, mud flaps and antennas set";
+constexpr const char* kGroupIsXform = "on, a core.group is a core.xform (same builder), which the prop and the vehicle use";
+constexpr const char* kFingersLater =
+    "not in a sample yet: the fingers' option blocks change in another helper's work this session";
 
 // Options no sample sets to a non-default value, and why.
 const std::map<std::string, std::string>& allowList()
@@ -57,15 +62,16 @@ const std::map<std::string, std::string>& allowList()
         {"arm.limb.reverse_lock", "added by another change this session"},
 
         // Exempt: their non-default is another mechanism a sample already uses.
-        {"arm.limb.branches", "both sides by default; one side is the common branches option, which the wheels, mud flaps and antennas set"},
-        {"leg.limb.branches", "both sides by default; one side is the common branches option, which the wheels, mud flaps and antennas set"},
-        {"quad.leg.branches", "both sides by default; one side is the common branches option, which the wheels, mud flaps and antennas set"},
-        {"face.brow.branches", "both sides by default; one side is the common branches option, which the wheels, mud flaps and antennas set"},
-        {"face.eye.branches", "both sides by default; one side is the common branches option, which the wheels, mud flaps and antennas set"},
-        {"core.group.do_ctrl", "on, a core.group is a core.xform (same builder), which the prop and the vehicle use"},
-        {"core.group.do_skin", "on, a core.group is a core.xform (same builder), which the prop and the vehicle use"},
-        {"core.xform.joint", "a weightless bone under the part: the vehicle's hitch (core.group, joint: on) runs the same builder line"},
-        {"util.camera.parent", "merge up: a camera's controls join its parent's group; the common option is Mikan's group plumbing"},
+        {"arm.limb.branches", kBothSides},
+        {"leg.limb.branches", kBothSides},
+        {"quad.leg.branches", kBothSides},
+        {"face.brow.branches", kBothSides},
+        {"face.eye.branches", kBothSides},
+        {"core.group.do_ctrl", kGroupIsXform},
+        {"core.group.do_skin", kGroupIsXform},
+        {"core.xform.joint", "a weightless bone under the part: the vehicle's hitch (core.group, joint: on) runs the "
+                             "same builder line"},
+        {"util.camera.parent", "merge up: a camera's controls join its parent's group (Mikan's group plumbing)"},
         {"util.camera.do_skin", "off: a camera is not a bone of the exported skeleton (it exports as a camera)"},
         {"world.default.group", "'all' is the root group Mikan's world makes; another value is a root that is not the top"},
         {"world.default.parent", "merge up is the root group's relation; another value is a root that is not the top"},
@@ -149,7 +155,8 @@ const std::map<std::string, std::string>& allowList()
         {"wheel.legacy.hook", kToDo},
         {"wheel.legacy.roll", kToDo},
         {"wheel.legacy.roll_jump", kToDo},
-        {"world.prop.do_scale", kToDo}, // (Cleanup.AssimpReadsTheRecordedDefaultsAsNodeMetadata reads the prop's scale control)
+        // (Not off on the prop: Cleanup.AssimpReadsTheRecordedDefaultsAsNodeMetadata reads its scale control.)
+        {"world.prop.do_scale", kToDo},
         // (Not +Y on the prop's antenna: Blender's FBX importer would connect its translating joints, BoneInference.)
         {"core.joints.aim_axis", kToDo},
         {"core.joints.up_axis", kToDo},
