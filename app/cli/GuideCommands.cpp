@@ -50,6 +50,30 @@ std::optional<Value> parseOptionValue(const std::string& text, std::string& erro
     return text;
 }
 
+// "[X, Y, Z]" or "X,Y,Z": three finite numbers; nullopt for anything else.
+std::optional<Vec3> parseVector(std::string text)
+{
+    if (text.size() >= 2 && text.front() == '[' && text.back() == ']')
+        text = text.substr(1, text.size() - 2);
+    Vec3 out(0.0);
+    int n = 0;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = text.find(',', start);
+        std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        item.erase(0, item.find_first_not_of(' '));
+        item.erase(item.find_last_not_of(' ') + 1);
+        const auto number = parseNumber(item);
+        if (n == 3 || !number || !std::isfinite(*number))
+            return std::nullopt;
+        out[n++] = *number;
+        if (comma == std::string::npos)
+            break;
+        start = comma + 1;
+    }
+    return n == 3 ? std::optional<Vec3>(out) : std::nullopt;
+}
+
 // Names and values go into the guide and from there into exports, which want UTF-8.
 bool isUtf8Argument(const std::string& command, const std::string& flag, const std::string& value)
 {
@@ -150,6 +174,13 @@ int runAdd(const std::vector<std::string>& args)
             return 1;
         }
     }
+    // A vector option's --set text ("[0, 0, 1]" or "0,0,1") becomes the vector the template takes.
+    if (const auto* manifest = templates->find(templateId))
+        for (auto& [option, value] : options)
+            if (const auto* p = manifest->findOpt(option); p && typeOf(p->value) == ValueType::Vec3)
+                if (const auto* text = std::get_if<std::string>(&value))
+                    if (const auto vector = parseVector(*text))
+                        value = *vector;
     auto instance = rigging::makeInstance(*guide, *templates, templateId, hookJoint, options);
     print(instance.diagnostics());
     if (!instance)

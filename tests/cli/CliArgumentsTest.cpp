@@ -78,6 +78,27 @@ TEST(Cli, RefusesNonFiniteAndOutOfRangeNumbersInAdd)
     EXPECT_EQ(ok.exitCode, 0) << ok.errors;
 }
 
+// A vector option (core.joints' up_dir) is set as the guide writes it, "[X, Y, Z]", or as --at takes
+// coordinates, "X,Y,Z"; anything else is refused and nothing is added.
+TEST(Cli, AddTakesAVectorOptionAsTheGuideOrAsAtWritesIt)
+{
+    const fs::path guide = freshFolder("add-vector") / "guide.yml";
+    ASSERT_EQ(runCli({"new", guide.string()}).exitCode, 0);
+    const CliRun bracketed = runCli({"add", guide.string(), "core.joints", "--name", "a", "--set", "up_dir=[1, 0, 0]"});
+    EXPECT_EQ(bracketed.exitCode, 0) << bracketed.errors;
+    const CliRun commas = runCli({"add", guide.string(), "core.joints", "--name", "b", "--set", "up_dir=0,-1,0.5"});
+    EXPECT_EQ(commas.exitCode, 0) << commas.errors;
+    const std::string text = readText(guide);
+    EXPECT_NE(text.find("up_dir: [1, 0, 0]"), std::string::npos) << text;
+    EXPECT_NE(text.find("up_dir: [0, -1, 0.5]"), std::string::npos) << text;
+    for (const std::string bad : {"up_dir=[1, 0]", "up_dir=[1, 0, 0, 0]", "up_dir=[x, 0, 0]", "up_dir=1,,0"}) {
+        const CliRun run = runCli({"add", guide.string(), "core.joints", "--name", "c", "--set", bad});
+        EXPECT_NE(run.exitCode, 0) << bad;
+        EXPECT_NE(run.errors.find("--set up_dir was not taken; nothing was added"), std::string::npos) << bad << ": " << run.errors;
+        EXPECT_EQ(readText(guide), text) << bad;
+    }
+}
+
 TEST(Cli, RefusesANameThatIsNotUtf8)
 {
     const fs::path folder = freshFolder("utf8");

@@ -63,6 +63,8 @@ std::uint16_t expectedAnimatable(const model::GuideDocument& guide, const model:
         auto off = [&](const char* option) { auto it = options.find(option); return it != options.end() && it->second == Value(false); };
         return std::uint16_t((off("do_translate") ? 0 : T) | (off("do_rotate") ? 0 : R) | (off("do_scale") ? 0 : S));
     }
+    if (templateId == "core.bones")
+        return R; // a bone turns about its head
     if (templateId == "core.joints" || tag == "ctrls.scale")
         return T | R | S; // props' parts and the one global scale control
     if (tag == "ctrls.switch" || tag == "ctrls.hand")

@@ -75,12 +75,25 @@ def clip_action(name):
 
 
 def scale_moving(action):
-    moving = set()
+    # The reference's rule (io/ExportScene.cpp, the "scaled" list): a bone whose
+    # scale at some key is more than 1e-5 (the length of the difference) from
+    # its first key's. A spine's volume, barely stretched, scales by as little.
+    keys = {}
     for fc in action.fcurves:
         if fc.data_path.endswith('.scale') and fc.data_path.startswith('pose.bones["'):
-            values = [k.co[1] for k in fc.keyframe_points]
-            if values and max(values) - min(values) > 1e-4:
-                moving.add(fc.data_path[len('pose.bones["'):-len('"].scale')])
+            bone = fc.data_path[len('pose.bones["'):-len('"].scale')]
+            keys.setdefault(bone, {})[fc.array_index] = [k.co[1] for k in fc.keyframe_points]
+    moving = set()
+    for bone, curves in keys.items():
+        count = max(len(values) for values in curves.values())
+        def at(axis, k):
+            values = curves.get(axis, [])
+            return values[min(k, len(values) - 1)] if values else 1.0
+        first = [at(axis, 0) for axis in range(3)]
+        for k in range(count):
+            if sum((at(axis, k) - first[axis]) ** 2 for axis in range(3)) ** 0.5 > 1e-5:
+                moving.add(bone)
+                break
     return moving
 
 

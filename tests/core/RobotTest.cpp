@@ -1,0 +1,134 @@
+// The robot sample (resources/samples/robot.yml), checked the way an animator
+// would on the built and evaluated rig: rigid limbs (no twist or blend joints,
+// no stretch), level feet, a claw and a pincer that close on each other in a
+// fist, antennas that turn as mirror images, a hose that is skin joints only,
+// and a skin skeleton of its own.
+#include "EvalTestSupport.h"
+
+#include "model/Skeleton.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+namespace rs {
+namespace {
+
+using eval::Pose;
+using test::PosedRig;
+
+Vec3 axisAt(const PosedRig& r, const std::string& id, int column)
+{
+    return glm::normalize(r.state().world[r.index(id)].rotation()[column]);
+}
+
+std::size_t countPrefixed(const model::Rig& rig, const std::string& prefix)
+{
+    std::size_t n = 0;
+    for (const auto& node : rig.nodes)
+        n += node.path.rfind(prefix, 0) == 0 ? 1 : 0;
+    return n;
+}
+
+TEST(Robot, SampleBuildsWithoutDiagnostics)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
+}
+
+TEST(Robot, RigidLimbsHaveOneSkinJointPerPartAndDoNotStretch)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    for (const char* side : {"L", "R"}) {
+        const std::string arm = std::string("arm.") + side + "::", leg = std::string("leg.") + side + "::";
+        for (const std::string& limb : {arm, leg}) {
+            EXPECT_EQ(countPrefixed(r.rig, limb + "skin.up."), 0u) << limb << " no twist joints";
+            EXPECT_EQ(countPrefixed(r.rig, limb + "skin.dn."), 0u) << limb;
+            EXPECT_EQ(countPrefixed(r.rig, limb + "skin.mid."), 0u) << limb << " no blend joints at the bends";
+        }
+        EXPECT_FALSE(r.rig.findPath(arm + "ctrls.clavicle")) << "the shoulder is bolted on";
+        EXPECT_TRUE(r.rig.findPath(leg + "ctrls.pelvis")) << "a hip block above each leg";
+    }
+    // The arms are animated FK by default.
+    const Pose rest = r.defaults();
+    EXPECT_EQ(rest[r.channel("arm.L::ctrls.switch", "ik_blend")], 0.0);
+    // The IK foot pulled 0.5 m below the ground: the leg reaches straight down and no further.
+    Pose pose = rest;
+    r.evaluate(pose);
+    const Vec3 hip = r.position("leg.L::blend.0"), ankle = r.position("leg.L::blend.2");
+    const double length = glm::length(r.position("leg.L::blend.1") - hip) + glm::length(ankle - r.position("leg.L::blend.1"));
+    pose[r.channel("leg.L::ctrls.ik", "ty")] -= 0.5;
+    r.evaluate(pose);
+    EXPECT_NEAR(glm::length(r.position("leg.L::blend.2") - r.position("leg.L::blend.0")), length, 1e-6) << "no stretch";
+}
+
+TEST(Robot, TheFeetAreLevel)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    r.evaluate(r.defaults());
+    for (const char* side : {"L", "R"}) {
+        const Vec3 up = axisAt(r, std::string("leg.") + side + "::blend.2", 1);
+        EXPECT_GT(std::abs(up.y), 1.0 - 1e-9) << side << ": the ankle's Y axis is vertical (effector_plane ground)";
+    }
+}
+
+TEST(Robot, AFistClosesTheClawAndThePincerOnEachOther)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    r.evaluate(pose);
+    const Vec3 claw = r.position("claw.L::skin.1"), pincer = r.position("pincer.L::skin.1");
+    pose[r.channel("hand.L::ctrls.hand", "fist")] = 1.0;
+    r.evaluate(pose);
+    const Vec3 clawFist = r.position("claw.L::skin.1"), pincerFist = r.position("pincer.L::skin.1");
+    EXPECT_LT(clawFist.y, claw.y - 0.01) << "the claw closes down";
+    EXPECT_GT(pincerFist.y, pincer.y + 0.01) << "the pincer closes up, onto it";
+    EXPECT_GT(glm::length(claw - pincer), 0.03) << "open at rest";
+    EXPECT_LT(glm::length(clawFist - pincerFist), 0.002) << "the jaws meet in a full fist (fist 25 degrees a phalanx on each)";
+}
+
+TEST(Robot, TheSameValuesTurnBothAntennasAsMirrorImages)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    for (const char* side : {"L", "R"}) {
+        pose[r.channel(std::string("antenna.") + side + "::ctrls.0", "rx")] = 25.0;
+        pose[r.channel(std::string("antenna.") + side + "::ctrls.0", "rz")] = -15.0;
+    }
+    r.evaluate(pose);
+    const Vec3 left = r.position("antenna.L::skin.2"), right = r.position("antenna.R::skin.2");
+    EXPECT_GT(glm::length(left - r.restPosition("antenna.L::skin.2")), 0.02);
+    EXPECT_LT(glm::length(left - Vec3(-right.x, right.y, right.z)), 1e-9) << "flip_orient";
+}
+
+TEST(Robot, TheHoseIsSkinJointsWithoutControlsOnTheSkinSkeletonOfItsOwn)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(countPrefixed(r.rig, "hose::skin."), 4u);
+    EXPECT_EQ(countPrefixed(r.rig, "hose::ctrls."), 0u) << "do_ctrl off: the engine's physics moves it";
+    // isolate_skin on every instance: every skin joint hangs from a skin joint, the root from the world's joint group.
+    std::size_t joints = 0;
+    for (const auto& node : r.rig.nodes) {
+        if (node.kind != model::RigNodeKind::Joint || node.domain() != "skin")
+            continue;
+        ++joints;
+        const auto& parent = r.rig.nodes[node.parent];
+        EXPECT_TRUE((parent.kind == model::RigNodeKind::Joint && parent.domain() == "skin") || parent.path == "world::grps.joint")
+            << node.path << " hangs from " << parent.path;
+    }
+    EXPECT_GT(joints, 30u);
+    // The hose follows the chest as its skin joint did.
+    Pose pose = r.defaults();
+    pose[r.channel("spine::ctrls.cog", "ty")] = 0.2;
+    r.evaluate(pose);
+    EXPECT_NEAR(r.position("hose::skin.3").y - r.restPosition("hose::skin.3").y, 0.2, 1e-9);
+}
+
+} // namespace
+} // namespace rs

@@ -1,0 +1,247 @@
+// Issue 22 item 7: every template option comes with a sample guide that uses
+// it. For each option of each template in the built-in registry, some instance
+// of that template in resources/samples/*.yml sets it to a value other than its
+// default, or the option is on the allow-list below with the reason it is not.
+//
+// The common options every manifest gets (branches, sym, group, parent,
+// do_ctrl, do_skin, virtual_parent, isolate_skin: io/ManifestReader's
+// commonOptions) are one mechanism built by one stage whatever the template, so
+// one sample instance of any template setting one counts for all ("*.name").
+// A template that declares one itself with its own default (world.default's
+// group, util.camera's parent) is checked against that default.
+//
+// Only `opts` are checked: the `guides` parameters (number, length, upper,
+// radius...) shape the guide joints of a new guide, which a sample already has.
+#include "core/TestSupport.h"
+#include "io/GuideFile.h"
+#include "io/ManifestReader.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace rs;
+
+namespace {
+
+constexpr const char* kToDo = "not in a sample yet (issue 22 item 7, to do)";
+constexpr const char* kLimbsLater =
+    "not in a sample yet: the limbs' option blocks change in another helper's work this session";
+constexpr const char* kBothSides =
+    "both sides by default; one side is the common branches option, which the wheels, mud flaps and antennas set";
+constexpr const char* kGroupIsXform = "on, a core.group is a core.xform (same builder), which the prop and the vehicle use";
+constexpr const char* kFingersLater =
+    "not in a sample yet: the fingers' option blocks change in another helper's work this session";
+
+// Options no sample sets to a non-default value, and why.
+const std::map<std::string, std::string>& allowList()
+{
+    static const std::map<std::string, std::string> list = {
+        // Added by another change this session (not in this branch's registry yet;
+        // rig.spline's new `tweakers: chained` is a value of an option the vehicle
+        // already sets).
+        {"rig.spline.add_nodes", "added by another change this session"},
+        {"rig.spline.parent_scale", "added by another change this session"},
+        {"rig.spline.rotate_order", "added by another change this session"},
+        {"rig.spline.flip_orient", "added by another change this session"},
+        {"digit.finger.target_parent", "added by another change this session"},
+        {"digit.finger.target_weights", "added by another change this session"},
+        {"digit.finger.meta", "added by another change this session"},
+        {"arm.limb.add_chains", "added by another change this session"},
+        {"leg.limb.add_chains", "added by another change this session"},
+        {"quad.leg.add_chains", "added by another change this session"},
+        {"arm.limb.advanced_twist", "added by another change this session"},
+        {"leg.limb.advanced_twist", "added by another change this session"},
+        {"quad.leg.advanced_twist", "added by another change this session"},
+        {"arm.limb.reverse_lock", "added by another change this session"},
+
+        // Exempt: their non-default is another mechanism a sample already uses.
+        {"arm.limb.branches", kBothSides},
+        {"leg.limb.branches", kBothSides},
+        {"quad.leg.branches", kBothSides},
+        {"face.brow.branches", kBothSides},
+        {"face.eye.branches", kBothSides},
+        {"core.group.do_ctrl", kGroupIsXform},
+        {"core.group.do_skin", kGroupIsXform},
+        {"core.xform.joint", "a weightless bone under the part: the vehicle's hitch (core.group, joint: on) runs the "
+                             "same builder line"},
+        {"util.camera.parent", "merge up: a camera's controls join its parent's group (Mikan's group plumbing)"},
+        {"util.camera.do_skin", "off: a camera is not a bone of the exported skeleton (it exports as a camera)"},
+        {"world.default.group", "'all' is the root group Mikan's world makes; another value is a root that is not the top"},
+        {"world.default.parent", "merge up is the root group's relation; another value is a root that is not the top"},
+        // To do: not in a sample yet (issue 22 item 7).
+        // arm.limb: to do, after this session's limb changes (another helper's) merge.
+        // (Not non_rolling off on the robot's arms: with its clavicle off and FK by default, Blender plays its
+        // range of motion's glTF and FBX 0.66 m apart at the pincer while the IK arm is exercised,
+        // Export.robot.BlenderMidKeys; three.js agrees with both. To look into.)
+        {"arm.limb.non_rolling", kLimbsLater},
+        {"arm.limb.volume", kLimbsLater},
+        {"arm.limb.stomp_power", kLimbsLater},
+        {"arm.limb.pin", kLimbsLater},
+        {"arm.limb.soft_ik", kLimbsLater},
+        {"arm.limb.smooth_type", kLimbsLater},
+        {"arm.limb.ik_space", kLimbsLater},
+        {"arm.limb.pv_space", kLimbsLater},
+        {"arm.limb.space_switch", kLimbsLater},
+        {"arm.limb.effector_plane", kLimbsLater},
+        {"arm.limb.ik_fk_visibility", kLimbsLater},
+        {"arm.limb.auto_clavicle", kLimbsLater},
+        // leg.limb: to do, after this session's limb changes (another helper's) merge.
+        // (Not soft_ik on the quadruped: its legs stand within 2 cm of full reach, so soft IK moves the rest pose.)
+        {"leg.limb.soft_ik", kLimbsLater},
+        {"leg.limb.ik_blend", kLimbsLater},
+        {"leg.limb.volume", kLimbsLater},
+        {"leg.limb.stomp_power", kLimbsLater},
+        {"leg.limb.pin", kLimbsLater},
+        {"leg.limb.smooth_type", kLimbsLater},
+        {"leg.limb.ik_space", kLimbsLater},
+        {"leg.limb.pv_space", kLimbsLater},
+        {"leg.limb.space_switch", kLimbsLater},
+        {"leg.limb.ik_orient", kLimbsLater},
+        {"leg.limb.ik_fk_visibility", kLimbsLater},
+        {"leg.limb.fk_space", kLimbsLater},
+        {"leg.limb.reverse_lock", kLimbsLater},
+        // quad.leg: to do, after this session's limb changes (another helper's) merge.
+        {"quad.leg.soft_ik", kLimbsLater},
+        {"quad.leg.ik_blend", kLimbsLater},
+        {"quad.leg.stretch", kLimbsLater},
+        {"quad.leg.stomp_power", kLimbsLater},
+        {"quad.leg.pin", kLimbsLater},
+        {"quad.leg.twist_upper", kLimbsLater},
+        {"quad.leg.twist_lower", kLimbsLater},
+        {"quad.leg.smooth_type", kLimbsLater},
+        {"quad.leg.blend_joints", kLimbsLater},
+        {"quad.leg.ik_space", kLimbsLater},
+        {"quad.leg.pv_space", kLimbsLater},
+        {"quad.leg.space_switch", kLimbsLater},
+        {"quad.leg.ik_orient", kLimbsLater},
+        {"quad.leg.effector_plane", kLimbsLater},
+        {"quad.leg.ik_fk_visibility", kLimbsLater},
+        {"quad.leg.non_rolling", kLimbsLater},
+        {"quad.leg.bendy", kLimbsLater},
+        {"quad.leg.fk_space", kLimbsLater},
+        {"quad.leg.pelvis", kLimbsLater},
+        {"quad.leg.reverse_lock", kLimbsLater},
+        // digit.finger: to do, after this session's finger changes (another helper's) merge.
+        {"digit.finger.aim_axis", kFingersLater},
+        {"digit.finger.up_dir", kFingersLater},
+        // Face: the defaults are a human's (where the lids meet, what follows the jaw, a chin control); a sample
+        // with another kind of face would set them.
+        {"face.eye.blink_height", kToDo},
+        {"face.jaw.chin", kToDo},
+        {"face.mouth.lip_low_jaw", kToDo},
+        {"face.mouth.corner_jaw", kToDo},
+        {"rig.slide.limit_min", kToDo},
+        {"rig.slide.sliders", kToDo},
+        {"rig.slide.stretch", kToDo},
+        // (Not the vehicle's shutter: its range of motion moves a tweaker past its 15 cm neighbours, which folds
+        // the track and flips the slats within one frame, off the frame grid: RangeOfMotion.)
+        {"rig.slide.tweakers", kToDo},
+        {"rig.slide.do_translate", kToDo},
+        {"rig.slide.do_scale", kToDo},
+        {"rig.slide.rotate_order", kToDo},
+        {"rig.spline.stretch", kToDo},
+        {"rig.spline.orient", kToDo},
+        {"rig.spline.aim_axis", kToDo},
+        {"rig.spline.up_axis", kToDo},
+        {"rig.spline.up_dir", kToDo},
+        {"rig.spline.up_auto", kToDo},
+        {"wheel.legacy.hook", kToDo},
+        {"wheel.legacy.roll", kToDo},
+        {"wheel.legacy.roll_jump", kToDo},
+        // (Not off on the prop: Cleanup.AssimpReadsTheRecordedDefaultsAsNodeMetadata reads its scale control.)
+        {"world.prop.do_scale", kToDo},
+        // (Not +Y on the prop's antenna: Blender's FBX importer would connect its translating joints, BoneInference.)
+        {"core.joints.aim_axis", kToDo},
+        {"core.joints.up_axis", kToDo},
+        {"core.bones.up_axis", kToDo},
+        {"core.bones.rotate_order", kToDo},
+        {"*.sym", kToDo},
+        {"*.parent", kToDo},
+        {"*.virtual_parent", kToDo},
+    };
+    return list;
+}
+
+std::vector<std::string> sampleNames()
+{
+    std::vector<std::string> names;
+    const std::filesystem::path folder = std::filesystem::path(test::samplePath("biped")).parent_path();
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        if (entry.path().extension() == ".yml")
+            names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string optionKey(const templates::TemplateManifest& manifest, const templates::Parameter& option)
+{
+    const auto& common = io::commonOptions();
+    const auto same = std::find_if(common.begin(), common.end(), [&](const templates::Parameter& c) {
+        return c.name == option.name && c.value == option.value;
+    });
+    return (same != common.end() ? std::string("*") : manifest.id) + "." + option.name;
+}
+
+// "template.option" (or "*.option") of every option some sample instance sets
+// to a value other than its template's default.
+std::set<std::string> optionsTheSamplesSet()
+{
+    std::set<std::string> used;
+    for (const std::string& sample : sampleNames()) {
+        const auto guide = test::loadSample(sample);
+        for (const auto& instance : guide.instances()) {
+            const auto* manifest = test::builtinTemplates().find(instance.templateId);
+            if (!manifest) {
+                ADD_FAILURE() << sample << ": unknown template " << instance.templateId;
+                continue;
+            }
+            for (const auto& [name, value] : instance.options)
+                if (const auto* option = manifest->findOpt(name); option && !(option->value == value))
+                    used.insert(optionKey(*manifest, *option));
+        }
+    }
+    return used;
+}
+
+} // namespace
+
+TEST(Samples, EveryOptionIsUsedBySomeSample)
+{
+    const std::set<std::string> used = optionsTheSamplesSet();
+    ASSERT_FALSE(used.empty());
+    std::set<std::string> options;
+    std::string missing;
+    for (const auto* manifest : test::builtinTemplates().all())
+        for (const auto& option : manifest->opts) {
+            const std::string key = optionKey(*manifest, option);
+            if (options.insert(key).second && !used.count(key) && !allowList().count(key))
+                missing += "\n  " + key + " (default " + formatValue(option.value) + ")";
+        }
+    EXPECT_TRUE(missing.empty()) << "options no sample in resources/samples sets to a non-default value (put each in a "
+                                    "sample where a rigger would use it, or on this test's allow-list with the reason):"
+                                 << missing;
+    // The allow-list stays true: an option a sample now uses comes off it.
+    for (const auto& [key, reason] : allowList())
+        EXPECT_FALSE(used.count(key)) << key << " is used by a sample now; take it off the allow-list (" << reason << ")";
+}
+
+// A sample is written as the editor saves it (option keys sorted, no comments
+// in its body), so opening and saving one changes nothing but its first line
+// (a sample's header comment says what it is).
+TEST(Samples, EverySampleSavesBackByteForByte)
+{
+    for (const std::string& sample : sampleNames()) {
+        const std::string original = test::readText(test::samplePath(sample));
+        auto guide = io::readGuideText(original, sample + ".yml");
+        ASSERT_TRUE(guide.ok()) << formatAll(guide.diagnostics());
+        EXPECT_TRUE(guide.diagnostics().empty()) << sample << ": " << formatAll(guide.diagnostics());
+        const auto body = [](const std::string& text) { return text.substr(text.find('\n') + 1); };
+        EXPECT_EQ(body(io::writeGuideText(*guide)), body(original)) << sample;
+    }
+}
