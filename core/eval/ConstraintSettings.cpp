@@ -104,6 +104,7 @@ public:
     {
         m_c.aimAxis = static_cast<int>(s.aim);
         m_c.upAxis = static_cast<int>(s.up);
+        m_c.weightChannel = optionalChannel(s.weight, "weight");
     }
 
     void operator()(const model::DrivenKeyConstraint& s)

@@ -68,7 +68,8 @@ private:
         if (kind == "spline") return spline();
         if (kind == "space") return model::SpaceConstraint{attribute("choice"), flag("orient_only"), flag("keep_offset")};
         if (kind == "drive") return drive();
-        if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
+        if (kind == "aim") // the weight is written only when set
+            return model::AimConstraint{axis("aim"), axis("up"), m_entry["weight"] ? optionalAttribute("weight") : std::nullopt};
         if (kind == "roll") return roll();
         if (kind == "driven_key") return drivenKey();
         ADD_FAILURE() << "unknown kind " << kind;
