@@ -3,7 +3,7 @@
 // the dump's 6 decimals), no field the kind does not have, and the rig
 // evaluates as before. Aim, point and scale constraints (no builder makes
 // them) and a driven key are added to the prop, so every kind is covered (the
-// vehicle brings the wheels' roll).
+// vehicle brings the wheels' roll, the claw aims weighted by an attribute).
 #include "EvalTestSupport.h"
 #include "io/RigDump.h"
 
@@ -259,7 +259,7 @@ void addAimPointScaleAndDrivenKey(model::Rig& rig)
 TEST(ConstraintDump, EveryKindReadsBackFromTheDumpWithItsTypedSettingsAndEvaluatesTheSame)
 {
     std::set<model::ConstraintKind> kinds;
-    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle"}) {
+    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle", "claw"}) {
         SCOPED_TRACE(sample);
         test::PosedRig built(sample);
         model::Rig rig = built.rig;

@@ -195,25 +195,30 @@ TEST(FingerAim, FistCurlAndSpreadStillTurnTheAimedPhalanges)
 
 TEST(FingerAim, TheRightHandIsTheExactMirrorOfTheLeft)
 {
-    PosedRig r(bipedIndexWith({{"target_weights", Value(std::string("[1, 0.5, 0.8]"))}}));
-    ASSERT_TRUE(r.ok());
-    const Mat4 mirror = glm::scale(Mat4(1.0), Vec3(-1.0, 1.0, 1.0));
-    const Vec3 move(0.01, -0.03, 0.02);
-    Pose pose = r.moveTo(r.defaults(), "index.L::ctrls.target", r.restPosition("index.L::ctrls.target") + move, "index.L::ctrls.target");
-    pose = r.moveTo(pose, "index.R::ctrls.target", r.restPosition("index.R::ctrls.target") + Vec3(-move.x, move.y, move.z),
-                    "index.R::ctrls.target");
-    pose[r.channel("index.L::ctrls.fk.0", "curl")] = pose[r.channel("index.R::ctrls.fk.0", "curl")] = 20.0;
-    r.evaluate(pose);
-    std::size_t compared = 0;
-    for (model::RigNodeIndex i = 0; i < r.rig.nodes.size(); ++i) {
-        const std::string& path = r.rig.nodes[i].path;
-        if (path.rfind("index.L::", 0) != 0)
-            continue;
-        const model::RigNodeIndex twin = r.index("index.R::" + path.substr(9));
-        EXPECT_LT(maxAbsDifference(mirror * r.state().worldMatrix(i) * mirror, r.state().worldMatrix(twin)), 1e-9) << path;
-        ++compared;
+    for (const bool flip : {false, true}) { // flip_orient: reflected control frames, the aim's blend included
+        PosedRig r(bipedIndexWith({{"target_weights", Value(std::string("[1, 0.5, 0.8]"))}, {"flip_orient", Value(flip)}}));
+        ASSERT_TRUE(r.ok());
+        const Mat4 mirror = glm::scale(Mat4(1.0), Vec3(-1.0, 1.0, 1.0));
+        const Vec3 move(0.01, -0.03, 0.02);
+        Pose pose = r.moveTo(r.defaults(), "index.L::ctrls.target", r.restPosition("index.L::ctrls.target") + move, "index.L::ctrls.target");
+        pose = r.moveTo(pose, "index.R::ctrls.target", r.restPosition("index.R::ctrls.target") + Vec3(-move.x, move.y, move.z),
+                        "index.R::ctrls.target");
+        pose[r.channel("index.L::ctrls.fk.0", "curl")] = pose[r.channel("index.R::ctrls.fk.0", "curl")] = 20.0;
+        r.evaluate(pose);
+        std::size_t compared = 0;
+        for (model::RigNodeIndex i = 0; i < r.rig.nodes.size(); ++i) {
+            const std::string& path = r.rig.nodes[i].path;
+            if (path.rfind("index.L::", 0) != 0)
+                continue;
+            const model::RigNodeIndex twin = r.index("index.R::" + path.substr(9));
+            // A flipped control's frame is the reflection M W, its skin joint the mirror image M W M.
+            const Mat4 left = r.state().worldMatrix(i), right = r.state().worldMatrix(twin);
+            const bool reflected = flip && path.find("::skin.") == std::string::npos && glm::determinant(Mat3(right)) < 0.0;
+            EXPECT_LT(maxAbsDifference(reflected ? mirror * left : mirror * left * mirror, right), 1e-9) << path << " flip " << flip;
+            ++compared;
+        }
+        EXPECT_GT(compared, 20u);
     }
-    EXPECT_GT(compared, 20u);
 }
 
 TEST(FingerAim, MetaLoadsAsBaseAndWithoutABaseEveryPhalanxIsAimed)

@@ -1,6 +1,7 @@
 // digit.finger and digit.hand. A finger hung on a hand's master control takes
 // the hand's fist, curl, spread and cup attributes: the master drives every
-// finger of the hand without knowing how many there are.
+// finger of the hand without knowing how many there are. A finger's aim rig
+// (target_weights) is DigitAim.h's.
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
