@@ -1,6 +1,7 @@
 #!/bin/sh
 # How this sample was made with rigsmith-cli (run from the repository root after a build): a
 # creature's forelimbs whose three talons and dewclaw close on targets (digit.finger's aim rig).
+# The sample's first line was then given its description.
 set -e
 C=./build/app/rigsmith-cli
 G=${1:-resources/samples/claw.yml}
