@@ -8,6 +8,7 @@
 #include "EvalTestSupport.h"
 #include "IncrementalCheck.h"
 #include "io/GuideFile.h"
+#include "io/RigDump.h"
 
 #include <gtest/gtest.h>
 
@@ -266,6 +267,47 @@ TEST(FingerAim, BadValuesAreRefusedWhereTheyAreWritten)
             EXPECT_FALSE(rig.findPath("claw::ctrls.fk.1")) << option << ": never half-built";
         }
         EXPECT_NE(all.find(message), std::string::npos) << option << "\n" << all;
+    }
+}
+
+TEST(FingerAim, AFullWeightSolvesAsAnAimWithoutOneAndExistingAimsHaveNone)
+{
+    // The face's eyes, the vehicle's camera: aims without a weight, dumped as before (no weight field).
+    for (const std::string sample : {"face", "vehicle"}) {
+        PosedRig r(sample);
+        ASSERT_TRUE(r.ok());
+        std::size_t aims = 0;
+        for (const model::RigConstraint& c : r.rig.constraints)
+            if (const auto* aim = std::get_if<model::AimConstraint>(&c.settings)) {
+                EXPECT_FALSE(aim->weight.has_value()) << c.path;
+                ++aims;
+            }
+        EXPECT_GT(aims, 0u) << sample;
+        const std::string dump = io::writeRigDump(r.rig);
+        for (std::size_t at = dump.find("kind: aim\n"); at != std::string::npos; at = dump.find("kind: aim\n", at + 1)) {
+            const std::string entry = dump.substr(at, dump.find("\n  - ", at) - at);
+            EXPECT_EQ(entry.find("weight:"), std::string::npos) << sample << ": " << entry;
+        }
+    }
+    // The claw's talons at weight 1 (their aim attributes' default) solve exactly as unweighted aims.
+    PosedRig weighted("claw");
+    ASSERT_TRUE(weighted.ok());
+    model::Rig unweighted = weighted.rig;
+    for (model::RigConstraint& c : unweighted.constraints)
+        if (auto* aim = std::get_if<model::AimConstraint>(&c.settings); aim && c.path.rfind("talon_in", 0) == 0)
+            aim->weight.reset();
+    auto program = eval::RigProgram::compile(unweighted);
+    ASSERT_TRUE(program.ok()) << formatAll(program.diagnostics());
+    eval::EvalState state = program->makeState();
+    Pose pose = weighted.moveTo(weighted.defaults(), "talon_in.L::ctrls.target",
+                                weighted.restPosition("talon_in.L::ctrls.target") + Vec3(0.0, -0.02, 0.01), "talon_in.L::ctrls.target");
+    ASSERT_EQ(pose[weighted.channel("talon_in.L::ctrls.fk.1", "aim")], 1.0);
+    pose[weighted.channel("talon_in.L::ctrls.fk.2", "aim")] = 1.0;
+    weighted.evaluate(pose);
+    program->evaluate(pose, state);
+    for (int k = 0; k < 3; ++k) {
+        const model::RigNodeIndex i = weighted.index("talon_in.L::skin." + std::to_string(k));
+        EXPECT_EQ(weighted.state().worldMatrix(i), state.worldMatrix(i)) << k;
     }
 }
 
