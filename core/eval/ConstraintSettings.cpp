@@ -105,6 +105,7 @@ public:
     {
         m_c.aimAxis = static_cast<int>(s.aim);
         m_c.upAxis = static_cast<int>(s.up);
+        m_c.weightChannel = optionalChannel(s.weight, "weight");
     }
 
     void operator()(const model::CarryConstraint& s) { m_ok = readCarry(s, m_rc, m_rig, m_channels, m_c, m_diagnostics) && m_ok; }

@@ -3,6 +3,7 @@
 // the rest pose at compile time and re-applied at evaluation.
 #include "eval/Solvers.h"
 
+#include "eval/AimSolver.h"
 #include "eval/BendyCurve.h"
 #include "eval/DrivenKeys.h"
 
@@ -84,41 +85,6 @@ void solveFkIkBlend(const CompiledConstraint& c, const Pose& pose, std::vector<A
         qb = -qb;
     const Mat3 r = glm::mat3_cast(glm::normalize(qa * (1.0 - w) + qb * w));
     world[c.driven.front()] = compose(r, glm::mix(sa, sb, w), glm::mix(a.translation, b.translation, w));
-}
-
-void solveAim(const CompiledConstraint& c, std::vector<Affine>& world)
-{
-    Affine& driven = world[c.driven.front()];
-    const Vec3 origin = driven.translation;
-    const Vec3 aim = world[c.targets[0]].translation - origin;
-    const Vec3 up = c.targets.size() > 1 ? world[c.targets[1]].translation - origin : Vec3(0, 1, 0);
-    if (glm::length(aim) < 1e-12)
-        return;
-    // Frame with the aim axis on `aim` and the up axis towards `up`, then the rest offset.
-    const Vec3 x = glm::normalize(aim);
-    Vec3 y = up - x * glm::dot(up, x);
-    y = glm::length(y) < 1e-12 ? glm::normalize(glm::cross(x, Vec3(0, 0, 1))) : glm::normalize(y);
-    Mat3 frame;
-    frame[c.aimAxis] = x;
-    frame[c.upAxis] = y;
-    const int third = 3 - c.aimAxis - c.upAxis;
-    const bool cyclic = (c.upAxis == (c.aimAxis + 1) % 3);
-    frame[third] = cyclic ? glm::cross(x, y) : glm::cross(y, x);
-    driven = compose(frame * c.offsets[0].linear, driven.scale(), origin);
-}
-
-// The shortest-arc rotation taking unit vector `from` onto unit vector `to`
-// (about any perpendicular axis when they are opposite).
-Quat shortestArc(const Vec3& from, const Vec3& to)
-{
-    const double d = glm::dot(from, to);
-    if (d < -1.0 + 1e-12) {
-        Vec3 axis = glm::cross(Vec3(1, 0, 0), from);
-        if (glm::length(axis) < 1e-6) axis = glm::cross(Vec3(0, 1, 0), from);
-        return glm::angleAxis(glm::pi<double>(), glm::normalize(axis));
-    }
-    const Vec3 axis = glm::cross(from, to);
-    return glm::normalize(Quat(1.0 + d, axis.x, axis.y, axis.z));
 }
 
 // A twist joint at `fraction` of its segment a -> b turned to `r`, or, bendy,
@@ -317,18 +283,8 @@ std::string prepareConstraint(CompiledConstraint& c, const model::Rig& rig, cons
         return {};
     case ConstraintKind::Blend:
         return t == 2 ? std::string() : "needs two targets (FK, IK)";
-    case ConstraintKind::Aim: {
-        if (t == 0) return "needs an aim target";
-        if (c.aimAxis == c.upAxis || c.aimAxis < 0 || c.aimAxis > 2 || c.upAxis < 0 || c.upAxis > 2)
-            return "aim and up axes must be two different axes of x, y, z";
-        c.offsets.resize(1);
-        CompiledConstraint probe = c; // the aim frame at rest, to keep the driven's rest orientation
-        std::vector<Affine> world = rest;
-        probe.offsets[0] = Affine{};
-        solveAim(probe, world);
-        c.offsets[0].linear = glm::transpose(world[c.driven.front()].rotation()) * rest[c.driven.front()].rotation();
-        return {};
-    }
+    case ConstraintKind::Aim:
+        return prepareAim(c, rest);
     case ConstraintKind::Visibility:
         return t == 0 ? std::string() : "takes no targets";
     case ConstraintKind::Roll:
@@ -393,7 +349,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Point: solveBlendLike(c, world, true, false, false); break;
     case ConstraintKind::Scale: solveBlendLike(c, world, false, false, true); break;
     case ConstraintKind::Blend: solveFkIkBlend(c, pose, world); break;
-    case ConstraintKind::Aim: solveAim(c, world); break;
+    case ConstraintKind::Aim: solveAim(c, pose, world); break;
     case ConstraintKind::Twist: solveTwist(c, state); break;
     case ConstraintKind::Space: solveSpace(c, pose, world); break;
     case ConstraintKind::Drive: solveDrive(c, pose, world); break;

@@ -78,7 +78,7 @@ struct CompiledConstraint {
     std::vector<int> carriedChannels;
     std::vector<Affine> carriedOffsets;
 
-    // Aim: axes and rest offset.
+    // Aim: axes and rest offset (offsets[0]); weightChannel is its weight (-1: 1).
     int aimAxis = 0, upAxis = 1;
 
     // Roll: the driven's axle and forward axes (0 x, 1 y, 2 z), the wheel's
@@ -111,5 +111,8 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
 // Rotation helpers shared with the pose tools.
 Quat rotationOf(const Affine& a);
 Mat3 frameFromAxes(const Vec3& x, const Vec3& normal); // X along x, Z as close to normal as X allows
+// The shortest-arc rotation taking unit vector `from` onto unit vector `to`
+// (about any perpendicular axis when they are opposite; AimSolver.cpp).
+Quat shortestArc(const Vec3& from, const Vec3& to);
 
 } // namespace rs::eval

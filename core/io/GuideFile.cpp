@@ -91,6 +91,22 @@ bool checkAddNodes(YamlReader& r, const YAML::Node& options)
     return problems.empty();
 }
 
+// digit.finger's target_weights written unquoted ([1, 1, 0.5], as Mikan
+// writes it) loads as its quoted text, whatever its length (three numbers
+// would otherwise be a vector); its items are checked at build, at its line.
+std::optional<Value> readNumberList(YamlReader& r, const YAML::Node& v)
+{
+    std::string text = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].IsScalar()) {
+            r.error(v[i], "option target_weights: each item must be a number");
+            return std::nullopt;
+        }
+        text += (i ? ", " : "") + v[i].Scalar();
+    }
+    return Value(text + "]");
+}
+
 bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std::map<model::InstanceId, YAML::Node>& nodes,
                   LegacyRecords& legacy)
 {
@@ -111,7 +127,8 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
         else if (key == "options") {
             if (!r.expectMap(v, "options")) { ok = false; continue; }
             for (const auto& o : v)
-                if (auto value = readValue(r, o.second, "option " + o.first.Scalar())) {
+                if (auto value = o.first.Scalar() == "target_weights" && o.second.IsSequence() ? readNumberList(r, o.second)
+                                                                                               : readValue(r, o.second, "option " + o.first.Scalar())) {
                     instance.options[o.first.Scalar()] = *value;
                     instance.optionSources.at[o.first.Scalar()] = locationOf(o.second, r.file());
                 } else {

@@ -179,6 +179,8 @@ public:
     {
         field("aim", model::axisName(s.aim));
         field("up", model::axisName(s.up));
+        if (s.weight) // written when set, so the dumps of full aims stay as they were
+            field("weight", attributeText(m_rig, s.weight));
     }
 
     void operator()(const model::DrivenKeyConstraint& s)

@@ -96,6 +96,8 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 ref(settings.value);
             } else if constexpr (std::is_same_v<T, RollConstraint>) {
                 optionalRef(settings.amount);
+            } else if constexpr (std::is_same_v<T, AimConstraint>) {
+                optionalRef(settings.weight);
             } else if constexpr (std::is_same_v<T, DrivenKeyConstraint>) {
                 visit(settings.driver.node);
                 visit(settings.driven.node);
@@ -111,10 +113,10 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                     },
                     settings.response);
             } else {
-                // Parent, orient, point, scale, twist and aim read no attribute.
+                // Parent, orient, point, scale and twist read no attribute.
                 static_assert(std::is_same_v<T, ParentConstraint> || std::is_same_v<T, OrientConstraint> ||
                               std::is_same_v<T, PointConstraint> || std::is_same_v<T, ScaleConstraint> ||
-                              std::is_same_v<T, TwistConstraint> || std::is_same_v<T, AimConstraint>);
+                              std::is_same_v<T, TwistConstraint>);
             }
         },
         constraint.settings);

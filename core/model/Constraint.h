@@ -245,10 +245,14 @@ struct DriveConstraint {
 // driven[0]'s `aim` axis points at targets[0]; its `up` axis towards
 // targets[1] when there is one, else world +Y (target positions only). The
 // driven's rest orientation relative to that frame is kept, so the rest pose
-// is unchanged. `aim` and `up` must differ.
+// is unchanged. `aim` and `up` must differ. `weight` (an attribute, its value
+// clamped to 0..1; none: 1) blends by angle (slerp) between the rotation the
+// driven's parent gives it (0) and the aimed one (1); its position and scale
+// are its parent's either way.
 struct AimConstraint {
     Axis aim = Axis::X;
     Axis up = Axis::Y;
+    std::optional<AttributeRef> weight{};
     bool operator==(const AimConstraint&) const = default;
 };
 

@@ -292,6 +292,9 @@ void BuildContext::report(Severity severity, const std::string& message, const s
     if (!option.empty())
         text += " (option '" + option + "')";
     m_assembly.report(severity, &m_instance, text);
+    // An option the guide file set: the message points at where it is written.
+    if (const auto at = m_instance.optionSources.at.find(option); !option.empty() && at != m_instance.optionSources.at.end())
+        m_assembly.rig.diagnostics.back().where = at->second;
     if (severity == Severity::Error)
         m_failed = true;
 }

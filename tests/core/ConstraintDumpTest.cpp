@@ -3,7 +3,8 @@
 // the dump's 6 decimals), no field the kind does not have, and the rig
 // evaluates as before. Aim, point and scale constraints (no builder makes
 // them) and a driven key are added to the prop, so every kind is covered (the
-// vehicle brings the wheels' roll, the quadruped's chained tail tweakers the carry).
+// vehicle brings the wheels' roll, the quadruped's chained tail tweakers the carry,
+// the claw aims weighted by an attribute).
 #include "EvalTestSupport.h"
 #include "io/RigDump.h"
 
@@ -68,7 +69,8 @@ private:
         if (kind == "spline") return spline();
         if (kind == "space") return model::SpaceConstraint{attribute("choice"), flag("orient_only"), flag("keep_offset")};
         if (kind == "drive") return drive();
-        if (kind == "aim") return model::AimConstraint{axis("aim"), axis("up")};
+        if (kind == "aim") // the weight is written only when set
+            return model::AimConstraint{axis("aim"), axis("up"), m_entry["weight"] ? optionalAttribute("weight") : std::nullopt};
         if (kind == "roll") return roll();
         if (kind == "driven_key") return drivenKey();
         if (kind == "carry") {
@@ -263,7 +265,7 @@ void addAimPointScaleAndDrivenKey(model::Rig& rig)
 TEST(ConstraintDump, EveryKindReadsBackFromTheDumpWithItsTypedSettingsAndEvaluatesTheSame)
 {
     std::set<model::ConstraintKind> kinds;
-    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle", "robot"}) {
+    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle", "robot", "claw"}) {
         SCOPED_TRACE(sample);
         test::PosedRig built(sample);
         model::Rig rig = built.rig;

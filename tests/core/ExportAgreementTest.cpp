@@ -211,5 +211,5 @@ TEST_P(ExportAgreement, AssimpPlaysTheGlbAndTheFbxAlikeBetweenKeys)
                 travel, worst, where.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop", "vehicle", "robot"),
+INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw"),
                          [](const testing::TestParamInfo<std::string>& info) { return info.param; });

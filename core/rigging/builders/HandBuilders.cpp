@@ -1,11 +1,13 @@
 // digit.finger and digit.hand. A finger hung on a hand's master control takes
 // the hand's fist, curl, spread and cup attributes: the master drives every
-// finger of the hand without knowing how many there are.
+// finger of the hand without knowing how many there are. A finger's aim rig
+// (target_weights) is DigitAim.h's.
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
 #include "rigging/builders/ChainOrient.h"
 #include "rigging/builders/ControlNodes.h"
+#include "rigging/builders/DigitAim.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,9 +48,11 @@ std::pair<DriveOutput, double> rotationAbout(const Vec3& axis)
 }
 
 // How a digit's links are turned and posed: the frames, the axis a curl turns
-// about (up_axis: the bend normal) and the one a spread turns about.
+// about (up_axis: the bend normal), the one a spread turns about and the one
+// that points at the next joint (aim_axis).
 struct DigitFrames {
     std::vector<Mat4> frames;
+    Vec3 aimAxis{1.0, 0.0, 0.0};
     Vec3 curlAxis{0.0, 0.0, 1.0};
     Vec3 spreadAxis{0.0, 1.0, 0.0};
 };
@@ -62,6 +66,7 @@ DigitFrames digitFrames(const BuildContext& ctx, const std::vector<JointId>& cha
     }
     const ChainOrient orient = readChainOrient(ctx, false).value_or(ChainOrient{}); // gather reported its problems
     d.frames = orientFrames(ctx, chain);
+    d.aimAxis = orient.aimAxis;
     d.curlAxis = orient.upAxis;
     d.spreadAxis = glm::cross(orient.upAxis, orient.aimAxis); // turning about it moves the aim towards -up
     return d;
@@ -96,9 +101,10 @@ public:
 
     bool gather(const BuildContext& ctx) const override
     {
-        const bool chain = kit::chainOfAtLeast(ctx, 2, "a digit").has_value();
+        const auto chain = kit::chainOfAtLeast(ctx, 2, "a digit");
         const bool orient = readChainOrient(ctx, !chainOrient(ctx)).has_value();
-        return chain && orient && readControlNodes(ctx).has_value();
+        const bool nodes = readControlNodes(ctx).has_value();
+        return chain && orient && nodes && readDigitAim(ctx, aimedCount(ctx, chain->size())).has_value();
     }
 
     void generate(BuildContext& ctx) const override
@@ -108,7 +114,7 @@ public:
         const DigitFrames d = digitFrames(ctx, chain, points);
         const auto& frames = d.frames;
         const ControlNodeOptions nodes = readControlNodes(ctx).value_or(ControlNodeOptions{});
-        const bool base = ctx.optionBool("base") && chain.size() > 2;
+        const bool base = hasBase(ctx, chain.size());
         RigNodeIndex parent = ctx.hookNode();
         std::vector<ControlStack> controls;
         for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
@@ -124,6 +130,9 @@ public:
         }
         ctx.setHook(chain.back(), parent);
         const std::size_t first = base ? 1 : 0; // the first phalanx: the knuckle, where a finger spreads
+        // The aim rig before the drives: they turn the phalanges from where it leaves them.
+        addDigitAim(ctx, readDigitAim(ctx, aimedCount(ctx, chain.size())).value_or(DigitAimOptions{}),
+                    DigitChain{controls, chain, points, frames, d.aimAxis, d.curlAxis}, first);
         // Curl bends every phalanx about its bend axis (up_axis) from one attribute.
         const auto [curlOutput, curlSign] = rotationAbout(d.curlAxis);
         const model::AttributeRef curl = ctx.addAttribute(controls.front().ctrl, "curl", 0.0, -30.0, 120.0);
@@ -149,6 +158,11 @@ public:
     }
 
 private:
+    // The first joint is a base control (not a phalanx) with `base` on and more than one phalanx.
+    static bool hasBase(const BuildContext& ctx, std::size_t joints) { return ctx.optionBool("base") && joints > 2; }
+    // Phalanges the aim rig turns: every control but the base.
+    static std::size_t aimedCount(const BuildContext& ctx, std::size_t joints) { return joints - 1 - (hasBase(ctx, joints) ? 1 : 0); }
+
     // A finger on a digit.hand's master: its fist, curl, spread and cup drive
     // this finger by shares from where the finger sits across the hand.
     static void followHand(BuildContext& ctx, const std::vector<ControlStack>& controls, std::size_t first,
