@@ -95,6 +95,8 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 ref(settings.value);
             } else if constexpr (std::is_same_v<T, RollConstraint>) {
                 optionalRef(settings.amount);
+            } else if constexpr (std::is_same_v<T, TwistConstraint>) {
+                optionalRef(settings.bias);
             } else if constexpr (std::is_same_v<T, DrivenKeyConstraint>) {
                 visit(settings.driver.node);
                 visit(settings.driven.node);
@@ -107,10 +109,10 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                     },
                     settings.response);
             } else {
-                // Parent, orient, point, scale, twist and aim read no attribute.
+                // Parent, orient, point, scale and aim read no attribute.
                 static_assert(std::is_same_v<T, ParentConstraint> || std::is_same_v<T, OrientConstraint> ||
                               std::is_same_v<T, PointConstraint> || std::is_same_v<T, ScaleConstraint> ||
-                              std::is_same_v<T, TwistConstraint> || std::is_same_v<T, AimConstraint>);
+                              std::is_same_v<T, AimConstraint>);
             }
         },
         constraint.settings);
