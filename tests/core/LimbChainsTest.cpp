@@ -207,7 +207,7 @@ TEST(LimbChains, WithoutTwistJointsAChainWarnsAndAddsNothing)
 
 TEST(LimbChains, ChainsRebuildIncrementallyAsAFullBuild)
 {
-    model::GuideDocument guide = test::loadSample("biped");
+    model::GuideDocument guide = bipedWith({{"add_chains", Value(std::string(""))}});
     rigging::BuildCache cache;
     test::buildAndCompare(guide, cache, "first build");
     for (const auto& i : guide.instances())
