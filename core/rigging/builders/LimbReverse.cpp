@@ -86,6 +86,7 @@ ReversePivots handPivots(const BuildContext& ctx, const Vec3& wrist, const Vec3&
     p.endJoint = wristJoint;
     p.ballJoint = tipJoint;
     p.toeJoint = tipJoint;
+    p.hand = true;
     return p;
 }
 
@@ -105,8 +106,17 @@ ReverseLock addReverseLock(BuildContext& ctx, const ReversePivots& p, RigNodeInd
     if (withToeTap)
         tap = ctx.addAttribute(ikCtrl, "toe_tap", 0.0, -90.0, 90.0);
 
+    auto token = [&](const std::string& key) -> std::string {
+        if (!p.hand)
+            return key;
+        if (key == "heel") return "hand_heel";
+        if (key == "toe") return "fingertips";
+        if (key == "ball") return "knuckles";
+        if (key == "ankle") return "wrist";
+        return key;
+    };
     auto group = [&](const std::string& key, RigNodeIndex parent, const Vec3& at, model::JointId source) {
-        return kit::addSetup(ctx, RigNodeKind::Group, "rfoot." + key, key, {}, parent, frameAt(at), source);
+        return kit::addSetup(ctx, RigNodeKind::Group, "rfoot." + key, token(key), {}, parent, frameAt(at), source);
     };
     using model::DriveOutput;
     auto drive = [&](const std::string& key, RigNodeIndex node, const AttributeRef& value, DriveOutput output, double factor,
@@ -123,7 +133,7 @@ ReverseLock addReverseLock(BuildContext& ctx, const ReversePivots& p, RigNodeInd
     const auto ballNode = group("ball", intNode, p.ball, p.ballJoint);
     if (withToeTap)
         out.toeTap = group("toe_tap", intNode, p.ball, p.ballJoint);
-    out.effector = kit::addSetup(ctx, RigNodeKind::Group, "rfoot.ankle", "ankle", {}, ballNode, frameAt(p.end), p.endJoint);
+    out.effector = kit::addSetup(ctx, RigNodeKind::Group, "rfoot.ankle", token("ankle"), {}, ballNode, frameAt(p.end), p.endJoint);
 
     drive("heel_roll", heelNode, roll, DriveOutput::RotateZ, -1.0, range(-90.0, 0.0));
     drive("heel_twist", heelNode, heelTwist, DriveOutput::RotateY, 1.0, range(-90.0, 90.0));

@@ -22,6 +22,7 @@ struct ReversePivots {
     Vec3 end, heel, ball, toe, bankInt, bankExt;
     Vec3 forward, up;
     model::JointId endJoint = model::kNoId, ballJoint = model::kNoId, toeJoint = model::kNoId;
+    bool hand = false; // names the groups for a hand (hand_heel, fingertips, knuckles, wrist); tags stay the foot's
 };
 
 // A leg's pivots: heel, bank_int and bank_ext from the guides tagged so (a
