@@ -243,6 +243,34 @@ TEST(LimbTwist, TheRightSideRollsAsTheMirrorOfTheLeft)
               0.1);
 }
 
+TEST(LimbTwist, TheQuadrupedsHindLegRollsAtTheHockAndCarriesItsChains)
+{
+    model::GuideDocument guide = test::loadSample("quadruped");
+    for (const auto& i : guide.instances())
+        if (i.templateId == "quad.leg") {
+            guide.instance(i.id)->options["advanced_twist"] = Value(true);
+            guide.instance(i.id)->options["add_chains"] = Value(std::string("[haunch]"));
+        }
+    PosedRig r(guide);
+    ASSERT_TRUE(r.ok());
+    EXPECT_FALSE(hasErrors(r.rig.diagnostics)) << formatAll(r.rig.diagnostics);
+    for (const std::string leg : {"hind_leg.L", "hind_leg.R"}) {
+        const Pose base = r.defaults();
+        r.evaluate(base);
+        const auto before = rotationsOf(r, leg);
+        Pose pose = base;
+        pose[r.channel(leg + "::ctrls.switch", "twist_end")] = 40.0; // at the hock, the lower twisting segment's end
+        r.evaluate(pose);
+        for (int t = 0; t < 2; ++t) {
+            const std::string id = leg + "::skin.dn." + std::to_string(t), chain = leg + "::skin.dn.haunch." + std::to_string(t);
+            EXPECT_NEAR(rollDegrees(r, id, before.at(id)), 40.0 * (t + 1) / 3.0, 1e-6) << id;
+            EXPECT_LT(maxAbsDifference(r.state().worldMatrix(r.index(chain)), r.state().worldMatrix(r.index(id))), 1e-9) << chain;
+        }
+        const std::string cannon = leg + "::skin.limb.2";
+        EXPECT_LT(maxAbsDifference(Mat4(rotationAt(r, cannon)), Mat4(before.at(cannon))), 1e-12) << "the cannon does not roll";
+    }
+}
+
 TEST(LimbTwist, AdvancedTwistRebuildsIncrementallyAsAFullBuild)
 {
     model::GuideDocument guide = bipedWith({{"advanced_twist", Value(false)}});
