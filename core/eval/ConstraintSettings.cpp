@@ -50,6 +50,7 @@ public:
         m_c.bendy = s.bendy;
         m_c.bendyLower = s.lower;
         m_c.byLength = s.byLength;
+        m_c.biasChannel = optionalChannel(s.bias, "bias");
     }
     void operator()(const model::VisibilityConstraint& s)
     {

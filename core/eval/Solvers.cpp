@@ -98,9 +98,18 @@ void placeTwistJoint(const CompiledConstraint& c, std::vector<Affine>& world, co
     driven = compose(r, driven.scale(), position + a.linear * c.restDelta);
 }
 
+// The share of the twist a twist joint takes: its fraction, shaped by the
+// bias channel when it has one (model::TwistConstraint::bias).
+double twistShare(const CompiledConstraint& c, const Pose& pose)
+{
+    if (c.biasChannel < 0 || c.fraction <= 0.0)
+        return c.fraction;
+    return std::pow(c.fraction, std::exp2(std::clamp(pose[c.biasChannel], -1.0, 1.0)));
+}
+
 // The roll of targets[0] about its bone relative to targets[2], and the
 // swing-only frame it is measured from (model::TwistConstraint, non-rolling).
-void solveNonRollingTwist(const CompiledConstraint& c, std::vector<Affine>& world)
+void solveNonRollingTwist(const CompiledConstraint& c, double share, std::vector<Affine>& world)
 {
     const Affine& a = world[c.targets[0]];
     const Affine& b = world[c.targets[1]];
@@ -112,15 +121,15 @@ void solveNonRollingTwist(const CompiledConstraint& c, std::vector<Affine>& worl
     if (roll.w < 0.0)
         roll = -roll;
     const double angle = 2.0 * std::atan2(glm::dot(Vec3(roll.x, roll.y, roll.z), c.twistAxis), roll.w);
-    Mat3 r = glm::mat3_cast(qr * swung * glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
+    Mat3 r = glm::mat3_cast(qr * swung * glm::angleAxis(angle * share, c.twistAxis)) * c.offsets[0].linear;
     placeTwistJoint(c, world, a, b, r);
 }
 
-void solveTwist(const CompiledConstraint& c, EvalState& state)
+void solveTwist(const CompiledConstraint& c, const Pose& pose, EvalState& state)
 {
     std::vector<Affine>& world = state.world;
     if (c.nonRolling) {
-        solveNonRollingTwist(c, world);
+        solveNonRollingTwist(c, twistShare(c, pose), world);
         return;
     }
     const Affine& a = world[c.targets[0]];
@@ -141,7 +150,7 @@ void solveTwist(const CompiledConstraint& c, EvalState& state)
         angle = 2.0 * std::atan2(along, delta.w);
         state.twistAngles[c.slot] = angle;
     }
-    Mat3 r = ra * glm::mat3_cast(glm::angleAxis(angle * c.fraction, c.twistAxis)) * c.offsets[0].linear;
+    Mat3 r = ra * glm::mat3_cast(glm::angleAxis(angle * twistShare(c, pose), c.twistAxis)) * c.offsets[0].linear;
     placeTwistJoint(c, world, a, b, r);
 }
 
@@ -350,7 +359,7 @@ void solveConstraint(const CompiledConstraint& c, const Pose& pose, EvalState& s
     case ConstraintKind::Scale: solveBlendLike(c, world, false, false, true); break;
     case ConstraintKind::Blend: solveFkIkBlend(c, pose, world); break;
     case ConstraintKind::Aim: solveAim(c, pose, world); break;
-    case ConstraintKind::Twist: solveTwist(c, state); break;
+    case ConstraintKind::Twist: solveTwist(c, pose, state); break;
     case ConstraintKind::Space: solveSpace(c, pose, world); break;
     case ConstraintKind::Drive: solveDrive(c, pose, world); break;
     case ConstraintKind::Ik: solveIk(c, pose, world); break;

@@ -59,6 +59,7 @@ struct CompiledConstraint {
     // Twist: rest relative rotation of targets[1] to targets[0], twist axis in targets[0]'s frame.
     int slot = 0;                      // this constraint's index (its scratch in EvalState)
     int shareTwistOf = -1;             // an earlier twist with the same targets: reuse its angle
+    int biasChannel = -1;              // twist: the share's bias (model::TwistConstraint::bias), none: linear
     Quat restRelative{1, 0, 0, 0};
     Vec3 twistAxis{1, 0, 0};
     Vec3 restDelta{0.0};

@@ -74,10 +74,12 @@ bool checkAxisPair(YamlReader& r, const YAML::Node& options)
     return false;
 }
 
-// add_nodes (builders/ControlNodes.h): a bad group name is refused where it is written.
-bool checkAddNodes(YamlReader& r, const YAML::Node& options)
+// add_nodes (builders/ControlNodes.h) and add_chains (builders/LimbTwist.h):
+// a bad name is refused where it is written.
+bool checkNameList(YamlReader& r, const YAML::Node& options, const std::string& option,
+                   std::vector<std::string> (*problemsOf)(const std::vector<std::string>&))
 {
-    const YAML::Node v = options["add_nodes"];
+    const YAML::Node v = options[option];
     auto items = v && v.IsScalar() ? parseFlowList(v.Scalar()) : Result<std::vector<std::string>>(std::vector<std::string>{});
     if (v && v.IsSequence()) { // written unquoted: [inf, pose]
         std::vector<std::string> names;
@@ -85,9 +87,9 @@ bool checkAddNodes(YamlReader& r, const YAML::Node& options)
             names.push_back(e.IsScalar() ? e.Scalar() : std::string());
         items = Result<std::vector<std::string>>(std::move(names));
     }
-    const auto problems = items.ok() ? templates::addNodesProblems(*items) : std::vector<std::string>{"is no list"};
+    const auto problems = items.ok() ? problemsOf(*items) : std::vector<std::string>{"is no list"};
     for (const std::string& problem : problems)
-        r.error(v, "option add_nodes " + problem);
+        r.error(v, "option " + option + " " + problem);
     return problems.empty();
 }
 
@@ -135,7 +137,8 @@ bool readInstance(YamlReader& r, const YAML::Node& node, GuideDocument& doc, std
                     ok = false;
                 }
             ok = checkAxisPair(r, v) && ok;
-            ok = checkAddNodes(r, v) && ok;
+            ok = checkNameList(r, v, "add_nodes", templates::addNodesProblems) && ok;
+            ok = checkNameList(r, v, "add_chains", templates::addChainsProblems) && ok;
         } else if (key == "structure" || key == "names") {
             if (!r.expectMap(v, key)) { ok = false; continue; }
             auto& target = key == "structure" ? instance.structure : instance.names;

@@ -116,6 +116,8 @@ public:
             field("lower", boolText(s.lower));
             field("by_length", boolText(s.byLength));
         }
+        if (s.bias) // written when set (advanced_twist), so older dumps stay as they were
+            field("bias", attributeText(m_rig, s.bias));
     }
     void operator()(const model::VisibilityConstraint& s)
     {

@@ -98,6 +98,8 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                 optionalRef(settings.amount);
             } else if constexpr (std::is_same_v<T, AimConstraint>) {
                 optionalRef(settings.weight);
+            } else if constexpr (std::is_same_v<T, TwistConstraint>) {
+                optionalRef(settings.bias);
             } else if constexpr (std::is_same_v<T, DrivenKeyConstraint>) {
                 visit(settings.driver.node);
                 visit(settings.driven.node);
@@ -113,10 +115,9 @@ void forEachNodeIndex(RigConstraint& constraint, const std::function<void(RigNod
                     },
                     settings.response);
             } else {
-                // Parent, orient, point, scale and twist read no attribute.
+                // Parent, orient, point and scale read no attribute.
                 static_assert(std::is_same_v<T, ParentConstraint> || std::is_same_v<T, OrientConstraint> ||
-                              std::is_same_v<T, PointConstraint> || std::is_same_v<T, ScaleConstraint> ||
-                              std::is_same_v<T, TwistConstraint>);
+                              std::is_same_v<T, PointConstraint> || std::is_same_v<T, ScaleConstraint>);
             }
         },
         constraint.settings);

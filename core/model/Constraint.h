@@ -154,6 +154,12 @@ struct TwistConstraint {
     bool bendy = false; // rides the curve of the six last targets (above)
     bool lower = false; // bendy: the lower segment (from the tweak), else the upper (to it)
     bool byLength = true; // bendy: `fraction` of the curve's arc length, else of its parameter
+    // Shapes the share (a limb's advanced_twist): the joint turns by
+    // fraction^(2^bias) of the twist instead of `fraction`, bias clamped to
+    // [-1, 1]. 0 (and none) is linear; 1 (fraction squared) leaves more of the
+    // twist to the end, -1 (its square root) moves it towards the start. The
+    // joint's place along the segment does not change.
+    std::optional<AttributeRef> bias{};
     bool operator==(const TwistConstraint&) const = default;
 };
 

@@ -42,4 +42,17 @@ std::vector<std::string> addNodesProblems(const std::vector<std::string>& names)
     return problems;
 }
 
+std::vector<std::string> addChainsProblems(const std::vector<std::string>& names)
+{
+    std::vector<std::string> problems, seen;
+    for (const std::string& name : names) {
+        if (!isIdentifier(name))
+            problems.push_back("'" + name + "' is no chain name (letters, digits and '_', not starting with a digit)");
+        else if (std::find(seen.begin(), seen.end(), name) != seen.end())
+            problems.push_back("names '" + name + "' twice");
+        seen.push_back(name);
+    }
+    return problems;
+}
+
 } // namespace rs::templates

@@ -69,6 +69,9 @@ std::uint16_t expectedAnimatable(const model::GuideDocument& guide, const model:
         return T | R | S; // props' parts and the one global scale control
     if (tag == "ctrls.switch" || tag == "ctrls.hand")
         return 0; // attribute holders
+    const bool limb = templateId == "arm.limb" || templateId == "leg.limb" || templateId == "quad.leg";
+    if (limb && (tag.rfind("ctrls.up.", 0) == 0 || tag.rfind("ctrls.dn.", 0) == 0))
+        return T | R | S; // add_chains tweaks: the flesh moves, turns and bulges
     const auto& options = guide.instance(node.key.instance)->options;
     auto on = [&](const char* option) { auto it = options.find(option); return it != options.end() && it->second == Value(true); };
     if (templateId == "wheel.legacy" && tag == "ctrls.spin")

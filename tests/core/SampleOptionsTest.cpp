@@ -42,21 +42,6 @@ constexpr const char* kFingersLater =
 const std::map<std::string, std::string>& allowList()
 {
     static const std::map<std::string, std::string> list = {
-        // Added by another change this session (not in this branch's registry yet;
-        // rig.spline's new `tweakers: chained` is a value of an option the vehicle
-        // already sets).
-        {"rig.spline.add_nodes", "added by another change this session"},
-        {"rig.spline.parent_scale", "added by another change this session"},
-        {"rig.spline.rotate_order", "added by another change this session"},
-        {"rig.spline.flip_orient", "added by another change this session"},
-        {"arm.limb.add_chains", "added by another change this session"},
-        {"leg.limb.add_chains", "added by another change this session"},
-        {"quad.leg.add_chains", "added by another change this session"},
-        {"arm.limb.advanced_twist", "added by another change this session"},
-        {"leg.limb.advanced_twist", "added by another change this session"},
-        {"quad.leg.advanced_twist", "added by another change this session"},
-        {"arm.limb.reverse_lock", "added by another change this session"},
-
         // Exempt: their non-default is another mechanism a sample already uses.
         {"arm.limb.branches", kBothSides},
         {"leg.limb.branches", kBothSides},
@@ -88,6 +73,7 @@ const std::map<std::string, std::string>& allowList()
         {"arm.limb.effector_plane", kLimbsLater},
         {"arm.limb.ik_fk_visibility", kLimbsLater},
         {"arm.limb.auto_clavicle", kLimbsLater},
+        {"arm.limb.add_chains", kLimbsLater},
         // leg.limb: to do, after this session's limb changes (another helper's) merge.
         // (Not soft_ik on the quadruped: its legs stand within 2 cm of full reach, so soft IK moves the rest pose.)
         {"leg.limb.soft_ik", kLimbsLater},
@@ -103,6 +89,7 @@ const std::map<std::string, std::string>& allowList()
         {"leg.limb.ik_fk_visibility", kLimbsLater},
         {"leg.limb.fk_space", kLimbsLater},
         {"leg.limb.reverse_lock", kLimbsLater},
+        {"leg.limb.advanced_twist", kLimbsLater},
         // quad.leg: to do, after this session's limb changes (another helper's) merge.
         {"quad.leg.soft_ik", kLimbsLater},
         {"quad.leg.ik_blend", kLimbsLater},
@@ -124,6 +111,8 @@ const std::map<std::string, std::string>& allowList()
         {"quad.leg.fk_space", kLimbsLater},
         {"quad.leg.pelvis", kLimbsLater},
         {"quad.leg.reverse_lock", kLimbsLater},
+        {"quad.leg.advanced_twist", kLimbsLater},
+        {"quad.leg.add_chains", kLimbsLater},
         // digit.finger: to do, after this session's finger changes (another helper's) merge.
         {"digit.finger.aim_axis", kFingersLater},
         {"digit.finger.up_dir", kFingersLater},
@@ -143,6 +132,10 @@ const std::map<std::string, std::string>& allowList()
         {"rig.slide.do_scale", kToDo},
         {"rig.slide.rotate_order", kToDo},
         {"rig.spline.stretch", kToDo},
+        {"rig.spline.add_nodes", kToDo},
+        {"rig.spline.parent_scale", kToDo},
+        {"rig.spline.rotate_order", kToDo},
+        {"rig.spline.flip_orient", kToDo},
         {"rig.spline.orient", kToDo},
         {"rig.spline.aim_axis", kToDo},
         {"rig.spline.up_axis", kToDo},

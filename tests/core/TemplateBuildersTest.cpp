@@ -104,8 +104,9 @@ TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
         EXPECT_EQ(n.name.substr(0, n.name.rfind("_R")), left.name.substr(0, left.name.rfind("_L"))) << n.path;
         ++pairs;
     }
-    EXPECT_EQ(pairs, 184u) << "arms and legs (with their IK, pole and FK space groups, pins, auto-clavicle groups and bendy "
-                              "controls), two hand masters and ten fingers (with their pose groups)";
+    EXPECT_EQ(pairs, 202u) << "arms and legs (with their IK, pole and FK space groups, pins, auto-clavicle groups, bendy "
+                              "controls, the hands' reverse lock pivots and the legs' front chains), two hand masters and ten "
+                              "fingers (with their pose groups)";
     // Constraints come in pairs too.
     for (const auto& c : rig.constraints)
         if (auto r = c.path.find(".R::"); r != std::string::npos)

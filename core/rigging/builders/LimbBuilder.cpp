@@ -10,6 +10,8 @@
 #include "rigging/builders/BuilderKit.h"
 #include "rigging/builders/LimbBendy.h"
 #include "rigging/builders/LimbParts.h"
+#include "rigging/builders/LimbReverse.h"
+#include "rigging/builders/LimbTwist.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
@@ -120,8 +122,14 @@ private:
 
     // The bend normal of the limb (Z of every segment frame) and the pole direction.
     void bendOf(const BuildContext& ctx, const LimbGuide& g, Vec3& normal, Vec3& poleDirection) const;
-    void buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNodeIndex ikCtrl, const Vec3& normal,
-                          RigNodeIndex& effector, RigNodeIndex& toeTap) const;
+    // The reverse lock's pivots (LimbReverse.h): the leg's foot, the arm's hand.
+    limb::ReversePivots pivotsOf(const BuildContext& ctx, const LimbGuide& g, const Vec3& normal, const Vec3& poleDirection) const
+    {
+        const Vec3 end = g.points[limbCount() - 1], tip = ctx.guidePosition(g.end);
+        if (!legLike())
+            return limb::handPivots(ctx, end, tip, normal, poleDirection, g.limb.back(), g.end);
+        return limb::footPivots(ctx, end, tip, ctx.guidePosition(g.toe), normal, g.limb.back(), g.end, g.toe);
+    }
 
     LimbKind m_kind;
 };
@@ -223,8 +231,11 @@ void LimbBuilder::generate(BuildContext& ctx) const
     kit::animate(ctx, poleCtrl, kit::kTranslate);
     const auto pinCtrl = limb::addPinControl(ctx, poleSpace, g.points[1], g.limb[1]);
     RigNodeIndex effector = ikCtrl, toeTap = model::kNoNode;
-    if (legLike() && limb::hasReverseFoot(ctx))
-        buildReverseFoot(ctx, g, ikCtrl, normal, effector, toeTap);
+    if (limb::hasReverseLock(ctx, legLike())) {
+        const limb::ReverseLock lock = limb::addReverseLock(ctx, pivotsOf(ctx, g, normal, poleDirection), ikCtrl, legLike());
+        effector = lock.effector;
+        toeTap = lock.toeTap;
+    }
 
     // IK chain (setup joints) and the blend chain everything else follows.
     std::vector<RigNodeIndex> ik, blend;
@@ -283,7 +294,11 @@ void LimbBuilder::generate(BuildContext& ctx) const
     limb::addBlendVisibility(ctx, weight, fkShown, ikShown);
     if (ctx.optionBool("do_skin")) {
         const limb::BendControls bend = limb::addBendControls(ctx, g.points, frames, g.limb, blend, limbGroup);
-        limb::addTwistJoints(ctx, g.points, frames, g.limb, blend, skin, limbGroup, bend.curveTargets);
+        const limb::AdvancedTwist advanced = limb::addAdvancedTwistAttributes(ctx, settings);
+        const limb::TwistJoints twist =
+            limb::addTwistJoints(ctx, g.points, frames, g.limb, blend, skin, limbGroup, bend.curveTargets, advanced.bias);
+        limb::addAdvancedTwistRolls(ctx, advanced, twist, skin);
+        limb::addTwistChains(ctx, twist, g.limb);
         if (ctx.optionBool("blend_joints"))
             for (std::size_t i = 1; i < k; ++i) {
                 const auto joint = kit::addSkin(ctx, "mid." + std::to_string(i - 1), "mid", int(i), skin[i - 1], frames[i], g.limb[i]);
@@ -300,81 +315,6 @@ void LimbBuilder::generate(BuildContext& ctx) const
     for (const char* tag : {"heel", "bank_int", "bank_ext"})
         for (JointId j : ctx.taggedJoints(tag))
             ctx.setHook(j, blend.back());
-}
-
-void LimbBuilder::buildReverseFoot(BuildContext& ctx, const LimbGuide& g, RigNodeIndex ikCtrl, const Vec3& normal,
-                                   RigNodeIndex& effector, RigNodeIndex& toeTap) const
-{
-    const Vec3 ankle = g.points[limbCount() - 1];
-    const Vec3 ball = ctx.guidePosition(g.end);
-    const Vec3 toe = ctx.guidePosition(g.toe);
-    const double ground = std::min(toe.y, ball.y);
-
-    // Forward along the ground, side = the leg's bend axis flattened.
-    Vec3 forward = toe - ankle;
-    forward.y = 0.0;
-    if (glm::length(forward) < 1e-6)
-        forward = Vec3(0.0, 0.0, 1.0);
-    forward = glm::normalize(forward);
-    Vec3 side = glm::cross(Vec3(0.0, 1.0, 0.0), forward);
-    if (glm::dot(side, normal) < 0.0)
-        side = -side;
-
-    auto pivot = [&](const char* tag, Vec3 fallback) {
-        const auto joints = ctx.taggedJoints(tag);
-        if (joints.empty()) {
-            ctx.warning(std::string("no guide is tagged '") + tag + "'; the " + tag +
-                        " pivot is placed from the foot (add a guide with tag '" + tag + "' under the ankle)");
-            return fallback;
-        }
-        if (joints.size() > 1)
-            ctx.warning(std::to_string(joints.size()) + " guides are tagged '" + tag + "'; using the first");
-        return ctx.guidePosition(joints.front());
-    };
-    const Vec3 heel = pivot("heel", Vec3(ankle.x, ground, ankle.z) - forward * 0.05);
-    const Vec3 bankInt = pivot("bank_int", Vec3(ball.x, ground, ball.z) - side * 0.04);
-    const Vec3 bankExt = pivot("bank_ext", Vec3(ball.x, ground, ball.z) + side * 0.04);
-
-    // Pivot frames: X forward, Y up, Z = X x Y; a positive turn about Z lifts the
-    // toes, about X tilts the foot towards Z. Roll lifts the heel (negative about
-    // Z), a negative roll rocks back on the heel; bank rolls onto the outer edge.
-    const Vec3 lateral = glm::normalize(glm::cross(forward, Vec3(0.0, 1.0, 0.0)));
-    auto frameAt = [&](const Vec3& p) { return kit::aimFrame(p, forward, lateral); };
-    const AttributeRef roll = ctx.addAttribute(ikCtrl, "roll", 0.0, -90.0, 90.0);
-    const AttributeRef rollBreak = ctx.addAttribute(ikCtrl, "roll_break", 30.0, 0.0, 90.0);
-    const AttributeRef bank = ctx.addAttribute(ikCtrl, "bank", 0.0, -90.0, 90.0);
-    const AttributeRef heelTwist = ctx.addAttribute(ikCtrl, "heel_twist", 0.0, -90.0, 90.0);
-    const AttributeRef toeTwist = ctx.addAttribute(ikCtrl, "toe_twist", 0.0, -90.0, 90.0);
-    const AttributeRef tap = ctx.addAttribute(ikCtrl, "toe_tap", 0.0, -90.0, 90.0);
-
-    auto group = [&](const std::string& key, RigNodeIndex parent, const Vec3& p, JointId source) {
-        return kit::addSetup(ctx, RigNodeKind::Group, "rfoot." + key, key, {}, parent, frameAt(p), source);
-    };
-    using model::DriveOutput;
-    auto drive = [&](const std::string& key, RigNodeIndex node, const AttributeRef& value, DriveOutput output, double factor,
-                     model::DriveResponse response) {
-        ctx.addConstraint("cns.rfoot." + key, {node}, {},
-                          model::DriveConstraint{.value = value, .output = output, .factor = factor, .response = response});
-    };
-    auto range = [](double low, double high) { return model::DriveClamped{.low = low, .high = high}; };
-    const JointId ankleJoint = g.limb[limbCount() - 1];
-    const auto heelNode = group("heel", ikCtrl, heel, ankleJoint);
-    const auto toeNode = group("toe", heelNode, Vec3(toe.x, ground, toe.z), g.toe);
-    const auto extNode = group("bank_ext", toeNode, bankExt, ankleJoint);
-    const auto intNode = group("bank_int", extNode, bankInt, ankleJoint);
-    const auto ballNode = group("ball", intNode, ball, g.end);
-    toeTap = group("toe_tap", intNode, ball, g.end);
-    effector = kit::addSetup(ctx, RigNodeKind::Group, "rfoot.ankle", "ankle", {}, ballNode, frameAt(ankle), ankleJoint);
-
-    drive("heel_roll", heelNode, roll, DriveOutput::RotateZ, -1.0, range(-90.0, 0.0));
-    drive("heel_twist", heelNode, heelTwist, DriveOutput::RotateY, 1.0, range(-90.0, 90.0));
-    drive("toe_roll", toeNode, roll, DriveOutput::RotateZ, -1.0, model::DrivePastBreak{.breakAngle = rollBreak});
-    drive("toe_twist", toeNode, toeTwist, DriveOutput::RotateY, 1.0, range(-90.0, 90.0));
-    const double outward = glm::dot(lateral, bankExt - bankInt) >= 0.0 ? 1.0 : -1.0;
-    drive("bank_ext", extNode, bank, DriveOutput::RotateX, outward, range(0.0, 90.0));
-    drive("bank_int", intNode, bank, DriveOutput::RotateX, outward, range(-90.0, 0.0));
-    drive("ball_roll", ballNode, roll, DriveOutput::RotateZ, -1.0, model::DriveUpToBreak{.breakAngle = rollBreak});
-    drive("toe_tap", toeTap, tap, DriveOutput::RotateZ, 1.0, range(-90.0, 90.0));
 }
 
 } // namespace

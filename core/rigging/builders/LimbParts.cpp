@@ -184,11 +184,12 @@ void addBlendVisibility(BuildContext& ctx, const model::AttributeRef& blend, con
     ctx.addConstraint("vis.ik", ik, {}, model::VisibilityConstraint{.value = blend, .when = model::ShowWhen::Above, .threshold = 0.0});
 }
 
-void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const std::vector<Mat4>& frames,
-                    const std::vector<model::JointId>& guides, const std::vector<RigNodeIndex>& blend,
-                    const std::vector<RigNodeIndex>& skin, RigNodeIndex limbRoot,
-                    const std::vector<std::vector<RigNodeIndex>>& bendCurves)
+TwistJoints addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const std::vector<Mat4>& frames,
+                           const std::vector<model::JointId>& guides, const std::vector<RigNodeIndex>& blend,
+                           const std::vector<RigNodeIndex>& skin, RigNodeIndex limbRoot,
+                           const std::vector<std::vector<RigNodeIndex>>& bendCurves, const std::optional<model::AttributeRef>& bias)
 {
+    TwistJoints out;
     const bool byLength = bendCurves.empty() || ctx.optionString("smooth_type") != "parametric";
     const bool nonRolling = ctx.optionBool("non_rolling");
     if (nonRolling && skin[0] != model::kNoNode) // the upper segment's own skin joint keeps the parent's roll
@@ -213,9 +214,12 @@ void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const st
                 targets.insert(targets.end(), bendCurves[s].begin(), bendCurves[s].end());
             ctx.addConstraint("cns." + key, {joint}, targets,
                               model::TwistConstraint{.fraction = fraction, .nonRolling = upper, .bendy = bendy, .lower = bendy && s == 1,
-                                                     .byLength = byLength});
+                                                     .byLength = byLength, .bias = bias});
+            out.joints[s].push_back(joint);
+            out.fractions[s].push_back(fraction);
         }
     }
+    return out;
 }
 
 AutoClavicle addAutoClavicleGroups(BuildContext& ctx, RigNodeIndex hook, const Vec3& clavicle, const Vec3& shoulder,
@@ -264,8 +268,6 @@ void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& g, RigNodeIndex 
     ctx.addConstraint("cns.auto_clavicle.share", {g.share}, {g.rest, g.aim}, model::BlendConstraint{.weight = share});
     ctx.addConstraint("cns.auto_clavicle.follow", {g.follow}, {g.rest, g.share}, model::BlendConstraint{.weight = ikBlend});
 }
-
-bool hasReverseFoot(const BuildContext& ctx) { return optionOnUnlessOff(ctx, "reverse_lock"); }
 
 RigNodeIndex addPinControl(BuildContext& ctx, RigNodeIndex poleSpace, const Vec3& mid, model::JointId source)
 {

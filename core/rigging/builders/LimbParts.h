@@ -11,6 +11,7 @@
 // space (BuildContext), so a mirrored branch gets the mirror image.
 #include "rigging/BuildContext.h"
 
+#include <optional>
 #include <vector>
 
 namespace rs::rigging::limb {
@@ -70,11 +71,19 @@ void addBlendVisibility(BuildContext& ctx, const model::AttributeRef& blend, con
 // the upper twist joints share the upper bone's roll relative to `limbRoot`
 // linearly (0 at the shoulder or hip, all of it at the elbow or knee).
 // `bendCurves` (LimbBendy.h, per segment; empty: straight) makes them ride
-// their segment's bendy curve, spaced by `smooth_type`.
-void addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const std::vector<Mat4>& frames,
-                    const std::vector<model::JointId>& guides, const std::vector<model::RigNodeIndex>& blend,
-                    const std::vector<model::RigNodeIndex>& skin, model::RigNodeIndex limbRoot,
-                    const std::vector<std::vector<model::RigNodeIndex>>& bendCurves = {});
+// their segment's bendy curve, spaced by `smooth_type`. `bias` (advanced_twist,
+// LimbTwist.h) shapes every twist joint's share (model::TwistConstraint::bias).
+struct TwistJoints {
+    // Per segment (0 upper, 1 lower): the twist joints from the start, and
+    // the fraction of the segment each sits at.
+    std::vector<model::RigNodeIndex> joints[2];
+    std::vector<double> fractions[2];
+};
+TwistJoints addTwistJoints(BuildContext& ctx, const std::vector<Vec3>& points, const std::vector<Mat4>& frames,
+                           const std::vector<model::JointId>& guides, const std::vector<model::RigNodeIndex>& blend,
+                           const std::vector<model::RigNodeIndex>& skin, model::RigNodeIndex limbRoot,
+                           const std::vector<std::vector<model::RigNodeIndex>>& bendCurves = {},
+                           const std::optional<model::AttributeRef>& bias = {});
 
 // Auto-clavicle (arms): hidden groups under `hook` at the clavicle's frame.
 // `follow` (what the clavicle control hangs under) turns towards `aim` (aimed
@@ -91,11 +100,6 @@ AutoClavicle addAutoClavicleGroups(BuildContext& ctx, model::RigNodeIndex hook, 
 // `clavicle` and the aim and blends.
 void connectAutoClavicle(BuildContext& ctx, const AutoClavicle& groups, model::RigNodeIndex clavicle, model::RigNodeIndex ikControl,
                          const model::AttributeRef& ikBlend);
-
-// Legs build the reverse foot (heel, toe, ball and bank pivots under the IK
-// control) unless `reverse_lock` (Mikan's) is off: then the IK control drives
-// the ankle and the toe directly.
-bool hasReverseFoot(const BuildContext& ctx);
 
 // Pin (option `pin`): a control at the middle joint (elbow, knee) in the
 // pole's space; the IK's pin channel (on `settings`, 0 by default) locks the
