@@ -1,6 +1,7 @@
 #include "io/RangeOfMotion.h"
 
 #include "eval/PoseTools.h"
+#include "io/RigSwitches.h"
 #include "io/StretchGauge.h"
 #include "model/Skeleton.h"
 
@@ -8,8 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <variant>
 
 namespace rs::io {
 
@@ -26,92 +25,12 @@ constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel
 constexpr int kPathSteps = 8;              // samples of the way to a peak, looking for a flip
 constexpr double kFlipDegrees = 90.0;      // a deform joint turning more than this in one step flips
 
-// An FK/IK switch: the blend constraints that share one weight channel.
-struct Switch {
-    int weight = -1;
-    double fk = 0.0, ik = 1.0;                    // the channel's FK and IK values
-    std::vector<const model::RigConstraint*> blends;
-    std::vector<model::RigNodeIndex> fkControls;   // controllers on the FK side
-    std::vector<model::RigNodeIndex> ikControls;   // controllers the IK side's solver reads
-    Vec3 bendNormal{0.0};                          // world, rest; zero when the IK side is no limb IK
-};
-
-// The controller a node follows: itself or its nearest controller ancestor.
-model::RigNodeIndex controllerOf(const model::Rig& rig, model::RigNodeIndex node)
-{
-    while (node != model::kNoNode && rig.nodes[node].kind != model::RigNodeKind::Controller)
-        node = rig.nodes[node].parent;
-    return node;
-}
-
-void addOnce(std::vector<model::RigNodeIndex>& list, model::RigNodeIndex node)
-{
-    if (node != model::kNoNode && std::find(list.begin(), list.end(), node) == list.end())
-        list.push_back(node);
-}
-
-std::vector<Switch> switchesOf(const model::Rig& rig, const eval::ChannelLayout& layout)
-{
-    std::map<int, Switch> byWeight;
-    for (const auto& c : rig.constraints) {
-        const auto* blend = std::get_if<model::BlendConstraint>(&c.settings);
-        const auto weight = blend ? layout.find(blend->weight) : std::nullopt;
-        if (!weight || c.targets.size() != 2)
-            continue;
-        Switch& s = byWeight[*weight];
-        s.weight = *weight;
-        s.fk = layout[std::size_t(*weight)].limited ? layout[std::size_t(*weight)].min : 0.0;
-        s.ik = layout[std::size_t(*weight)].limited ? layout[std::size_t(*weight)].max : 1.0;
-        s.blends.push_back(&c);
-        if (rig.nodes[c.targets[0]].kind == model::RigNodeKind::Controller)
-            addOnce(s.fkControls, c.targets[0]);
-    }
-    for (auto& [weight, s] : byWeight)
-        for (const auto& c : rig.constraints) {
-            const bool solver = std::holds_alternative<model::IkConstraint>(c.settings) ||
-                                std::holds_alternative<model::SplineConstraint>(c.settings);
-            if (!solver)
-                continue;
-            const bool feeds = std::any_of(s.blends.begin(), s.blends.end(), [&](const model::RigConstraint* b) {
-                return std::find(c.driven.begin(), c.driven.end(), b->targets[1]) != c.driven.end();
-            });
-            if (!feeds)
-                continue;
-            for (auto target : c.targets)
-                addOnce(s.ikControls, controllerOf(rig, target));
-            if (std::holds_alternative<model::IkConstraint>(c.settings) && c.driven.size() >= 3) {
-                const Vec3 a = translationOf(rig.nodes[c.driven[0]].worldMatrix);
-                const Vec3 b = translationOf(rig.nodes[c.driven[1]].worldMatrix);
-                const Vec3 e = translationOf(rig.nodes[c.driven[2]].worldMatrix);
-                const Vec3 n = glm::cross(b - a, e - b);
-                if (glm::length(n) > 1e-9)
-                    s.bendNormal = glm::normalize(n);
-            }
-        }
-    std::vector<Switch> out;
-    for (auto& [weight, s] : byWeight)
-        out.push_back(std::move(s));
-    return out;
-}
-
-// Channels that drive motion (a drive's value): the custom channels worth exercising.
-std::vector<int> drivingChannels(const model::Rig& rig, const eval::ChannelLayout& layout)
-{
-    std::vector<int> out;
-    for (const auto& c : rig.constraints)
-        if (const auto* drive = std::get_if<model::DriveConstraint>(&c.settings))
-            if (auto channel = layout.find(drive->value); channel && !layout[std::size_t(*channel)].locked)
-                if (std::find(out.begin(), out.end(), *channel) == out.end())
-                    out.push_back(*channel);
-    return out;
-}
-
 // What the planner evaluates with: the rig, its program, a scratch state.
 struct Planner {
     const model::Rig& rig;
     const eval::RigProgram& program;
     eval::Posing posing;
-    std::vector<Switch> switches;
+    std::vector<FkIkSwitch> switches;
     std::vector<int> driving;
     StretchGauge gauge;
     std::vector<model::RigNodeIndex> deform; // the deform joints' rig nodes
@@ -159,7 +78,7 @@ struct Planner {
     }
 
     // `base` with the switch's chain on its FK side, FK snapped onto where the chain is.
-    eval::Pose toFk(const eval::Pose& base, const Switch& s)
+    eval::Pose toFk(const eval::Pose& base, const FkIkSwitch& s)
     {
         if (std::abs(base[std::size_t(s.weight)] - s.fk) < 1e-9)
             return base;
@@ -178,7 +97,7 @@ struct Planner {
         return out;
     }
     // `base` with the chain on its IK side, the IK controls matched to FK when the rig knows how.
-    eval::Pose toIk(const eval::Pose& base, const Switch& s)
+    eval::Pose toIk(const eval::Pose& base, const FkIkSwitch& s)
     {
         if (std::abs(base[std::size_t(s.weight)] - s.ik) < 1e-9)
             return base;

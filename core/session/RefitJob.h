@@ -1,4 +1,17 @@
 #pragma once
+// Re-fitting (Session, SessionRefit.cpp): a binding whose mesh changed topology
+// is re-fitted from the previous mesh's chunk (its bind positions and
+// triangles; the binding's own weights) through skin::importChunks with
+// Session::refitOptions(): 1:1 only when count and order still match, else the
+// fallback, by default weight inpainting (closest point kept where it is
+// near and its normal agrees, the rest solved), so a remesh whose shape
+// moved does not stretch. Previous chunks come from the host (the chunk
+// file saved beside the weights, Session::setSavedChunks) or from the mesh in
+// memory when a model is reloaded. A re-fit is one undo step ("Re-fit
+// weights"), so the old record comes back with undo; the build log says
+// per mesh how many vertices were matched 1:1, transferred or inpainted.
+// Run after replaceDocument, reloadModel and build; never by undo/redo.
+//
 // The re-fit of changed meshes (issue 20 item 5) in three steps, like an
 // import (SkinChunkJob.h), so the editor can run the long middle one on a
 // worker thread while the window stays responsive:

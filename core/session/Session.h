@@ -16,6 +16,9 @@
 // CV editing), SessionSkin.cpp / SessionPaint.cpp (the character and its
 // weights), SessionChunks.cpp (skin chunk export and import),
 // SessionRefit.cpp (changed meshes re-fitted from their previous chunk).
+// The value types it speaks in are in SessionTypes.h; what it holds of the
+// character (models, meshes, skin bones, palette) and reads back without a
+// command is SessionCharacter.h, its base.
 #include "base/Status.h"
 #include "edit/GuideMove.h"
 #include "edit/History.h"
@@ -26,6 +29,8 @@
 #include "model/Rig.h"
 #include "session/MirroredGuides.h"
 #include "session/RefitJob.h"
+#include "session/SessionCharacter.h"
+#include "session/SessionTypes.h"
 #include "session/SkinChunkJob.h"
 #include "skin/SkinBones.h"
 #include "skin/WeightTools.h"
@@ -48,52 +53,7 @@ namespace rs::session {
 using edit::Change;
 using edit::ChangeKind;
 
-struct Selection {
-    model::InstanceId instance = model::kNoId;
-    model::JointId joint = model::kNoId;           // the current guide joint (the gizmo's)
-    std::vector<model::JointId> joints;            // every selected guide joint, `joint` among them
-    model::RigNodeIndex node = model::kNoNode;     // the current controller (rig mode) or shape (guide mode)
-    std::vector<model::RigNodeIndex> nodes;        // every selected controller, `node` among them
-    std::vector<model::CurveCv> cvs;               // CV mode: selected CVs, all of `node`
-
-    // An instance (and one of its guide joints), no controllers.
-    static Selection ofInstance(model::InstanceId id, model::JointId joint = model::kNoId)
-    {
-        Selection s;
-        s.instance = id;
-        s.joint = joint;
-        return s;
-    }
-    bool operator==(const Selection&) const = default;
-};
-
-enum class Mode { Guide, Rig };
-
-// One of the guide's models as the session holds it (SessionSkin.cpp).
-struct LoadedModel {
-    std::string path;                          // as in GuideDocument::models
-    std::shared_ptr<const model::Model> model; // null when the file could not be read
-    Diagnostics problems;                      // why not, or the reader's warnings
-};
-
-// One mesh of a loaded model and its skin weights on the built rig.
-struct CharacterMesh {
-    std::size_t model = 0; // into Session::models()
-    std::size_t mesh = 0;  // into that model's meshes
-    int binding = -1;      // into GuideDocument::bindings; -1: not bound
-    bool changed = false;  // bound to another topology: its weights are kept, not applied
-    // The binding's weights on Session::skinBones() (joint i is bone i; a
-    // gone joint's share on its nearest surviving ancestor); null when the
-    // mesh is not skinned (unbound, changed, or no rig).
-    std::shared_ptr<const model::MeshWeights> weights;
-    const model::Mesh& data(const std::vector<LoadedModel>& models) const { return models[model].model->meshes[mesh]; }
-};
-// How far an explicit build is: the fraction done (0 to 1) and the stage (the
-// same function type as rigging::BuildProgress, so the builder takes it as is).
-using BuildProgress = std::function<void(double fraction, const std::string& stage)>;
-enum class PoseTool { ResetSelected, ResetAll, Mirror, Flip, IkToFk, FkToIk };
-
-class Session {
+class Session : public SessionCharacter {
 public:
     explicit Session(std::shared_ptr<const templates::TemplateRegistry> templates);
     virtual ~Session();
@@ -132,12 +92,7 @@ public:
     bool isLiveRebuild() const { return m_liveRebuild; }
     void setLiveRebuild(bool on);
     double lastBuildMilliseconds() const { return m_lastBuildMs; }
-    // How the last build used what the one before it generated: instance
-    // copies replayed unchanged, and generated (an explicit build generates all).
-    struct BuildReuse {
-        std::size_t replayed = 0;
-        std::size_t generated = 0;
-    };
+    using BuildReuse = session::BuildReuse;
     BuildReuse lastBuildReuse() const;
 
     const eval::RigProgram* program() const { return m_program.get(); }
@@ -173,13 +128,6 @@ public:
     // never applied to the wrong vertices.
     using ModelLoader = std::function<Result<model::Model>(const std::string& path)>;
     void setModelLoader(ModelLoader loader);
-    const std::vector<LoadedModel>& models() const { return m_models; }
-    const std::vector<CharacterMesh>& characterMeshes() const { return m_characterMeshes; }
-    // The built rig's skin bones (empty without a rig or skin joints).
-    const std::vector<skin::SkinBone>& skinBones() const { return m_skinBones; }
-    // Per skin bone: its posed world matrix times the inverse of its rest
-    // (bind) matrix, following every evaluation: the palette meshes skin with.
-    const std::vector<Mat4>& skinPalette() const { return m_skinPalette; }
     // Reads the file first: one that fails is refused with the reader's reasons.
     Status addModel(const std::string& path);
     Status removeModel(const std::string& path);
@@ -230,22 +178,8 @@ public:
                                                                  const SkinScope& onto, const skin::InfluenceMapOptions& influences = {},
                                                                  const std::string& what = "Import skin weights");
 
-    // --- re-fitting (SessionRefit.cpp). A binding whose mesh changed topology
-    // is re-fitted from the previous mesh's chunk (its bind positions and
-    // triangles; the binding's own weights) through skin::importChunks with
-    // refitOptions(): 1:1 only when count and order still match, else the
-    // fallback, by default weight inpainting (closest point kept where it is
-    // near and its normal agrees, the rest solved), so a remesh whose shape
-    // moved does not stretch. Previous chunks come from the host (the chunk
-    // file saved beside the weights, setSavedChunks) or from the mesh in
-    // memory when a model is reloaded. A re-fit is one undo step ("Re-fit
-    // weights"), so the old record comes back with undo; the build log says
-    // per mesh how many vertices were matched 1:1, transferred or inpainted.
-    // Run after replaceDocument, reloadModel and build; never by undo/redo.
-    void setSavedChunks(std::vector<skin::SkinChunk> chunks) { m_savedChunks = std::move(chunks); }
-    const std::vector<skin::SkinChunk>& savedChunks() const { return m_savedChunks; }
-    const skin::TransferOptions& refitOptions() const { return m_refitOptions; }
-    void setRefitOptions(skin::TransferOptions options) { m_refitOptions = std::move(options); }
+    // --- re-fitting (SessionRefit.cpp; what a re-fit does and when it runs:
+    // session/RefitJob.h). Saved chunks and options: SessionCharacter.h.
     // What a save writes beside the weights: per binding, the chunk of its
     // mesh when it fits (bind positions, triangles, the record's weights), or
     // the previous chunk kept for a changed or missing mesh (nothing lost).
@@ -468,21 +402,8 @@ private:
     std::optional<CvDragState> m_cvDrag;
 
     ModelLoader m_modelLoader;
-    std::vector<LoadedModel> m_models;
-    std::vector<CharacterMesh> m_characterMeshes;
-    std::vector<skin::SkinBone> m_skinBones;
-    std::vector<Mat4> m_bindInverse; // per skin bone
-    std::vector<Mat4> m_skinPalette;
-    std::string m_reportedCharacter; // the character messages last reported
-    std::map<const model::Mesh*, std::shared_ptr<const skin::Surface>> m_surfaces; // welded, for the tools
-    std::set<NodeKey> m_lockedJoints;
-    std::map<std::size_t, std::vector<std::uint32_t>> m_selectedVertices;
-    std::vector<std::pair<NodeKey, float>> m_copiedWeights;
-    std::vector<skin::SkinChunk> m_savedChunks; // previous meshes, for re-fitting
     RefitRunner m_refitRunner;
     std::uint64_t m_revision = 0;
-    skin::TransferOptions m_refitOptions = defaultRefitOptions();
-    static skin::TransferOptions defaultRefitOptions();
 };
 
 } // namespace rs::session

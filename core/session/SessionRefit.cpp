@@ -11,9 +11,6 @@
 
 namespace rs::session {
 
-
-skin::TransferOptions Session::defaultRefitOptions() { return skin::defaultRefitOptions(); }
-
 const skin::SkinChunk* Session::previousChunk(const model::MeshBinding& binding) const
 {
     return skin::previousChunk(m_savedChunks, binding);

@@ -1,33 +1,20 @@
+// The brush and smoothing over the welded surface: a dab reaches along the
+// surface (or through a ball) with a falloff; smoothing averages each vertex's
+// neighbours. Prune, normalise, limit and mirror: WeightOperations.cpp.
 #include "skin/WeightTools.h"
-
-#include <nanoflann.hpp>
+#include "skin/WeightToolsSupport.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 
 namespace rs::skin {
 
 using model::Influence;
+using namespace detail;
 
 namespace {
-
-constexpr float kDrop = 1e-5f; // a share below this is no influence
-
-std::vector<Influence> tidy(std::vector<Influence> in)
-{
-    std::erase_if(in, [](const Influence& i) { return !(i.weight > kDrop); });
-    double sum = 0.0;
-    for (const Influence& i : in)
-        sum += i.weight;
-    if (sum > 0.0)
-        for (Influence& i : in)
-            i.weight = float(i.weight / sum);
-    std::sort(in.begin(), in.end(), [](const Influence& a, const Influence& b) {
-        return a.weight != b.weight ? a.weight > b.weight : a.joint < b.joint;
-    });
-    return in;
-}
 
 double shareOf(const std::vector<Influence>& in, std::uint32_t joint)
 {
@@ -36,29 +23,6 @@ double shareOf(const std::vector<Influence>& in, std::uint32_t joint)
             return i.weight;
     return 0.0;
 }
-
-std::vector<Influence> influencesOf(const model::MeshWeights& w, std::uint32_t vertex)
-{
-    return {w.begin(vertex), w.end(vertex)};
-}
-
-// Surface vertex -> the file vertices welded into it.
-struct Welds {
-    std::vector<std::uint32_t> offsets, files;
-    explicit Welds(const Surface& s)
-    {
-        offsets.assign(s.positions.size() + 1, 0);
-        for (std::uint32_t w : s.welded)
-            ++offsets[w + 1];
-        for (std::size_t i = 1; i < offsets.size(); ++i)
-            offsets[i] += offsets[i - 1];
-        files.resize(s.welded.size());
-        std::vector<std::uint32_t> at(offsets.begin(), offsets.end() - 1);
-        for (std::uint32_t v = 0; v < s.welded.size(); ++v)
-            files[at[s.welded[v]]++] = v;
-    }
-    std::uint32_t first(std::uint32_t s) const { return files[offsets[s]]; }
-};
 
 struct Neighbours {
     std::vector<std::uint32_t> offsets, list;
@@ -84,23 +48,6 @@ struct Neighbours {
         }
     }
 };
-
-// Writes `influences` to every file vertex welded into surface vertex `s`
-// whose weights differ.
-void emit(const WeightContext& c, const Welds& welds, std::uint32_t s, const std::vector<Influence>& influences,
-          std::vector<VertexInfluences>& out)
-{
-    for (std::uint32_t k = welds.offsets[s]; k < welds.offsets[s + 1]; ++k) {
-        const std::uint32_t v = welds.files[k];
-        if (influencesOf(*c.weights, v) != influences)
-            out.push_back({v, influences});
-    }
-}
-
-void sortByVertex(std::vector<VertexInfluences>& out)
-{
-    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.vertex < b.vertex; });
-}
 
 // Surface vertices of `vertices` (file), each once; all when empty.
 std::vector<std::uint32_t> surfaceVertices(const Surface& s, const std::vector<std::uint32_t>& vertices)
@@ -131,59 +78,6 @@ double falloff(Falloff f, double t) // t: distance / radius in [0, 1]
     const double u = 1.0 - t;
     return u * u * (3.0 - 2.0 * u);
 }
-
-// Blends `own` towards `goal` by `amount`, keeping locked joints' shares.
-std::vector<Influence> blendUnlocked(const std::vector<Influence>& own, const std::vector<Influence>& goal, double amount,
-                                     const WeightContext& c)
-{
-    std::vector<Influence> out;
-    double locked = 0.0, unlockedGoal = 0.0;
-    for (const Influence& i : own)
-        if (c.isLocked(i.joint)) {
-            locked += i.weight;
-            out.push_back(i);
-        }
-    for (const Influence& i : goal)
-        if (!c.isLocked(i.joint))
-            unlockedGoal += i.weight;
-    const double available = std::max(0.0, 1.0 - locked);
-    std::vector<Influence> mixed;
-    auto add = [&](std::uint32_t joint, double w) {
-        for (Influence& m : mixed)
-            if (m.joint == joint) {
-                m.weight += float(w);
-                return;
-            }
-        mixed.push_back({joint, float(w)});
-    };
-    double unlockedOwn = 0.0;
-    for (const Influence& i : own)
-        if (!c.isLocked(i.joint))
-            unlockedOwn += i.weight;
-    for (const Influence& i : own)
-        if (!c.isLocked(i.joint))
-            add(i.joint, (1.0 - amount) * i.weight);
-    if (unlockedGoal > 0.0)
-        for (const Influence& i : goal)
-            if (!c.isLocked(i.joint))
-                add(i.joint, amount * i.weight * (unlockedOwn > 0.0 ? unlockedOwn / unlockedGoal : 1.0 / unlockedGoal));
-    double sum = 0.0;
-    for (const Influence& m : mixed)
-        sum += m.weight;
-    if (sum > 0.0)
-        for (const Influence& m : mixed)
-            out.push_back({m.joint, float(m.weight / sum * available)});
-    return tidy(out);
-}
-
-struct Cloud {
-    const std::vector<Vec3>* points;
-    std::size_t kdtree_get_point_count() const { return points->size(); }
-    double kdtree_get_pt(std::size_t i, std::size_t d) const { return (*points)[i][int(d)]; }
-    template <class B>
-    bool kdtree_get_bbox(B&) const { return false; }
-};
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3>;
 
 } // namespace
 
@@ -322,137 +216,6 @@ std::vector<VertexInfluences> smoothWeights(const WeightContext& c, const std::v
         emit(c, welds, v, current[v], out);
     sortByVertex(out);
     return out;
-}
-
-namespace {
-
-template <class F>
-std::vector<VertexInfluences> perVertex(const WeightContext& c, const std::vector<std::uint32_t>& vertices, F&& change)
-{
-    std::vector<VertexInfluences> out;
-    auto visit = [&](std::uint32_t v) {
-        std::vector<Influence> own = influencesOf(*c.weights, v);
-        std::vector<Influence> next = change(own);
-        if (next != own)
-            out.push_back({v, std::move(next)});
-    };
-    if (vertices.empty())
-        for (std::uint32_t v = 0; v < c.weights->vertexCount(); ++v)
-            visit(v);
-    else
-        for (std::uint32_t v : vertices)
-            if (v < c.weights->vertexCount())
-                visit(v);
-    sortByVertex(out);
-    out.erase(std::unique(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.vertex == b.vertex; }), out.end());
-    return out;
-}
-
-// Drops unlocked influences `drop` chooses (never all of them), handing their
-// share to the remaining unlocked ones.
-template <class Drop>
-std::vector<Influence> dropUnlocked(std::vector<Influence> in, const WeightContext& c, Drop&& drop)
-{
-    double removed = 0.0, kept = 0.0;
-    std::vector<Influence> out;
-    for (const Influence& i : in) {
-        if (!c.isLocked(i.joint) && drop(i)) {
-            removed += i.weight;
-            continue;
-        }
-        out.push_back(i);
-        if (!c.isLocked(i.joint))
-            kept += i.weight;
-    }
-    if (removed <= 0.0 || kept <= 0.0)
-        return tidy(std::move(in)); // nothing dropped, or nothing unlocked would be left to hold the share
-    for (Influence& i : out)
-        if (!c.isLocked(i.joint))
-            i.weight = float(i.weight * (kept + removed) / kept);
-    return tidy(std::move(out));
-}
-
-} // namespace
-
-std::vector<VertexInfluences> pruneWeights(const WeightContext& c, const std::vector<std::uint32_t>& vertices, double below)
-{
-    return perVertex(c, vertices, [&](const std::vector<Influence>& own) {
-        return dropUnlocked(own, c, [&](const Influence& i) { return i.weight < below; });
-    });
-}
-
-std::vector<VertexInfluences> normaliseWeights(const WeightContext& c, const std::vector<std::uint32_t>& vertices)
-{
-    return perVertex(c, vertices, [&](const std::vector<Influence>& own) {
-        double locked = 0.0, unlocked = 0.0;
-        for (const Influence& i : own)
-            (c.isLocked(i.joint) ? locked : unlocked) += i.weight;
-        std::vector<Influence> out = own;
-        if (unlocked > 0.0 && locked < 1.0)
-            for (Influence& i : out)
-                if (!c.isLocked(i.joint))
-                    i.weight = float(i.weight * (1.0 - locked) / unlocked);
-        return tidy(std::move(out));
-    });
-}
-
-std::vector<VertexInfluences> limitWeights(const WeightContext& c, const std::vector<std::uint32_t>& vertices, int maxInfluences)
-{
-    const std::size_t limit = std::size_t(std::max(1, maxInfluences));
-    return perVertex(c, vertices, [&](const std::vector<Influence>& own) {
-        if (own.size() <= limit)
-            return tidy(own);
-        std::vector<Influence> sorted = tidy(own);
-        // The smallest unlocked ones go until the limit holds (locked ones stay).
-        std::vector<bool> drop(sorted.size(), false);
-        std::size_t count = sorted.size();
-        for (std::size_t k = sorted.size(); k-- > 0 && count > limit;)
-            if (!c.isLocked(sorted[k].joint)) {
-                drop[k] = true;
-                --count;
-            }
-        std::size_t k = 0;
-        return dropUnlocked(sorted, c, [&](const Influence&) { return drop[k++]; });
-    });
-}
-
-MirrorResult mirrorWeights(const WeightContext& c, const std::vector<std::uint32_t>& jointMirror, int axis, bool fromPositive,
-                           double tolerance)
-{
-    MirrorResult result;
-    const Surface& s = *c.surface;
-    const Welds welds(s);
-    axis = std::clamp(axis, 0, 2);
-    Cloud cloud{&s.positions};
-    Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
-    for (std::uint32_t v = 0; v < s.positions.size(); ++v) {
-        const double side = s.positions[v][axis];
-        if (std::abs(side) <= tolerance || (side > 0.0) == fromPositive)
-            continue; // on the plane, or a source vertex
-        Vec3 reflected = s.positions[v];
-        reflected[axis] = -reflected[axis];
-        std::size_t nearest = 0;
-        double d2 = 0.0;
-        nanoflann::KNNResultSet<double> found(1);
-        found.init(&nearest, &d2);
-        tree.findNeighbors(found, &reflected[0], nanoflann::SearchParams());
-        if (!(d2 <= tolerance * tolerance)) {
-            ++result.unmatched;
-            continue;
-        }
-        std::vector<Influence> mirrored;
-        for (Influence i : influencesOf(*c.weights, welds.first(std::uint32_t(nearest)))) {
-            if (i.joint < jointMirror.size())
-                i.joint = jointMirror[i.joint];
-            mirrored.push_back(i);
-        }
-        // Locked joints of the target keep their shares.
-        const std::vector<Influence> own = influencesOf(*c.weights, welds.first(v));
-        emit(c, welds, v, blendUnlocked(own, tidy(mirrored), 1.0, c), result.vertices);
-    }
-    sortByVertex(result.vertices);
-    return result;
 }
 
 } // namespace rs::skin

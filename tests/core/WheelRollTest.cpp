@@ -1,13 +1,12 @@
 // wheel.legacy's roll along the path the wheel takes (model::RollMode::Path,
 // the default `roll: path`), as an animator checks it on the built and
 // evaluated vehicle sample: driving, turning, coming back, scrubbing, tools
-// evaluating trial poses, rebuilding, exporting. The stateless `roll: axis`
-// for comparison.
+// evaluating trial poses, rebuilding, the editor's drags. The stateless
+// `roll: axis` for comparison. Exports, keyed clips and the range of motion:
+// WheelRollExportTest.cpp.
 #include "EvalTestSupport.h"
+#include "WheelRollSupport.h"
 #include "edit/GuideEdits.h"
-#include "io/ExportScene.h"
-#include "io/RangeOfMotion.h"
-#include "io/RigExport.h"
 #include "session/Session.h"
 
 #include <gtest/gtest.h>
@@ -15,54 +14,12 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
-#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 
 namespace rs {
 namespace {
 
-using eval::Pose;
-using test::PosedRig;
-
-constexpr double kRadius = 0.35; // the sample's wheels
-const char* const kWheels[] = {"wheel_front.L", "wheel_front.R", "wheel_back.L", "wheel_back.R"};
-const std::string kBody = "body::ctrls.xform";
-
-// How far the tyre has turned about its axle, radians in (-pi, pi]: its up
-// axis in the body's frame (the body only turns about Y here) turned towards
-// the body's forward.
-double rollOf(const eval::EvalState& state, const model::Rig& rig, const std::string& wheel)
-{
-    const Mat3 body = state.world[*rig.findPath(kBody)].rotation();
-    const Vec3 up = glm::transpose(body) * glm::normalize(state.world[*rig.findPath(wheel + "::skin.spin")].rotation()[1]);
-    return std::atan2(up.z, up.y);
-}
-double rollOf(const eval::EvalState& state, const PosedRig& r, const std::string& wheel) { return rollOf(state, r.rig, wheel); }
-double rollOf(const PosedRig& r, const std::string& wheel) { return rollOf(r.state(), r, wheel); }
-
-// `actual` and `expected` as turns of a wheel: the same up to whole turns.
-double turnError(double actual, double expected) { return std::abs(std::remainder(actual - expected, glm::two_pi<double>())); }
-
-// Moves the body's channel `channel` from its value in `pose` to `to` in `steps` evaluations.
-void drive(PosedRig& r, Pose& pose, const std::string& channel, double to, int steps)
-{
-    const int c = r.channel(kBody, channel);
-    const double from = pose[c];
-    for (int i = 1; i <= steps; ++i) {
-        pose[c] = from + (to - from) * i / steps;
-        r.evaluate(pose);
-    }
-}
-
-model::GuideDocument vehicleWith(const std::string& option, Value value)
-{
-    model::GuideDocument guide = test::loadSample("vehicle");
-    for (const char* name : {"wheel_front", "wheel_back"})
-        guide.instance(guide.instanceNamed(name)->id)->options[option] = value;
-    return guide;
-}
+using namespace test::wheelroll;
 
 TEST(WheelRoll, DrivingOneMetreForwardInAHundredStepsTurnsEachWheelOneOverRadius)
 {
@@ -322,129 +279,6 @@ TEST(WheelRoll, TheEditorRollsTheWheelsAsTheBodyIsDraggedAndKeepsTheRollAcrossAR
     s.history().undo();
     for (const std::string wheel : kWheels)
         EXPECT_NEAR(rollOf(*s.evaluation(), *s.rig(), wheel), 0.0, 1e-9) << wheel;
-}
-
-std::string fileBytes(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-TEST(WheelRoll, ExportsRollAlongTheClipInTimeOrderAndAreByteIdentical)
-{
-    PosedRig r("vehicle");
-    ASSERT_TRUE(r.ok());
-    const model::GuideDocument guide = test::loadSample("vehicle");
-    // Keyed: 1 m forward in 100 keys, then a quarter turn in 100 keys.
-    io::KeyedClip drive{"drive", {}, {}};
-    const NodeKey body = r.rig.nodes[r.index(kBody)].key;
-    for (int k = 0; k <= 200; ++k) {
-        drive.times.push_back(k / 30.0);
-        drive.poses.push_back({{body, {{"tz", std::min(k, 100) / 100.0}, {"ry", std::max(k - 100, 0) * 0.9}}}});
-    }
-    const std::vector<io::KeyedClip> clips{drive};
-    io::ExportOptions options;
-    options.guide = &guide;
-    options.rangeOfMotion = true;
-    options.keyedClips = &clips;
-    auto prepared = io::prepareExport(r.rig, options);
-    ASSERT_TRUE(prepared.scene) << formatAll(prepared.report);
-    const io::ExportClip& clip = prepared.scene->clips.back();
-    ASSERT_EQ(clip.name, "drive");
-    const std::string spin = r.rig.nodes[r.index("wheel_front.R::skin.spin")].name;
-    const io::ExportTrack* track = nullptr;
-    for (const auto& t : clip.tracks)
-        if (!t.controller && prepared.scene->joints[std::size_t(t.node)].name == spin) track = &t;
-    ASSERT_NE(track, nullptr) << spin << " does not roll in the clip";
-    auto angleAt = [&](std::size_t key) { // about the hub's X
-        const Quat q = track->rotations[key];
-        return 2.0 * std::atan2(q.x, q.w);
-    };
-    EXPECT_LT(turnError(angleAt(100), 1.0 / kRadius), 1e-6) << "1 m forward";
-    const double side = r.restPosition("wheel_front.R::mch.roll").x - r.restPosition(kBody).x;
-    EXPECT_LT(turnError(angleAt(200), (1.0 - side * glm::half_pi<double>()) / kRadius), 1e-3) << "then its arc of the turn";
-
-    const std::string first = test::temporaryPath("wheel-roll-1.glb"), second = test::temporaryPath("wheel-roll-2.glb");
-    ASSERT_FALSE(hasErrors(io::exportRig(r.rig, first, options)));
-    ASSERT_FALSE(hasErrors(io::exportRig(r.rig, second, options)));
-    const std::string bytes = fileBytes(first);
-    EXPECT_GT(bytes.size(), 1000u);
-    EXPECT_TRUE(bytes == fileBytes(second)) << "two exports of the same clips differ";
-}
-
-// Two keys 5 m apart (longer than a wheel's circumference, the teleport
-// distance): the export rolls the wheels along the frames between the keys,
-// as playing the clip in the editor would, not by one skipped jump.
-TEST(WheelRoll, AKeyedClipRollsTheWheelsAlongThePathBetweenSparseKeys)
-{
-    PosedRig r("vehicle");
-    ASSERT_TRUE(r.ok());
-    const model::GuideDocument guide = test::loadSample("vehicle");
-    const NodeKey body = r.rig.nodes[r.index(kBody)].key;
-    io::KeyedClip drive{"drive", {0.0, 2.0}, {{{body, {{"tz", 0.0}}}}, {{body, {{"tz", 5.0}}}}}};
-    const std::vector<io::KeyedClip> clips{drive};
-    io::ExportOptions options;
-    options.guide = &guide;
-    options.keyedClips = &clips;
-    auto prepared = io::prepareExport(r.rig, options);
-    ASSERT_TRUE(prepared.scene) << formatAll(prepared.report);
-    const io::ExportClip& clip = prepared.scene->clips.back();
-    ASSERT_EQ(clip.times.size(), 2u) << "the authored keys stay the keys";
-    const std::string spin = r.rig.nodes[r.index("wheel_front.L::skin.spin")].name;
-    const io::ExportTrack* track = nullptr;
-    for (const auto& t : clip.tracks)
-        if (!t.controller && !t.camera && prepared.scene->joints[std::size_t(t.node)].name == spin) track = &t;
-    ASSERT_NE(track, nullptr) << spin << " does not roll in the clip";
-    const Quat q = glm::normalize(glm::conjugate(track->rotations.front()) * track->rotations.back());
-    EXPECT_LT(turnError(2.0 * std::atan2(q.x, q.w), 5.0 / kRadius), 1e-3) << "5 m rolled";
-}
-
-// The export's range of motion refines the samples where a node turns far
-// between two keys (the wheels do): every whole-frame sample, refined or
-// not, must be what evaluating the clip's samples in time order gives.
-TEST(WheelRoll, TheRangeOfMotionIsEvaluatedInTimeOrderWhereItsSamplesAreRefined)
-{
-    PosedRig r("vehicle");
-    ASSERT_TRUE(r.ok());
-    io::ExportOptions options;
-    options.rangeOfMotion = true;
-    auto prepared = io::prepareExport(r.rig, options);
-    ASSERT_TRUE(prepared.scene) << formatAll(prepared.report);
-    ASSERT_FALSE(prepared.scene->clips.empty());
-    const io::ExportClip& clip = prepared.scene->clips.front(); // from the plan's first key, a new state
-    ASSERT_TRUE(clip.name == "range_of_motion" || clip.name == "range_of_motion_1") << clip.name;
-    const std::string spin = r.rig.nodes[r.index("wheel_front.R::skin.spin")].name;
-    const io::ExportTrack* track = nullptr;
-    for (const auto& t : clip.tracks)
-        if (!t.controller && prepared.scene->joints[std::size_t(t.node)].name == spin) track = &t;
-    ASSERT_NE(track, nullptr);
-
-    const io::RangeOfMotionPlan plan = io::planRangeOfMotion(r.rig, *r.program, r.defaults());
-    const int step = io::framesPerKey(clip.framesPerSecond);
-    const eval::ChannelLayout& layout = r.program->channels();
-    eval::EvalState state = r.program->makeState();
-    int refined = 0;
-    for (std::size_t i = 0; i < clip.times.size(); ++i) {
-        const double frame = clip.times[i] * clip.framesPerSecond;
-        if (std::abs(frame - std::round(frame)) > 1e-6)
-            continue; // half way within a frame: not evaluated, the players' own interpolation
-        const auto whole = std::size_t(std::llround(frame));
-        const std::size_t k = std::min(whole / std::size_t(step), plan.keys.size() - 1);
-        Pose pose = plan.keys[k];
-        if (whole % std::size_t(step) != 0) { // a refined sample between keys k and k + 1
-            ++refined;
-            const double fraction = double(whole % std::size_t(step)) / step;
-            for (std::size_t c = 0; c < pose.size(); ++c)
-                if (layout[c].transform != eval::kRotateOrderChannel && !layout[c].isEnum())
-                    pose[c] += (plan.keys[k + 1][c] - pose[c]) * fraction;
-        }
-        r.program->evaluate(pose, state);
-        const Mat3 hub = state.world[r.index("wheel_front.R::skin.wheel")].rotation();
-        const Vec3 up = glm::transpose(hub) * glm::normalize(state.world[r.index("wheel_front.R::skin.spin")].rotation()[1]);
-        const Quat q = track->rotations[i];
-        EXPECT_LT(turnError(2.0 * std::atan2(q.x, q.w), std::atan2(up.z, up.y)), 1e-6) << "frame " << frame;
-    }
-    EXPECT_GT(refined, 0) << "no sample was refined: the test checks nothing the keys do not";
 }
 
 } // namespace
