@@ -131,6 +131,8 @@ const std::map<std::string, std::string>& allowList()
         {"rig.slide.do_translate", kToDo},
         {"rig.slide.do_scale", kToDo},
         {"rig.slide.rotate_order", kToDo},
+        {"neck.head.aim_axis", kToDo},
+        {"neck.head.up_axis", kToDo},
         {"rig.spline.stretch", kToDo},
         {"rig.spline.add_nodes", kToDo},
         {"rig.spline.parent_scale", kToDo},
