@@ -11,8 +11,9 @@
 // (Blender, three.js, Assimp interpolate linearly) so play the curve within
 // a half frame's chord instead of cutting straight between authored keys.
 // The clip's flags (ExportTrack::animated / held) say which properties get a curve node, as they say which channels glTF
-// gets; within one, a component whose keys all equal the node's own value is
-// omitted (importers fall back to that value). A camera's track plays its
+// gets; within one, every component gets a curve (one key when it stays still:
+// Blender's importer would play a missing component at the previous take's
+// last value). A camera's track plays its
 // model (the frame turned to FBX's +X look) and, when its lens changes or
 // differs, a FocalLength curve node on its Camera attribute. One Take per clip.
 #include "io/FbxAnimation.h"
@@ -94,9 +95,13 @@ void addCurve(Document& doc, std::int64_t curveNode, int channel, const std::vec
 
 // `property` as the clip's flags say (ExportTrack::animated / held, the same
 // channels glTF writes): an animated property gets a curve node whose
-// components carry every key (a component that never moves gets one key, or
-// none when it keeps the node's own value); a held one gets one key per
-// component that differs from the node's value; any other property nothing.
+// components carry every key (a component that never moves gets one key); a
+// held one gets one key per component; none when every key stays within float
+// resolution of the node's own value; any other property nothing. A written
+// property always carries all three components: Blender 3.4's importer keeps
+// one transform per model across the takes it reads, so a component missing
+// from a take would play the previous take's last value, not the node's
+// (core/io/README.md, "Blender's FBX importer and missing components").
 void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const std::vector<std::int64_t>& times,
                  Property property, unsigned bit, const ExportTrack& track)
 {
@@ -109,11 +114,11 @@ void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const st
         property.slopes.clear();
         keyTimes.resize(1);
     }
-    bool writes[3] = {false, false, false};
-    for (int c = 0; c < 3; ++c)
-        for (const Vec3& key : property.keys)
-            writes[c] = writes[c] || std::abs(key[c] - property.nodeValue[c]) > kConstantTolerance;
-    if (!writes[0] && !writes[1] && !writes[2]) // held within float resolution of the node's value
+    bool differs = false;
+    for (const Vec3& key : property.keys)
+        for (int c = 0; c < 3; ++c)
+            differs = differs || std::abs(key[c] - property.nodeValue[c]) > kConstantTolerance;
+    if (!differs) // within float resolution of the node's value
         return;
     const std::int64_t id = doc.newId();
     Node& node = doc.addObject("AnimationCurveNode", id, property.curveNode, "AnimCurveNode", "");
@@ -125,8 +130,7 @@ void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const st
     doc.connect(id, layer);
     doc.connect(id, model, property.name);
     for (int c = 0; c < 3; ++c)
-        if (writes[c])
-            addCurve(doc, id, c, keyTimes, property);
+        addCurve(doc, id, c, keyTimes, property);
 }
 
 // Cubic curves are keyed at every half frame: importers that ignore the
