@@ -8,6 +8,7 @@
 #include "core/TestSupport.h"
 #include "io/ExportScene.h"
 #include "io/FbxExport.h"
+#include "io/GltfExport.h"
 #include "rigging/RigBuilder.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -150,7 +153,8 @@ TEST(FbxExport, EveryTakePlaysItsKeysWhenAReaderCarriesComponentsAcrossTakes)
     const auto prepared = io::prepareExport(rig, options);
     ASSERT_TRUE(prepared.scene);
     ASSERT_GT(prepared.scene->clips.size(), 2u) << "several takes in file order";
-    const auto bytes = io::fbxBytes(*prepared.scene, io::conventionFor(io::ExportPreset::Gltf, true));
+    const io::Convention convention = io::conventionFor(io::ExportPreset::Gltf, true);
+    const auto bytes = io::fbxBytes(io::converted(*prepared.scene, convention), convention);
     ASSERT_TRUE(bytes);
     const Carried played = playTakesBothWays(*bytes);
     EXPECT_EQ(played.takes, prepared.scene->clips.size());
@@ -163,6 +167,8 @@ TEST(FbxExport, EveryTakePlaysItsKeysWhenAReaderCarriesComponentsAcrossTakes)
 // take moves a joint's translation and ends away from the joint's own (an
 // authored clip need not end at rest), the second only turns it. A reader
 // carrying the first take's values would play the second take translated.
+// With $RIGSMITH_CARRIED_TAKES_DIR set, the .glb and .fbx also go there for
+// Blender (ctest Export.CarriedTakes.BlenderMidKeys).
 TEST(FbxExport, ATakeRestoresThePropertiesOtherTakesMoveOnItsModels)
 {
     const model::Rig rig = rigging::buildRig(test::loadGuide("Export/robot-rolling-arm/guide.yml"), test::builtinTemplates());
@@ -178,20 +184,31 @@ TEST(FbxExport, ATakeRestoresThePropertiesOtherTakesMoveOnItsModels)
     io::ExportTrack* moved = nullptr;
     for (std::size_t t = 0; t < scene.clips[0].tracks.size() && !moved; ++t) {
         io::ExportTrack& track = scene.clips[0].tracks[t];
-        if (track.controller || track.camera || !(track.animated & io::kRotationChannel))
+        // A joint the range of motion already moves and turns (Blender leaves its bone unconnected).
+        const unsigned both = io::kRotationChannel | io::kTranslationChannel;
+        double travel = 0.0;
+        for (const Vec3& t : track.translations)
+            travel = std::max(travel, glm::length(t - track.translations.front()));
+        if (track.controller || track.camera || (track.animated & both) != both || travel < 1e-2)
             continue;
         moved = &track;
-        const Vec3 own = translationOf(scene.joints[std::size_t(track.node)].poseLocal);
         for (std::size_t k = 0; k < track.translations.size(); ++k) // drifts 0.1 m away by the end
-            track.translations[k] = own + Vec3(0.0, 0.1 * double(k) / double(track.translations.size() - 1), 0.0);
-        track.animated |= io::kTranslationChannel;
+            track.translations[k] += Vec3(0.0, 0.1 * double(k) / double(track.translations.size() - 1), 0.0);
         io::ExportTrack& turn = scene.clips[1].tracks[t];
         turn.animated = io::kRotationChannel;
         turn.held = 0;
     }
     ASSERT_NE(moved, nullptr);
-    const auto bytes = io::fbxBytes(scene, io::conventionFor(io::ExportPreset::Gltf, true));
+    const io::Convention convention = io::conventionFor(io::ExportPreset::Gltf, true);
+    const io::ExportScene fbxScene = io::converted(scene, convention);
+    const auto bytes = io::fbxBytes(fbxScene, convention);
     ASSERT_TRUE(bytes);
+    if (const char* dir = std::getenv("RIGSMITH_CARRIED_TAKES_DIR")) { // for Blender: ctest Export.CarriedTakes.BlenderMidKeys
+        std::filesystem::create_directories(dir);
+        ASSERT_TRUE(io::writeFbx(fbxScene, std::string(dir) + "/carried-takes.fbx", convention).empty());
+        const io::ExportScene gltfScene = io::converted(scene, io::conventionFor(io::ExportPreset::Gltf, false));
+        ASSERT_TRUE(io::writeGltf(gltfScene, std::string(dir) + "/carried-takes.glb", "test").empty());
+    }
     const Carried played = playTakesBothWays(*bytes);
     EXPECT_EQ(played.takes, 2u);
     EXPECT_LT(played.worstDegrees, 1e-3) << played.worstWhere;
