@@ -11,8 +11,9 @@
 // (Blender, three.js, Assimp interpolate linearly) so play the curve within
 // a half frame's chord instead of cutting straight between authored keys.
 // The clip's flags (ExportTrack::animated / held) say which properties get a curve node, as they say which channels glTF
-// gets; within one, a component whose keys all equal the node's own value is
-// omitted (importers fall back to that value). A camera's track plays its
+// gets; within one, every component gets a curve (one key when it stays still:
+// Blender's importer would play a missing component at the previous take's
+// last value). A camera's track plays its
 // model (the frame turned to FBX's +X look) and, when its lens changes or
 // differs, a FocalLength curve node on its Camera attribute. One Take per clip.
 #include "io/FbxAnimation.h"
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <map>
 #include <tuple>
 #include <cmath>
 
@@ -94,27 +96,35 @@ void addCurve(Document& doc, std::int64_t curveNode, int channel, const std::vec
 
 // `property` as the clip's flags say (ExportTrack::animated / held, the same
 // channels glTF writes): an animated property gets a curve node whose
-// components carry every key (a component that never moves gets one key, or
-// none when it keeps the node's own value); a held one gets one key per
-// component that differs from the node's value; any other property nothing.
-void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const std::vector<std::int64_t>& times,
-                 Property property, unsigned bit, const ExportTrack& track)
+// components carry every key (a component that never moves gets one key); a
+// held one gets one key per component; none when every key stays within float
+// resolution of the node's own value; any other property nothing. A written
+// property always carries all three components: Blender 3.4's importer keeps
+// one transform per model across the takes it reads, so a component missing
+// from a take would play the previous take's last value, not the node's
+// (core/io/README.md, "Blender's FBX importer and missing components").
+// With `restore`, the property is written as the node's own value, one key
+// (another take moves it on this model). Returns whether it was written.
+bool addProperty(Document& doc, std::int64_t layer, std::int64_t model, const std::vector<std::int64_t>& times,
+                 Property property, unsigned bit, const ExportTrack& track, bool restore = false)
 {
     const bool animated = (track.animated & bit) != 0, held = (track.held & bit) != 0;
-    if (!animated && !held)
-        return;
+    if (!animated && !held && !restore)
+        return false;
     std::vector<std::int64_t> keyTimes = property.slopes.empty() ? times : property.times;
-    if (!animated) { // held: the first key is the value
+    if (!animated || restore) { // held: the first key is the value; restored: the node's
         property.keys.resize(1);
         property.slopes.clear();
         keyTimes.resize(1);
     }
-    bool writes[3] = {false, false, false};
-    for (int c = 0; c < 3; ++c)
-        for (const Vec3& key : property.keys)
-            writes[c] = writes[c] || std::abs(key[c] - property.nodeValue[c]) > kConstantTolerance;
-    if (!writes[0] && !writes[1] && !writes[2]) // held within float resolution of the node's value
-        return;
+    if (restore)
+        property.keys = {property.nodeValue};
+    bool differs = restore;
+    for (const Vec3& key : property.keys)
+        for (int c = 0; c < 3; ++c)
+            differs = differs || std::abs(key[c] - property.nodeValue[c]) > kConstantTolerance;
+    if (!differs) // within float resolution of the node's value
+        return false;
     const std::int64_t id = doc.newId();
     Node& node = doc.addObject("AnimationCurveNode", id, property.curveNode, "AnimCurveNode", "");
     Node& p70 = node.child("Properties70");
@@ -125,8 +135,8 @@ void addProperty(Document& doc, std::int64_t layer, std::int64_t model, const st
     doc.connect(id, layer);
     doc.connect(id, model, property.name);
     for (int c = 0; c < 3; ++c)
-        if (writes[c])
-            addCurve(doc, id, c, keyTimes, property);
+        addCurve(doc, id, c, keyTimes, property);
+    return true;
 }
 
 // Cubic curves are keyed at every half frame: importers that ignore the
@@ -165,8 +175,12 @@ void sampleCubic(const std::vector<double>& dense, const std::vector<double>& cl
     }
 }
 
+// `elsewhere`: the channels some take of the file writes on this model; a
+// model this take animates gets those back at its own value (Blender 3.4
+// would play what the previous take left there).
 void addTrack(Document& doc, std::int64_t layer, std::int64_t model, const Mat4& nodeLocal,
-              const ExportTrack& track, const ExportClip& clip, const std::vector<std::int64_t>& times)
+              const ExportTrack& track, const ExportClip& clip, const std::vector<std::int64_t>& times,
+              unsigned elsewhere)
 {
     Vec3 t, s;
     Quat r;
@@ -213,9 +227,15 @@ void addTrack(Document& doc, std::int64_t layer, std::int64_t model, const Mat4&
             rotation.times = denseTicks;
         }
     }
-    addProperty(doc, layer, model, times, translation, kTranslationChannel, track);
-    addProperty(doc, layer, model, times, rotation, kRotationChannel, track);
-    addProperty(doc, layer, model, times, scaling, kScaleChannel, track);
+    const Property* properties[3] = {&translation, &rotation, &scaling};
+    const unsigned bits[3] = {kTranslationChannel, kRotationChannel, kScaleChannel};
+    bool written[3] = {false, false, false};
+    for (int p = 0; p < 3; ++p)
+        written[p] = addProperty(doc, layer, model, times, *properties[p], bits[p], track);
+    if (written[0] || written[1] || written[2])
+        for (int p = 0; p < 3; ++p)
+            if (!written[p] && (elsewhere & bits[p]))
+                addProperty(doc, layer, model, times, *properties[p], bits[p], track, true);
 }
 
 // A camera's track as its FBX model plays it: each key's frame turned to
@@ -271,6 +291,14 @@ void addLensCurve(Document& doc, std::int64_t layer, std::int64_t attribute, con
 void addClips(Document& doc, const ExportScene& scene, const ModelIds& ids, Node& takes)
 {
     takes.child("Current").addString(scene.clips.empty() ? "" : scene.clips.front().name);
+    auto modelOf = [&](const ExportTrack& track) {
+        const std::size_t node = std::size_t(track.node);
+        return track.camera ? ids.cameras[node] : track.controller ? ids.controllers[node] : ids.joints[node];
+    };
+    std::map<std::int64_t, unsigned> writtenSomewhere; // model -> channels some take animates or holds
+    for (const ExportClip& clip : scene.clips)
+        for (const ExportTrack& track : clip.tracks)
+            writtenSomewhere[modelOf(track)] |= track.animated | track.held;
     for (const ExportClip& clip : scene.clips) {
         std::vector<std::int64_t> times;
         for (double t : clip.times)
@@ -291,12 +319,14 @@ void addClips(Document& doc, const ExportScene& scene, const ModelIds& ids, Node
             if (track.camera) {
                 const ExportCamera& camera = scene.cameras[node];
                 addTrack(doc, layer, ids.cameras[node], camera.poseWorld * glm::mat4_cast(fbxCameraTurn()),
-                         fbxCameraTrack(track), clip, times);
+                         fbxCameraTrack(track), clip, times, writtenSomewhere[modelOf(track)]);
                 addLensCurve(doc, layer, ids.cameraAttributes[node], camera, track, times);
             } else if (track.controller)
-                addTrack(doc, layer, ids.controllers[node], scene.controllers[node].poseLocal, track, clip, times);
+                addTrack(doc, layer, ids.controllers[node], scene.controllers[node].poseLocal, track, clip, times,
+                         writtenSomewhere[modelOf(track)]);
             else
-                addTrack(doc, layer, ids.joints[node], scene.joints[node].poseLocal, track, clip, times);
+                addTrack(doc, layer, ids.joints[node], scene.joints[node].poseLocal, track, clip, times,
+                         writtenSomewhere[modelOf(track)]);
         }
 
         Node& take = takes.child("Take");
