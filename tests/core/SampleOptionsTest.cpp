@@ -145,7 +145,6 @@ const std::map<std::string, std::string>& allowList()
         // (Not +Y on the prop's antenna: Blender's FBX importer would connect its translating joints, BoneInference.)
         {"core.bones.up_axis", kToDo},
         {"core.bones.rotate_order", kToDo},
-        {"*.sym", kToDo},
     };
     return list;
 }
