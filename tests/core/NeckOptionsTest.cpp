@@ -209,6 +209,43 @@ TEST(NeckRig, OrientNeckOffTurnsTheNeckControlsAboutTheWorldAxes)
             << id << " keeps its rest place";
 }
 
+TEST(NeckRig, AimAndUpAxesRenameTheNeckControlsAxesAndTurnTheNeckAlike)
+{
+    // Mikan's neck axes: Y along the neck, X across it. The controllers' axes
+    // change; the joints stay, and turning about the new aim axis (ry) twists
+    // the neck as turning about the old one (rx) did.
+    PosedRig xAim("biped");
+    PosedRig yAim(withNeckOptions({{"aim_axis", Value(std::string("y"))}, {"up_axis", Value(std::string("x"))}}));
+    ASSERT_TRUE(xAim.ok() && yAim.ok()) << formatAll(yAim.rig.diagnostics);
+    const auto g = neckGuides(yAim);
+    const Mat4 oldFrame = xAim.rig.nodes[xAim.index("neck::ctrls.fk.0")].worldMatrix;
+    const Mat4 newFrame = yAim.rig.nodes[yAim.index("neck::ctrls.fk.0")].worldMatrix;
+    EXPECT_GT(glm::dot(glm::normalize(Vec3(newFrame[1])), glm::normalize(g[1] - g[0])), 0.999) << "Y along the neck";
+    EXPECT_LT(glm::length(Vec3(newFrame[0]) - Vec3(oldFrame[1])), 1e-12) << "X where Y was";
+    EXPECT_LT(glm::length(Vec3(newFrame[2]) + Vec3(oldFrame[2])), 1e-12) << "a right-handed frame: Z turned over";
+    EXPECT_LT(glm::length(Vec3(newFrame[3]) - Vec3(oldFrame[3])), 1e-12);
+    for (const std::string id : {"neck::skin.0", "neck::skin.1", "neck::skin.head"})
+        EXPECT_LT(maxAbsDifference(yAim.rig.nodes[yAim.index(id)].worldMatrix, xAim.rig.nodes[xAim.index(id)].worldMatrix), 1e-12)
+            << id << " keeps its rest place";
+
+    Pose twistOld = xAim.defaults(), twistNew = yAim.defaults();
+    twistOld[xAim.channel("neck::ctrls.fk.0", "rx")] = 25.0;
+    twistNew[yAim.channel("neck::ctrls.fk.0", "ry")] = 25.0;
+    xAim.evaluate(twistOld);
+    yAim.evaluate(twistNew);
+    for (const std::string id : {"neck::skin.0", "neck::skin.1", "neck::skin.head"}) {
+        EXPECT_LT(turnDegrees(worldRotation(xAim, id), worldRotation(yAim, id)), 1e-6) << id;
+        EXPECT_LT(glm::length(xAim.state().world[xAim.index(id)].translation - yAim.state().world[yAim.index(id)].translation), 1e-9) << id;
+    }
+    EXPECT_GT(turnDegrees(worldRotation(xAim, "neck::skin.head"), xAim.rig.nodes[xAim.index("neck::skin.head")].worldMatrix), 5.0)
+        << "the twist moved the head";
+
+    // An up axis along the aim axis is an error naming it.
+    const model::Rig bad = rigging::buildRig(withNeckOptions({{"aim_axis", Value(std::string("y"))}, {"up_axis", Value(std::string("-y"))}}),
+                                             test::builtinTemplates());
+    EXPECT_NE(formatAll(bad.diagnostics).find("up_axis -y lies along aim_axis y"), std::string::npos) << formatAll(bad.diagnostics);
+}
+
 TEST(NeckRig, TheOptionsBuildIncrementallyAsInFullAndMirrorOnBranches)
 {
     model::GuideDocument guide = withNeckOptions({{"bones", Value(4LL)}, {"bones_length", Value(std::string("parametric"))},

@@ -17,15 +17,16 @@ if "$cli" model add "$dir/guide.yml" "$dir/models/box.obj" 2>/dev/null; then ech
 "$cli" skin bind "$dir/guide.yml" --max-influences 2 > "$dir/out.txt"
 grep -q "bound to" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 test -s "$dir/guide.weights" || { echo "no weights beside the guide"; exit 1; }
-# --json: the bones and each vertex's position and weights, for tools (compare-blender-weights).
+# --json: the bones and each vertex's position and weights, for tools (compare-blender-weights). The biped has
+# 95 skin bones: 87, and the legs' front chains (add_chains) on their 4 twist joints each.
 "$cli" skin bind "$dir/guide.yml" -o "$dir/json.weights" --json "$dir/weights.json" > /dev/null
 python3 -c '
 import json, sys
 d = json.load(open(sys.argv[1]))
-assert len(d["bones"]) == 87, len(d["bones"])
+assert len(d["bones"]) == 95, len(d["bones"])
 m = d["meshes"][0]
 assert len(m["positions"]) == len(m["weights"]) > 0
-assert all(abs(sum(w for _, w in ws) - 1) < 1e-4 and all(0 <= b < 87 for b, _ in ws) for ws in m["weights"])
+assert all(abs(sum(w for _, w in ws) - 1) < 1e-4 and all(0 <= b < 95 for b, _ in ws) for ws in m["weights"])
 ' "$dir/weights.json" || { echo "bad --json output"; exit 1; }
 cp "$sample" "$dir/empty.yml"
 if "$cli" skin bind "$dir/empty.yml" 2> "$dir/err.txt"; then echo "a guide without a model bound"; exit 1; fi

@@ -3,6 +3,7 @@
 #include "rigging/builders/Builders.h"
 
 #include "rigging/builders/BuilderKit.h"
+#include "rigging/builders/ChainOrient.h"
 #include "rigging/builders/SkinSpread.h"
 
 #include <algorithm>
@@ -17,6 +18,15 @@ using model::RigNodeKind;
 // The side axis of a vertical chain: the X axis of its root guide (world X
 // unless the rigger turned the root), so necks never flip.
 Vec3 sideAxis(const BuildContext& ctx, model::JointId root) { return kit::guideAxis(ctx, root, 0, Vec3(1.0, 0.0, 0.0)); }
+
+// aim_axis / up_axis: the turn that takes a neck frame (X along the neck, Y
+// across it) to one whose `aim` points along the neck and `up` across it; a
+// frame times it keeps its origin and its directions, renamed.
+Mat4 axisTurn(const ChainOrient& axes)
+{
+    Mat3 source(axes.aimAxis, axes.upAxis, glm::cross(axes.aimAxis, axes.upAxis));
+    return Mat4(glm::transpose(source));
+}
 
 const std::vector<std::string> kHeadSpaces = {"neck", "chest", "cog", "world"};
 
@@ -36,7 +46,9 @@ public:
 
     bool gather(const BuildContext& ctx) const override
     {
-        return kit::chainOfAtLeast(ctx, 3, "the neck", " (a neck joint, the head, the head tip)").has_value();
+        // readChainOrient checks aim_axis and up_axis (the neck declares no other orientation option).
+        return kit::chainOfAtLeast(ctx, 3, "the neck", " (a neck joint, the head, the head tip)").has_value() &&
+               readChainOrient(ctx).has_value();
     }
 
     void generate(BuildContext& ctx) const override
@@ -50,13 +62,14 @@ public:
         // orient_neck: the FK controls turn about the neck's own axes (X
         // along it); off, about the world's, like the chest and the COG.
         const bool orient = ctx.optionBool("orient_neck");
+        const Mat4 turn = axisTurn(*readChainOrient(ctx, false));
         if (!spline && ctx.optionInt("bones") > 0)
             ctx.warning("bones needs spline: without it the neck keeps one skin joint per neck guide", "bones");
 
         RigNodeIndex parent = ctx.hookNode();
         std::vector<RigNodeIndex> fk;
         for (std::size_t i = 0; i < head; ++i) {
-            const Mat4 frame = orient ? frames[i] : kit::uprightFrame(points[i]);
+            const Mat4 frame = orient ? frames[i] * turn : kit::uprightFrame(points[i]);
             const kit::Control control = kit::addControl(ctx, "fk." + std::to_string(i), "", int(i) + 1, parent, frame, chain[i]);
             kit::animate(ctx, control, kit::kRotate); // FK: rotation only
             parent = control.ctrl;
@@ -77,8 +90,14 @@ public:
         // animator puts it (the neck bends and stretches to follow).
         kit::animate(ctx, headControl, spline ? kit::kTranslate | kit::kRotate : kit::kRotate);
         const auto headCtrl = headControl.ctrl;
-        if (spline)
-            addSplineNeck(ctx, chain, points, frames, side, {fk.front(), headCtrl});
+        if (spline) {
+            // The spline reads its base's axes: with aim_axis / up_axis it
+            // follows a group in the neck's own frame under the first control.
+            RigNodeIndex base = fk.front();
+            if (orient && turn != Mat4(1.0))
+                base = ctx.createNode(RigNodeKind::Group, "mch.follow.fk.0", ctx.markedName("follow", "", 1), base, frames[0], chain[0]);
+            addSplineNeck(ctx, chain, points, frames, side, {base, headCtrl});
+        }
         kit::addSkin(ctx, "head", "head", {}, headCtrl, frames[head], chain[head]);
         ctx.setHook(chain[head], headCtrl);
         ctx.setHook(chain.back(), headCtrl);
