@@ -163,8 +163,16 @@ TEST(VehicleTemplates, TheDoorSlidesAlongItsRailWithinItsLimits)
     EXPECT_TRUE(layout[std::size_t(slide)].limited);
     EXPECT_DOUBLE_EQ(layout.clamp(slide, 2.0), 0.7) << "no further than its limit_max, short of the rail's end (0.8 m)";
     EXPECT_DOUBLE_EQ(layout.clamp(slide, -0.3), 0.0) << "no further back than its start";
-    EXPECT_TRUE(layout[std::size_t(r.channel("door::ctrls.slide", "tx"))].locked);
-    EXPECT_TRUE(layout[std::size_t(r.channel("door::ctrls.slide", "ty"))].locked);
+    // do_translate on: a plug door comes out of its frame before it slides (only the slide is limited).
+    EXPECT_FALSE(layout[std::size_t(r.channel("door::ctrls.slide", "tx"))].locked);
+    EXPECT_FALSE(layout[std::size_t(r.channel("door::ctrls.slide", "ty"))].locked);
+    // The driver's seat (do_translate off) only slides, back by limit_max and forward by limit_min (negative:
+    // ahead of its first guide).
+    const int seat = r.channel("seat::ctrls.slide", "tz");
+    EXPECT_DOUBLE_EQ(layout.clamp(seat, 1.0), 0.15);
+    EXPECT_DOUBLE_EQ(layout.clamp(seat, -1.0), -0.1);
+    EXPECT_TRUE(layout[std::size_t(r.channel("seat::ctrls.slide", "tx"))].locked);
+    EXPECT_TRUE(layout[std::size_t(r.channel("seat::ctrls.slide", "ty"))].locked);
 
     Pose pose = r.defaults();
     pose[slide] = layout.clamp(slide, 0.5);
@@ -189,14 +197,17 @@ TEST(VehicleTemplates, TheRearShutterSlidesUpItsCurvedTrackIntoTheRoof)
     const int slide = r.channel("shutter::ctrls.spline.0", "slide");
     const auto& layout = r.program->channels();
     const double open = layout.clamp(slide, 10.0);
-    EXPECT_NEAR(open, 0.7295, 1e-3) << "as far as the track's guides go past the top slat";
+    EXPECT_NEAR(open, 0.5903, 1e-3) << "as far as the track's guides go past the top slat";
     EXPECT_DOUBLE_EQ(layout.clamp(slide, -1.0), 0.0) << "closed at rest";
     for (int i = 0; i < 3; ++i)
         EXPECT_NEAR(r.restPosition("shutter::skin." + std::to_string(i)).z, -2.15, 1e-9) << "closed: the slats hang down the back";
+    // sliders 4: a fourth slat rides in the track; closed, it sits where the track turns into the roof.
+    EXPECT_NEAR(r.restPosition("shutter::skin.3").z, -2.10, 1e-9);
+    EXPECT_GT(r.restPosition("shutter::skin.3").y, r.restPosition("shutter::skin.2").y);
     Pose pose = r.defaults();
     pose[slide] = open;
     r.evaluate(pose);
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 4; ++i) {
         const Vec3 slat = r.position("shutter::skin." + std::to_string(i));
         EXPECT_GT(slat.y, 0.99) << "open: slat " << i << " is up under the roof";
         EXPECT_GT(slat.z, -2.0) << "open: slat " << i << " has gone forward along the roof";

@@ -2,7 +2,8 @@
 # How this sample was begun with rigsmith-cli (run from the repository root after a build): a mech whose
 # rigid parts use the template options a soft character leaves at their defaults. The antennas' and the
 # hose's guide joints were then placed in the editor (bent back, hanging down the back), and the pincer's
-# curved up, so that its curl (up_auto: about its bend) closes it onto the claw.
+# curved up, so that its curl (up_auto: about its bend) closes it onto the claw; the jaw's, the eyes' and the
+# cables' (down the sides of its back to its hips) too.
 set -e
 C=./build/app/rigsmith-cli
 G=${1:-resources/samples/robot.yml}
@@ -24,4 +25,9 @@ $C add $G digit.finger --under hand --name pincer --at 0.01,-0.065,0 --set base=
 $C add $G core.joints --under neck --name antenna --at 0.08,0.2,-0.03 --set "branches=[L, R]" --set number=3 \
   --set length=0.08 --set orient=auto --set up_auto=on --set "up_dir=[1, 0, 0]" --set flip_orient=on --set isolate_skin=on
 $C add $G core.joints --under spine --name hose --at 0,-0.05,-0.15 --set number=4 --set length=0.1 --set orient=auto \
-  --set do_ctrl=off --set isolate_skin=on
+  --set do_ctrl=off --set aim_axis=y --set up_axis=z --set isolate_skin=on
+$C add $G face.jaw --under neck --name jaw --set chin=off --set isolate_skin=on
+$C add $G face.eye --under neck --name eye --set "branches=[L, R]" --set sym=x --set blink_height=0.5 \
+  --set isolate_skin=on
+$C add $G rig.spline --under spine --name cable --at 0.09,-0.04,-0.12 --set "branches=[L, R]" --set number=5 \
+  --set length=0.45 --set controls=3 --set stretch=on --set flip_orient=on --set rotate_order=yxz --set isolate_skin=on
