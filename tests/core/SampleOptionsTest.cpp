@@ -107,8 +107,6 @@ const std::map<std::string, std::string>& allowList()
         // the track and flips the slats within one frame, off the frame grid: RangeOfMotion.)
         {"rig.slide.tweakers", kToDo},
         {"rig.slide.do_scale", kToDo},
-        {"neck.head.aim_axis", kToDo},
-        {"neck.head.up_axis", kToDo},
         {"rig.spline.orient", kToDo},
         {"rig.spline.aim_axis", kToDo},
         {"rig.spline.up_axis", kToDo},
