@@ -125,10 +125,13 @@ TEST(LimbRig, IkFkSnapsBothWaysKeepEveryLimbJointWithinTenMicrometresFromRandomP
                 jitter(r, pose, ik, "pin", 1.0, rng);
                 // Soft IK with stretch lengthens the bones in the soft zone to
                 // keep the end on the control, so an FK pose there has no IK
-                // twin: soft IK is tried without stretch.
+                // twin: soft IK is tried without stretch (and turned off with
+                // it, whatever the limb's soft_ik default).
                 pose[r.channel(ik, "stretch")] = trial % 2;
                 if (trial % 2 == 0)
                     jitter(r, pose, ik, "soft_ik", 0.04, rng);
+                else
+                    pose[r.channel(ik, "soft_ik")] = 0.0;
                 r.evaluate(pose);
                 before = positionsOf(r, joints);
                 auto back = r.posing->fkToIk(pose, r.index(limb + "::ctrls.fk.1"));

@@ -81,8 +81,6 @@ const std::map<std::string, std::string>& allowList()
         {"leg.limb.space_switch", "off fixes each space; a front leg in chest space must switch to world to plant"},
         {"leg.limb.ik_orient", kBipedFixture},     // Limb.TheIkControlIsWorldOrientedByDefault...
         {"leg.limb.reverse_lock", kBipedFixture},  // LimbRig.FootRollAndBankKeepThePlantedPivotFixedInWorldSpace
-        {"quad.leg.soft_ik", "0.04 on the quadruped's hind leg (5.8 cm short of full reach, rest pose unchanged) fails "
-                             "LimbRig.IkFkSnapsBothWaysKeepEveryLimbJointWithinTenMicrometresFromRandomPoses: to look into"},
         {"quad.leg.ik_blend", "legs plant their feet: IK by default; FK by default is the arms' (the robot's)"},
         {"quad.leg.stretch", "the quadruped's hind leg stretches with volume; off is the limbs' shared IK stage, which "
                              "the robot's arms and the face set"},
