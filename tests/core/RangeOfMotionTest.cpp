@@ -77,14 +77,21 @@ double worstStretch(const io::ExportScene& scene, const io::ExportClip& clip)
     return worst;
 }
 
+// The exporter's rule for a still channel: every key within 1e-6 of the
+// first on each axis (metres, or scale factor).
+bool farther(const Vec3& a, const Vec3& b)
+{
+    return std::abs(a.x - b.x) > 1e-6 || std::abs(a.y - b.y) > 1e-6 || std::abs(a.z - b.z) > 1e-6;
+}
+
 bool changes(const io::ExportTrack& track, unsigned bit)
 {
     for (std::size_t k = 1; k < track.translations.size(); ++k) {
-        if (bit == io::kTranslationChannel && glm::length(track.translations[k] - track.translations[0]) > 1e-6)
+        if (bit == io::kTranslationChannel && farther(track.translations[k], track.translations[0]))
             return true;
         if (bit == io::kRotationChannel && std::abs(glm::dot(track.rotations[k], track.rotations[0])) < 1.0 - 1e-12)
             return true;
-        if (bit == io::kScaleChannel && glm::length(track.scales[k] - track.scales[0]) > 1e-6)
+        if (bit == io::kScaleChannel && farther(track.scales[k], track.scales[0]))
             return true;
     }
     return false;
