@@ -62,17 +62,12 @@ const std::map<std::string, std::string>& allowList()
         // Export.robot.BlenderMidKeys; three.js agrees with both. To look into.)
         {"arm.limb.non_rolling", "off is a candy-wrapper upper arm no sample's character wants (the robot's arms: "
                                  "see above)"},
-        {"arm.limb.volume", kBipedFixture},        // Templates.TheLimbBlendsFkAndIkAndSpreadsTwistJoints
-        {"arm.limb.stomp_power", kBipedFixture},   // LimbRig.StretchReachesAGoalBeyondReachAndVolumeScales...
         {"arm.limb.pin", "off: the biped's elbow pin is wanted (elbow on a table); the robot's arms would (other sample)"},
         {"arm.limb.soft_ik", "the biped's arm stands 3.3 mm short of full reach (0.5433 m of bone, 0.54 m shoulder to "
                              "wrist), so any soft IK above that moves its rest pose"},
-        {"arm.limb.ik_space", kBipedFixture},      // Limb.KneesAndElbowsKeepTheirSide..., WorldSpace.*, PoseTools.*
         {"arm.limb.space_switch", "off fixes each space; the biped's arm needs its switches (chest/world)"},
         {"arm.limb.effector_plane", kBipedFixture}, // LimbRig.EffectorPlaneGroundLevelsTheFeetAndYTurnsTheHandsUp...
         {"arm.limb.ik_fk_visibility", kBipedFixture}, // Limb.IkFkVisibilityFollowsTheBlend, Mods.APlugMod...
-        {"arm.limb.auto_clavicle", kBipedFixture}, // Evaluator.SoftIk..., Evaluator.IkStretches..., LimbBendy.*
-        {"arm.limb.add_chains", kBipedFixture},    // LimbChains.*, Templates.TheBipedIsMirrored..., Templates.TheOptions...
         {"leg.limb.soft_ik", "the biped's legs stand 0.95 mm and the quadruped's front legs 1.4 mm short of full reach, "
                              "so any soft IK above that moves their rest pose"},
         {"leg.limb.ik_blend", "legs plant their feet: IK by default; FK by default is the arms' (the robot's)"},

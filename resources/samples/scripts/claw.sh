@@ -9,7 +9,7 @@ rm -f $G
 $C new $G --name claw
 $C add $G world.character --name world
 $C add $G spine.torso --under world --name spine
-$C add $G arm.limb --under spine --name arm
+$C add $G arm.limb --under spine --name arm --set volume=on --set stomp_power=-0.35 --set auto_clavicle=0.5 --set ik_space=chest --set "add_chains=[muscle]"
 $C add $G digit.hand --under arm:hand --name hand
 $C add $G digit.finger --under hand --name talon_in --at -0.02,-0.035,0.03 --set number=4 --set length=0.09 --set base=off --set "target_weights=[1, 1, 0.6]"
 $C add $G digit.finger --under hand --name talon_mid --at -0.02,-0.035,0 --set number=4 --set length=0.11 --set base=off --set "target_weights=[1, 1, 0.6]"
