@@ -10,6 +10,16 @@
 
 namespace rs::test {
 
+model::GuideDocument bipedLimbsWith(const std::map<std::string, Value>& options)
+{
+    model::GuideDocument guide = loadSample("biped");
+    for (const auto& i : guide.instances())
+        if (i.name == "arm" || i.name == "leg")
+            for (const auto& [name, value] : options)
+                guide.instance(i.id)->options[name] = value;
+    return guide;
+}
+
 model::TemplateInstance addInstance(model::GuideDocument& doc, const std::string& templateId, model::JointId under,
                                     const std::map<std::string, Value>& options)
 {

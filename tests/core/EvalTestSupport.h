@@ -17,6 +17,10 @@ namespace rs::test {
 model::TemplateInstance addInstance(model::GuideDocument& doc, const std::string& templateId, model::JointId under,
                                     const std::map<std::string, Value>& options = {});
 
+// The biped sample with `options` set on its arm and leg instances (both
+// sides: the L/R branches are one instance each).
+model::GuideDocument bipedLimbsWith(const std::map<std::string, Value>& options);
+
 class PosedRig {
 public:
     explicit PosedRig(const std::string& sample);

@@ -26,17 +26,7 @@ using test::PosedRig;
 
 const char* const kLimbs[] = {"arm.L", "arm.R", "leg.L", "leg.R"};
 
-model::GuideDocument bipedWith(const std::map<std::string, Value>& options)
-{
-    model::GuideDocument guide = test::loadSample("biped");
-    for (const auto& i : guide.instances())
-        if (i.name == "arm" || i.name == "leg")
-            for (const auto& [name, value] : options)
-                guide.instance(i.id)->options[name] = value;
-    return guide;
-}
-
-model::GuideDocument chainedBiped() { return bipedWith({{"add_chains", Value(std::string("[sleeve, bulge]"))}}); }
+model::GuideDocument chainedBiped() { return test::bipedLimbsWith({{"add_chains", Value(std::string("[sleeve, bulge]"))}}); }
 
 Mat4 reflected(const Mat4& m)
 {
@@ -186,7 +176,7 @@ TEST(LimbChains, BadChainNamesAreRefusedWhereTheyAreWritten)
     EXPECT_NE(all.find(where + "names 'sleeve' twice"), std::string::npos) << all;
     // Set another way (an edit, the API): the build refuses it, naming the option.
     for (const std::string bad : {"[1st]", "[a, a]", "[sle-eve]", "{a: 1}"}) {
-        const model::Rig rig = rigging::buildRig(bipedWith({{"add_chains", Value(bad)}}), test::builtinTemplates());
+        const model::Rig rig = rigging::buildRig(test::bipedLimbsWith({{"add_chains", Value(bad)}}), test::builtinTemplates());
         EXPECT_TRUE(hasErrors(rig.diagnostics)) << bad;
         EXPECT_NE(formatAll(rig.diagnostics).find("option 'add_chains'"), std::string::npos) << bad << ": " << formatAll(rig.diagnostics);
     }
@@ -195,7 +185,7 @@ TEST(LimbChains, BadChainNamesAreRefusedWhereTheyAreWritten)
 TEST(LimbChains, WithoutTwistJointsAChainWarnsAndAddsNothing)
 {
     const model::Rig rig = rigging::buildRig(
-        bipedWith({{"add_chains", Value(std::string("[sleeve]"))}, {"twist_upper", Value(0LL)}, {"twist_lower", Value(0LL)}}),
+        test::bipedLimbsWith({{"add_chains", Value(std::string("[sleeve]"))}, {"twist_upper", Value(0LL)}, {"twist_lower", Value(0LL)}}),
         test::builtinTemplates());
     EXPECT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
     int warnings = 0;
@@ -207,7 +197,7 @@ TEST(LimbChains, WithoutTwistJointsAChainWarnsAndAddsNothing)
 
 TEST(LimbChains, ChainsRebuildIncrementallyAsAFullBuild)
 {
-    model::GuideDocument guide = bipedWith({{"add_chains", Value(std::string(""))}});
+    model::GuideDocument guide = test::bipedLimbsWith({{"add_chains", Value(std::string(""))}});
     rigging::BuildCache cache;
     test::buildAndCompare(guide, cache, "first build");
     for (const auto& i : guide.instances())

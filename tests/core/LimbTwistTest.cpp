@@ -20,16 +20,6 @@ using test::PosedRig;
 
 const char* const kLimbs[] = {"arm.L", "arm.R", "leg.L", "leg.R"};
 
-model::GuideDocument bipedWith(const std::map<std::string, Value>& options)
-{
-    model::GuideDocument guide = test::loadSample("biped");
-    for (const auto& i : guide.instances())
-        if (i.name == "arm" || i.name == "leg")
-            for (const auto& [name, value] : options)
-                guide.instance(i.id)->options[name] = value;
-    return guide;
-}
-
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 Mat4 reflected(const Mat4& m)
@@ -77,7 +67,7 @@ std::map<std::string, Mat3> rotationsOf(const PosedRig& r, const std::string& li
 
 TEST(LimbTwist, AdvancedTwistAtItsDefaultsMovesNoJointAtRestOrPosed)
 {
-    PosedRig plain(bipedWith({{"advanced_twist", Value(false)}})), advanced(bipedWith({{"advanced_twist", Value(true)}}));
+    PosedRig plain(test::bipedLimbsWith({{"advanced_twist", Value(false)}})), advanced(test::bipedLimbsWith({{"advanced_twist", Value(true)}}));
     ASSERT_TRUE(plain.ok() && advanced.ok());
     for (const std::string limb : kLimbs)
         for (const char* attribute : {"twist_start", "twist_mid", "twist_end", "twist_bias"})
@@ -100,7 +90,7 @@ TEST(LimbTwist, AdvancedTwistAtItsDefaultsMovesNoJointAtRestOrPosed)
 
 TEST(LimbTwist, TheEndMidAndStartRollsSpreadLinearlyOverTheTwistJoints)
 {
-    PosedRig r(bipedWith({{"advanced_twist", Value(true)}, {"twist_upper", Value(3LL)}}));
+    PosedRig r(test::bipedLimbsWith({{"advanced_twist", Value(true)}, {"twist_upper", Value(3LL)}}));
     ASSERT_TRUE(r.ok());
     const Pose base = bentPose(r);
     for (const std::string limb : kLimbs) {
@@ -172,7 +162,7 @@ double turnFrom(const PosedRig& r, const std::string& start, const std::string& 
 
 TEST(LimbTwist, TwistBiasLeavesMoreOfTheTwistToTheEndOrMovesItTowardsTheStart)
 {
-    PosedRig r(bipedWith({{"advanced_twist", Value(true)}}));
+    PosedRig r(test::bipedLimbsWith({{"advanced_twist", Value(true)}}));
     ASSERT_TRUE(r.ok());
     for (const std::string limb : kLimbs) {
         const Vec3 shoulder = r.restPosition(limb + "::blend.0"), elbow = r.restPosition(limb + "::blend.1");
@@ -207,7 +197,7 @@ TEST(LimbTwist, TwistBiasLeavesMoreOfTheTwistToTheEndOrMovesItTowardsTheStart)
 
 TEST(LimbTwist, TheRightSideRollsAsTheMirrorOfTheLeft)
 {
-    PosedRig r(bipedWith({{"advanced_twist", Value(true)}, {"add_chains", Value(std::string("[sleeve]"))}}));
+    PosedRig r(test::bipedLimbsWith({{"advanced_twist", Value(true)}, {"add_chains", Value(std::string("[sleeve]"))}}));
     ASSERT_TRUE(r.ok());
     Pose pose = bentPose(r, false); // the body still, so both sides can mirror
     std::vector<model::RigNodeIndex> left;
@@ -237,7 +227,7 @@ TEST(LimbTwist, TheRightSideRollsAsTheMirrorOfTheLeft)
     }
     EXPECT_EQ(pairs, 28); // per side: 14 arm and 14 leg skin joints
     // And the pose did something: the left forearm's twist joints rolled.
-    PosedRig plain(bipedWith({{"advanced_twist", Value(true)}, {"add_chains", Value(std::string("[sleeve]"))}}));
+    PosedRig plain(test::bipedLimbsWith({{"advanced_twist", Value(true)}, {"add_chains", Value(std::string("[sleeve]"))}}));
     plain.evaluate(bentPose(plain, false));
     EXPECT_GT(maxAbsDifference(state.worldMatrix(r.index("arm.R::skin.dn.1")), plain.state().worldMatrix(plain.index("arm.R::skin.dn.1"))),
               0.1);
@@ -273,7 +263,7 @@ TEST(LimbTwist, TheQuadrupedsHindLegRollsAtTheHockAndCarriesItsChains)
 
 TEST(LimbTwist, AdvancedTwistRebuildsIncrementallyAsAFullBuild)
 {
-    model::GuideDocument guide = bipedWith({{"advanced_twist", Value(false)}});
+    model::GuideDocument guide = test::bipedLimbsWith({{"advanced_twist", Value(false)}});
     rigging::BuildCache cache;
     test::buildAndCompare(guide, cache, "first build");
     for (const auto& i : guide.instances())
