@@ -110,8 +110,6 @@ const std::map<std::string, std::string>& allowList()
         // (Not off on the prop: Cleanup.AssimpReadsTheRecordedDefaultsAsNodeMetadata reads its scale control.)
         {"world.prop.do_scale", kToDo},
         // (Not +Y on the prop's antenna: Blender's FBX importer would connect its translating joints, BoneInference.)
-        {"core.bones.up_axis", kToDo},
-        {"core.bones.rotate_order", kToDo},
     };
     return list;
 }
