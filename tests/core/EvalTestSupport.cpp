@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -117,6 +119,16 @@ std::string worldDump(const model::Rig& rig, const eval::EvalState& state)
             << fixed(s.x) << ", " << fixed(s.y) << ", " << fixed(s.z) << "]}\n";
     }
     return out.str();
+}
+
+eval::Pose turned(PosedRig& r, const eval::Pose& pose, const std::string& control, const Vec3& axis, double degrees)
+{
+    Mat4 world = r.evaluate(pose).worldMatrix(r.index(control));
+    const Mat3 turn = glm::mat3_cast(glm::angleAxis(glm::radians(degrees), axis));
+    const Vec3 at(world[3]);
+    world = Mat4(turn * Mat3(world));
+    world[3] = Vec4(at, 1.0);
+    return r.posing->placeAt(pose, r.index(control), world);
 }
 
 } // namespace rs::test

@@ -55,4 +55,7 @@ eval::Pose sweepPose(const eval::ChannelLayout& layout);
 // 6 decimals, quaternions [x, y, z, w]): what evaluation golden files hold.
 std::string worldDump(const model::Rig& rig, const eval::EvalState& state);
 
+// `pose` with `control` turned by `degrees` about the world `axis` through its own place.
+eval::Pose turned(PosedRig& r, const eval::Pose& pose, const std::string& control, const Vec3& axis, double degrees);
+
 } // namespace rs::test

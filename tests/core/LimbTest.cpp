@@ -185,16 +185,6 @@ TEST(Limb, TheSwitchControlStaysAtTheLimbEndWhenTheLimbIsPosed)
     }
 }
 
-// `control` turned by `degrees` about the world `axis` through its own place.
-Pose turned(PosedRig& r, const Pose& pose, const std::string& control, const Vec3& axis, double degrees)
-{
-    Mat4 world = r.evaluate(pose).worldMatrix(r.index(control));
-    const Mat3 turn = glm::mat3_cast(glm::angleAxis(glm::radians(degrees), axis));
-    const Vec3 at(world[3]);
-    world = Mat4(turn * Mat3(world));
-    world[3] = Vec4(at, 1.0);
-    return r.posing->placeAt(pose, r.index(control), world);
-}
 
 // How far `id` turned about `axis` since rest, in degrees.
 double twistDegrees(const PosedRig& r, const std::string& id, const Vec3& axis)
@@ -229,14 +219,14 @@ TEST(Limb, TwistJointsShareTheTwistLinearly)
         // FK: the upper bone rolled 90 degrees; no roll at the shoulder or hip (non-rolling).
         Pose fk = r.defaults();
         fk[r.channel(limb + "::ctrls.switch", "ik_blend")] = 0.0;
-        r.evaluate(turned(r, fk, limb + "::ctrls.fk.0", upper, 90.0));
+        r.evaluate(test::turned(r, fk, limb + "::ctrls.fk.0", upper, 90.0));
         expectLinearShares(r, limb, "up", 0, upper, " upper, FK");
         // FK and IK: the end turned 90 degrees about the lower bone.
-        r.evaluate(turned(r, fk, limb + "::ctrls.fk.2", lower, 90.0));
+        r.evaluate(test::turned(r, fk, limb + "::ctrls.fk.2", lower, 90.0));
         expectLinearShares(r, limb, "dn", 1, lower, " lower, FK");
         Pose ik = r.defaults();
         ik[r.channel(limb + "::ctrls.switch", "ik_blend")] = 1.0;
-        r.evaluate(turned(r, ik, limb + "::ctrls.ik", lower, 90.0));
+        r.evaluate(test::turned(r, ik, limb + "::ctrls.ik", lower, 90.0));
         EXPECT_NEAR(twistDegrees(r, limb + "::skin.dn.0", lower), 30.0, 0.5) << limb << " lower, IK";
         EXPECT_NEAR(twistDegrees(r, limb + "::skin.dn.1", lower), 60.0, 0.5) << limb << " lower, IK";
     }
@@ -248,7 +238,7 @@ TEST(Limb, RollingUpperTwistIsStillAnOptionAndRollsTheShoulderJointFully)
     const Vec3 upper = glm::normalize(r.restPosition("arm.L::blend.1") - r.restPosition("arm.L::blend.0"));
     Pose fk = r.defaults();
     fk[r.channel("arm.L::ctrls.switch", "ik_blend")] = 0.0;
-    r.evaluate(turned(r, fk, "arm.L::ctrls.fk.0", upper, 90.0));
+    r.evaluate(test::turned(r, fk, "arm.L::ctrls.fk.0", upper, 90.0));
     EXPECT_NEAR(twistDegrees(r, "arm.L::skin.limb.0", upper), 90.0, 0.5);
     EXPECT_NEAR(twistDegrees(r, "arm.L::skin.up.0", upper), 90.0, 0.5); // the candy wrapper the default avoids
 }

@@ -137,16 +137,6 @@ TEST(LimbTwist, TheEndMidAndStartRollsSpreadLinearlyOverTheTwistJoints)
     }
 }
 
-// Turns `control` by `degrees` about the world `axis` through its own place.
-Pose turned(PosedRig& r, const Pose& pose, const std::string& control, const Vec3& axis, double degrees)
-{
-    Mat4 world = r.evaluate(pose).worldMatrix(r.index(control));
-    const Mat3 turn = glm::mat3_cast(glm::angleAxis(glm::radians(degrees), axis));
-    const Vec3 at(world[3]);
-    world = Mat4(turn * Mat3(world));
-    world[3] = Vec4(at, 1.0);
-    return r.posing->placeAt(pose, r.index(control), world);
-}
 
 // How far `joint` turned since `rest` relative to its segment's start joint
 // `start` (which carries the rest of the pose), in degrees.
@@ -175,8 +165,8 @@ TEST(LimbTwist, TwistBiasLeavesMoreOfTheTwistToTheEndOrMovesItTowardsTheStart)
         // The end turned 60 degrees about the forearm or shin, the upper bone
         // rolled 60 degrees about itself (non-rolling: the upper twist joints
         // share the roll from none at the start to all of it at the elbow).
-        Pose twisted = turned(r, fk, limb + "::ctrls.fk.2", lower, 60.0);
-        twisted = turned(r, twisted, limb + "::ctrls.fk.0", upper, 60.0);
+        Pose twisted = test::turned(r, fk, limb + "::ctrls.fk.2", lower, 60.0);
+        twisted = test::turned(r, twisted, limb + "::ctrls.fk.0", upper, 60.0);
         for (const double bias : {0.0, 1.0, -1.0, 0.5}) {
             twisted[r.channel(limb + "::ctrls.switch", "twist_bias")] = bias;
             r.evaluate(twisted);
