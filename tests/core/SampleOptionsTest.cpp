@@ -86,12 +86,6 @@ const std::map<std::string, std::string>& allowList()
         // digit.finger: aim_axis only counts with orient auto (the biped's thumb, the robot's pincer).
         {"digit.finger.aim_axis", "every joint of the samples aims X down its bone (limbs, spine, fingers); another "
                                   "aim axis is another pipeline's convention"},
-        // Face: the defaults are a human's (where the lids meet, what follows the jaw, a chin control); a sample
-        // with another kind of face would set them.
-        // (The robot's jaw (chin off) and eyes (blink_height 0.5) are a creature's; it has no lips, so the mouth's
-        // shares of the jaw wait for a sample with a muzzle or a beak.)
-        {"face.mouth.lip_low_jaw", kToDo},
-        {"face.mouth.corner_jaw", kToDo},
         {"rig.slide.stretch", kToDo},
         // (Not the vehicle's shutter: its range of motion moves a tweaker past its 15 cm neighbours, which folds
         // the track and flips the slats within one frame, off the frame grid: RangeOfMotion.)
