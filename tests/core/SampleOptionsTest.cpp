@@ -79,7 +79,6 @@ const std::map<std::string, std::string>& allowList()
         {"quad.leg.ik_blend", "legs plant their feet: IK by default; FK by default is the arms' (the robot's)"},
         {"quad.leg.stretch", "the quadruped's hind leg stretches with volume; off is the limbs' shared IK stage, which "
                              "the robot's arms and the face set"},
-        {"quad.leg.twist_lower", kBipedFixture},   // LimbTwist.TheQuadrupedsHindLegRollsAtTheHockAndCarriesItsChains
         {"quad.leg.blend_joints", "off is a mechanical limb's (the robot's arms); no sample has a mechanical hind leg"},
         {"quad.leg.non_rolling", "off is a candy-wrapper thigh no sample's character wants"},
         {"quad.leg.reverse_lock", kBipedFixture},  // LimbRig.FootRollAndBankKeepThePlantedPivotFixedInWorldSpace
