@@ -267,7 +267,7 @@ void addAimPointScaleAndDrivenKey(model::Rig& rig)
 TEST(ConstraintDump, EveryKindReadsBackFromTheDumpWithItsTypedSettingsAndEvaluatesTheSame)
 {
     std::set<model::ConstraintKind> kinds;
-    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle", "robot", "claw"}) {
+    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart"}) {
         SCOPED_TRACE(sample);
         test::PosedRig built(sample);
         model::Rig rig = built.rig;

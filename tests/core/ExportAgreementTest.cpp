@@ -211,5 +211,5 @@ TEST_P(ExportAgreement, AssimpPlaysTheGlbAndTheFbxAlikeBetweenKeys)
                 travel, worst, where.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw"),
+INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart"),
                          [](const testing::TestParamInfo<std::string>& info) { return info.param; });

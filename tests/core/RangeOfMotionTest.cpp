@@ -101,7 +101,7 @@ bool changes(const io::ExportTrack& track, unsigned bit)
 
 TEST(RangeOfMotion, EverySampleMovesEveryExercisedControlWithoutStretchOnTheFrameGrid)
 {
-    for (const std::string name : {"biped", "quadruped", "prop", "vehicle", "robot"}) {
+    for (const std::string name : {"biped", "quadruped", "prop", "vehicle", "robot", "cart"}) {
         SCOPED_TRACE(name);
         const model::Rig& rig = sample(name);
         const io::ExportScene scene = romScene(rig);

@@ -93,15 +93,6 @@ const std::map<std::string, std::string>& allowList()
         {"rig.spline.orient", kToDo},
         {"rig.spline.aim_axis", kToDo},
         {"rig.spline.up_axis", kToDo},
-        // (Not on the vehicle's wheels: they are the rolling the VehicleTemplates tests measure, the move control
-        // rolling them (hook ground) and steps of up to 1.7 m rolling (roll_jump 0: one circumference, 2.2 m), and
-        // path is what a vehicle that turns wants. A second wheeled sample (a trailer; a cart on rails, axis) would
-        // set them.)
-        {"wheel.legacy.hook", kToDo},
-        {"wheel.legacy.roll", kToDo},
-        {"wheel.legacy.roll_jump", kToDo},
-        // (Not off on the prop: Cleanup.AssimpReadsTheRecordedDefaultsAsNodeMetadata reads its scale control.)
-        {"world.prop.do_scale", kToDo},
         // (Not +Y on the prop's antenna: Blender's FBX importer would connect its translating joints, BoneInference.)
     };
     return list;

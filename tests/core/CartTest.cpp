@@ -1,0 +1,184 @@
+// The cart sample (resources/samples/cart.yml) as an animator checks it: a
+// mine cart on straight rails along +Z, a game prop at a fixed scale
+// (world.prop do_scale off, a chassis and a tub that do not scale). Its wheels
+// roll only as the chassis is pushed along the rails (wheel.legacy hook world:
+// the move control places the cart on the track without rolling them); the
+// front axle measures its displacement along the rails (roll axis), the back
+// axle the path it takes (roll path), with a roll_jump of 1.5 m that a
+// runaway cart's step of a frame stays under and a snap along the track does not.
+// Where a test shows what an option changes, it builds the cart with that
+// option at its default beside it (cartWith).
+#include "EvalTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace rs {
+namespace {
+
+using eval::Pose;
+using test::PosedRig;
+
+constexpr double kRadius = 0.15; // the cart's wheels: axis guide to ground guide
+const char* const kFront[] = {"wheel_front.L", "wheel_front.R"};
+const char* const kBack[] = {"wheel_back.L", "wheel_back.R"};
+const char* const kWheels[] = {"wheel_front.L", "wheel_front.R", "wheel_back.L", "wheel_back.R"};
+const std::string kChassis = "chassis::ctrls.xform";
+const std::string kMove = "world::ctrls.move";
+
+// How far the tyre has turned about its axle, radians in (-pi, pi]: its up
+// axis (at rest +Y) turned towards forward (+Z). The cart does not turn here.
+double rollOf(const PosedRig& r, const std::string& wheel)
+{
+    const Vec3 up = glm::normalize(r.state().world[r.index(wheel + "::skin.spin")].rotation()[1]);
+    return std::atan2(up.z, up.y);
+}
+
+// `actual` and `expected` as turns of a wheel: the same up to whole turns.
+double turnError(double actual, double expected) { return std::abs(std::remainder(actual - expected, glm::two_pi<double>())); }
+
+// Moves `control`'s `channel` from its value in `pose` to `to` in `steps` evaluations (frames).
+void push(PosedRig& r, Pose& pose, const std::string& control, const std::string& channel, double to, int steps)
+{
+    const int c = r.channel(control, channel);
+    const double from = pose[c];
+    for (int i = 1; i <= steps; ++i) {
+        pose[c] = from + (to - from) * i / steps;
+        r.evaluate(pose);
+    }
+}
+
+// The cart sample with `option` set to `value` on the instances `names`.
+model::GuideDocument cartWith(std::initializer_list<const char*> names, const std::string& option, Value value)
+{
+    model::GuideDocument guide = test::loadSample("cart");
+    for (const char* name : names) {
+        const model::TemplateInstance* instance = guide.instanceNamed(name);
+        EXPECT_TRUE(instance) << name;
+        if (instance)
+            guide.instance(instance->id)->options[option] = value;
+    }
+    return guide;
+}
+
+TEST(Cart, PushingTheCartOneMetreAlongItsRailsRollsEachWheelOneOverItsRadius)
+{
+    PosedRig r("cart");
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
+    Pose pose = r.defaults();
+    push(r, pose, kChassis, "tz", 1.0, 30); // pushed over 30 frames
+    for (const std::string wheel : kWheels) {
+        EXPECT_NEAR(r.position(wheel + "::skin.spin").z - r.restPosition(wheel + "::skin.spin").z, 1.0, 1e-9) << wheel;
+        EXPECT_LT(turnError(rollOf(r, wheel), 1.0 / kRadius), 1e-9) << wheel << " rolled " << rollOf(r, wheel);
+    }
+    // Pulled back to where it stood, every wheel is unrolled again.
+    push(r, pose, kChassis, "tz", 0.0, 30);
+    for (const std::string wheel : kWheels)
+        EXPECT_NEAR(rollOf(r, wheel), 0.0, 1e-9) << wheel;
+}
+
+// hook world: "what follows the world and move controllers (only the
+// vehicle's own controls roll them)". The default (ground) rolls them as the
+// move control carries them.
+TEST(Cart, TheMoveControlPlacesTheCartOnTheTrackWithoutRollingItsWheelsAndTheChassisRollsThem)
+{
+    PosedRig r("cart");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    push(r, pose, kMove, "tz", 3.0, 30);
+    push(r, pose, "world::ctrls.world", "tz", 0.5, 10);
+    for (const std::string wheel : kWheels) {
+        EXPECT_NEAR(r.position(wheel + "::skin.spin").z - r.restPosition(wheel + "::skin.spin").z, 3.5, 1e-9) << wheel;
+        EXPECT_NEAR(rollOf(r, wheel), 0.0, 1e-9) << wheel << ": carried, not rolled";
+    }
+    push(r, pose, kChassis, "tz", 0.5, 10); // then pushed along the rails from there
+    for (const std::string wheel : kWheels)
+        EXPECT_LT(turnError(rollOf(r, wheel), 0.5 / kRadius), 1e-9) << wheel << " rolled " << rollOf(r, wheel);
+
+    PosedRig ground(cartWith({"wheel_front", "wheel_back"}, "hook", Value(std::string("ground"))));
+    ASSERT_TRUE(ground.ok());
+    Pose groundPose = ground.defaults();
+    push(ground, groundPose, kMove, "tz", 0.5, 10);
+    for (const std::string wheel : kWheels)
+        EXPECT_LT(turnError(rollOf(ground, wheel), 0.5 / kRadius), 1e-9) << wheel << " (hook ground) rolled " << rollOf(ground, wheel);
+}
+
+// roll_jump 1.5 m on the back axle (roll path): a cart running away down the
+// mine at 25 m/s travels 1.04 m a frame at 24 fps, more than its wheels'
+// circumference (0.94 m, the default limit), and still rolls them; a snap of
+// 5 m along the track (re-placing the cart) moves them without rolling them.
+// The front axle (roll axis) rolls by where it is, whatever came before.
+TEST(Cart, ARunawayCartsStepOfAFrameRollsTheBackWheelsAndASnapAlongTheTrackDoesNot)
+{
+    PosedRig r("cart");
+    ASSERT_TRUE(r.ok());
+    Pose pose = r.defaults();
+    push(r, pose, kChassis, "tz", 0.1, 2);
+    push(r, pose, kChassis, "tz", 1.3, 1); // a step of 1.2 m in one frame
+    for (const std::string wheel : kWheels)
+        EXPECT_LT(turnError(rollOf(r, wheel), 1.3 / kRadius), 1e-9) << wheel << " rolled " << rollOf(r, wheel);
+    push(r, pose, kChassis, "tz", 6.3, 1); // a snap of 5 m
+    for (const std::string wheel : kBack)
+        EXPECT_LT(turnError(rollOf(r, wheel), 1.3 / kRadius), 1e-9) << wheel << ": moved, not rolled";
+    for (const std::string wheel : kFront)
+        EXPECT_LT(turnError(rollOf(r, wheel), 6.3 / kRadius), 1e-9) << wheel << ": its displacement along the rails";
+    push(r, pose, kChassis, "tz", 6.5, 4); // from there the back wheels roll again
+    for (const std::string wheel : kBack)
+        EXPECT_LT(turnError(rollOf(r, wheel), 1.5 / kRadius), 1e-9) << wheel << " rolled " << rollOf(r, wheel);
+
+    // At the default roll_jump (one circumference) the runaway step is a jump.
+    PosedRig circumference(cartWith({"wheel_back"}, "roll_jump", Value(0.0)));
+    ASSERT_TRUE(circumference.ok());
+    Pose defaultPose = circumference.defaults();
+    push(circumference, defaultPose, kChassis, "tz", 0.1, 2);
+    push(circumference, defaultPose, kChassis, "tz", 1.3, 1);
+    for (const std::string wheel : kBack)
+        EXPECT_LT(turnError(rollOf(circumference, wheel), 0.1 / kRadius), 1e-9) << wheel << " (roll_jump 0) rolled " << rollOf(circumference, wheel);
+}
+
+// world.prop do_scale off: no scale control under move; the chassis and the
+// tub (core.xform do_scale off) keep their scale locked. Only the wheels' bank
+// controls scale, which flattens a tyre on the rail, not the cart.
+TEST(Cart, AGamePropAtAFixedScaleHasNoScaleControl)
+{
+    PosedRig r("cart");
+    ASSERT_TRUE(r.ok());
+    EXPECT_FALSE(r.rig.findPath("world::ctrls.scale"));
+    const auto post = r.rig.findPath("world::grps.post");
+    ASSERT_TRUE(post);
+    EXPECT_EQ(r.rig.nodes[*post].parent, r.index(kMove)) << "the post transform hangs under move";
+    const model::GuideDocument guide = test::loadSample("cart");
+    int scaled = 0;
+    for (const auto& node : r.rig.nodes) {
+        if (node.kind != model::RigNodeKind::Controller)
+            continue;
+        const bool bank = node.key.tag == "ctrls.bank";
+        for (const char* axis : {"sx", "sy", "sz"}) {
+            const int c = model::channelIndex(axis);
+            if (bank) {
+                scaled += node.channels.isAnimatable(c);
+                continue;
+            }
+            EXPECT_FALSE(node.channels.isAnimatable(c)) << node.path << " " << axis;
+            if (guide.instance(node.key.instance)->templateId == "core.xform") {
+                EXPECT_TRUE(node.channels.isLocked(c)) << node.path << " " << axis;
+            }
+        }
+    }
+    EXPECT_EQ(scaled, 12) << "the four banks flatten their tyres";
+
+    PosedRig scaling(cartWith({"world"}, "do_scale", Value(true)));
+    ASSERT_TRUE(scaling.ok());
+    const auto scale = scaling.rig.findPath("world::ctrls.scale");
+    ASSERT_TRUE(scale) << "world.prop's default has one";
+    EXPECT_TRUE(scaling.rig.nodes[*scale].channels.isAnimatable(model::channelIndex("sy")));
+}
+
+} // namespace
+} // namespace rs
