@@ -8,9 +8,10 @@
 // chain with more joints of the same spacing keeps its sizes; a mirrored copy
 // gets its twin's scale.
 //
-// A segment to a guide joint tagged `target` (a camera's aim target) is not
-// measured: how far away a rigger puts what something looks at says nothing of
-// the character's size.
+// A segment to a guide joint tagged `target` (a camera's aim target) or `axis`
+// (a wheel's axle, offset from its steering pivot) is not measured: how far
+// away a rigger puts what something looks at, or how far inboard a wheel
+// steers, says nothing of the character's size (a wheel measures its radius).
 //
 // An instance whose segments say nothing (a single joint, or joints on one
 // point: a world, a COG, a camera) takes the scale of the nearest ancestor
@@ -27,6 +28,12 @@ namespace {
 
 constexpr double kMinLength = 1e-6; // metres: below it a mean segment says nothing
 
+// Whether the segment to a guide joint with these tags says nothing of size (see above).
+bool unmeasured(const std::vector<std::string>& tags)
+{
+    return std::any_of(tags.begin(), tags.end(), [](const std::string& tag) { return tag == "target" || tag == "axis"; });
+}
+
 // The mean segment length of the joints the builder proposes for a new instance (its default guide).
 double defaultSegment(const templates::TemplateManifest& manifest, const BuilderRegistry& builders)
 {
@@ -41,8 +48,7 @@ double defaultSegment(const templates::TemplateManifest& manifest, const Builder
     for (const GuideJointSpec& spec : specs) {
         const bool inside = spec.parent >= 0 && std::size_t(spec.parent) < world.size();
         world.push_back((inside ? world[spec.parent] : Mat4(1.0)) * spec.local.matrix());
-        const bool aimTarget = std::find(spec.tags.begin(), spec.tags.end(), "target") != spec.tags.end();
-        if (inside && !aimTarget) {
+        if (inside && !unmeasured(spec.tags)) {
             sum += glm::length(translationOf(world.back()) - translationOf(world[spec.parent]));
             ++count;
         }
@@ -59,7 +65,7 @@ double segmentOf(const RigAssembly& a, const model::TemplateInstance& instance)
     double sum = 0.0;
     int count = 0;
     for (const auto& joint : instance.joints)
-        if (auto parent = at.find(joint.parent); parent != at.end() && !joint.hasTag("target")) {
+        if (auto parent = at.find(joint.parent); parent != at.end() && !unmeasured(joint.tags)) {
             sum += glm::length(at[joint.id] - parent->second);
             ++count;
         }

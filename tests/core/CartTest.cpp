@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -178,6 +179,32 @@ TEST(Cart, AGamePropAtAFixedScaleHasNoScaleControl)
     const auto scale = scaling.rig.findPath("world::ctrls.scale");
     ASSERT_TRUE(scale) << "world.prop's default has one";
     EXPECT_TRUE(scaling.rig.nodes[*scale].channels.isAnimatable(model::channelIndex("sy")));
+}
+
+// The largest extent of a node's first control curve (its shape as built, before any pose).
+double shapeSpan(const PosedRig& r, const std::string& node)
+{
+    Vec3 lo(1e300), hi(-1e300);
+    for (const Vec3& p : r.rig.nodes[r.index(node)].curves.at(0).points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const Vec3 extent = hi - lo;
+    return std::max({extent.x, extent.y, extent.z});
+}
+
+TEST(Cart, TheWheelControlsFitItsSmallWheelsAsTheVehiclesFitItsOwn)
+{
+    // The cart's 0.15 m wheels steer about a pivot 0.1 m inboard, as the vehicle's 0.35 m wheels do: the control
+    // circle around each tyre is sized by the wheel's radius, not by that offset, so it rings the tyre alike.
+    PosedRig cart("cart"), vehicle("vehicle");
+    ASSERT_TRUE(cart.ok());
+    ASSERT_TRUE(vehicle.ok());
+    const double vehicleRing = shapeSpan(vehicle, "wheel_front.L::ctrls.wheel") / (2.0 * 0.35);
+    EXPECT_GT(vehicleRing, 1.0) << "the vehicle's wheel control rings its tyre";
+    EXPECT_LT(vehicleRing, 1.3);
+    for (const char* wheel : kWheels)
+        EXPECT_NEAR(shapeSpan(cart, std::string(wheel) + "::ctrls.wheel") / (2.0 * kRadius), vehicleRing, 1e-6) << wheel;
 }
 
 } // namespace
