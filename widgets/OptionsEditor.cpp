@@ -30,6 +30,16 @@ constexpr int kSliderSteps = 1000;
 
 QString text(const std::string& s) { return QString::fromStdString(s); }
 
+// A guide's number, written either way (`ik_blend: 0` reads as an integer).
+std::optional<double> numberOf(const Value& value)
+{
+    if (const auto* i = std::get_if<long long>(&value))
+        return double(*i);
+    if (const auto* d = std::get_if<double>(&value))
+        return *d;
+    return std::nullopt;
+}
+
 // A spin box that lets a number outside its range be typed (so the field can
 // say why it is refused) and, when entered, clamps it to the range.
 template <class Box>
@@ -254,6 +264,15 @@ QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& v
         });
         return combo;
     }
+    // A number edits as the option's kind, integer or not; a value of another
+    // kind than the option's is shown as it is, read-only, not edited.
+    const std::optional<double> number = numberOf(value);
+    const bool numeric = typeOf(p.value) == ValueType::Int || typeOf(p.value) == ValueType::Float;
+    if (numeric ? !number : typeOf(value) != typeOf(p.value)) {
+        auto* label = new QLabel(text(formatValue(value)), m_body);
+        label->setToolTip(tr("Not a value of this option's kind: edit it in the guide file"));
+        return label;
+    }
     switch (typeOf(p.value)) {
     case ValueType::Bool: {
         auto* box = new QCheckBox(m_body);
@@ -262,7 +281,7 @@ QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& v
         return box;
     }
     case ValueType::Int: {
-        const long long current = std::get<long long>(value);
+        const long long current = std::llround(*number);
         auto* holder = new QWidget(m_body);
         auto* layout = new QHBoxLayout(holder);
         layout->setContentsMargins(0, 0, 0, 0);
@@ -280,15 +299,15 @@ QWidget* OptionsEditor::makeEditor(const templates::Parameter& p, const Value& v
         auto* holder = new QWidget(m_body);
         auto* layout = new QHBoxLayout(holder);
         layout->setContentsMargins(0, 0, 0, 0);
-        auto* box = numberBox(holder, std::get<double>(value), p.min, p.max);
+        auto* box = numberBox(holder, *number, p.min, p.max);
         layout->addWidget(box);
         if (p.min || p.max)
-            addRange(layout, p, box, std::get<double>(value));
+            addRange(layout, p, box, *number);
         if (p.min && p.max && *p.max > *p.min) {
             auto* slider = new QSlider(Qt::Horizontal, holder);
             slider->setRange(0, kSliderSteps);
             const double lo = *p.min, span = *p.max - *p.min;
-            slider->setValue(int(std::lround((std::get<double>(value) - lo) / span * kSliderSteps)));
+            slider->setValue(int(std::lround((*number - lo) / span * kSliderSteps)));
             connect(slider, &QSlider::sliderReleased, this,
                     [slider, box, lo, span] { box->setValue(lo + span * slider->value() / kSliderSteps); });
             layout->addWidget(slider, 1);

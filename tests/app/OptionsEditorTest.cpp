@@ -4,6 +4,7 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QMenu>
@@ -121,4 +122,25 @@ TEST(OptionsEditor, NameOverridesRenameTheBuiltControls)
     EXPECT_EQ(w.session().history().size(), 1u);
     w.action("undo")->trigger();
     EXPECT_TRUE(w.session().document() == original);
+}
+
+// A guide's number is read as it is written: the robot's `ik_blend: 0` is an
+// integer in a float option, which the dock edits as the number it is (it
+// crashed the editor when the robot's arm was selected).
+TEST(OptionsEditor, AFloatOptionWrittenAsAnIntegerEditsAsANumber)
+{
+    test::Editor editor;
+    auto& w = editor.window;
+    ASSERT_TRUE(w.openFile(QString(RIGSMITH_SOURCE_DIR) + "/resources/samples/robot.yml"));
+    const auto arm = showOptionsOf(w, "arm");
+    ASSERT_EQ(w.session().document().instance(arm)->options.at("ik_blend"), Value(0LL)) << "the sample writes it so";
+    QWidget* holder = w.optionsEditor()->editorFor("ik_blend");
+    ASSERT_NE(holder, nullptr);
+    auto* box = holder->findChild<QDoubleSpinBox*>();
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(box->value(), 0.0);
+    EXPECT_TRUE(w.optionsEditor()->findChild<QToolButton*>("reset:ik_blend")->isEnabled()) << "changed from 1";
+    box->setValue(0.25);
+    QApplication::processEvents();
+    EXPECT_EQ(w.session().document().instance(arm)->options.at("ik_blend"), Value(0.25));
 }

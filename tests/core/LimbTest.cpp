@@ -2,7 +2,8 @@
 // 22): poles that keep the knees and elbows on their side when the body
 // travels away from planted hands and feet, FK/IK controls shown by the blend,
 // the switch riding on the wrist and ankle, twist shared linearly along the
-// upper arm and thigh, and the IK control's orientation option.
+// upper arm and thigh, and the IK control's orientation option (the foot
+// shape along the foot whatever it is).
 #include "EvalTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -262,6 +263,45 @@ TEST(Limb, TheIkControlIsWorldOrientedByDefaultOrLikeTheJointOrTheGuide)
     EXPECT_LT(maxAbsDifference(Mat4(restRotation(copy, "arm.L::ctrls.ik")), Mat4(guideRotation)), 1e-9);
     const Mat3 mirror(Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)); // the R branch is the mirror image
     EXPECT_LT(maxAbsDifference(Mat4(restRotation(copy, "arm.R::ctrls.ik")), Mat4(mirror * guideRotation * mirror)), 1e-9);
+}
+
+// A foot's IK control is drawn as a foot along the foot, flat on the sole,
+// whatever its orientation: a joint- or guide-oriented control (aimed down the
+// shin) does not tip its foot shape over nor lay it across the foot.
+std::vector<Vec3> worldCurve(const PosedRig& r, const std::string& id)
+{
+    const auto& node = r.rig.nodes[r.index(id)];
+    std::vector<Vec3> points;
+    for (const auto& curve : node.curves)
+        for (const Vec3& p : curve.points)
+            points.push_back(Vec3(node.worldMatrix * Vec4(p, 1.0)));
+    return points;
+}
+
+TEST(Limb, TheFootShapeLiesAlongTheFootWhateverTheIkControlsOrientation)
+{
+    // The biped's legs, and the quadruped's hind legs (quad.leg, joint-oriented in the sample): each foot
+    // is straight and level, so its shape is drawn as on a world-oriented control.
+    const auto withOrient = [](const std::string& sample, const std::string& instance, const std::string& orient) {
+        model::GuideDocument guide = test::loadSample(sample);
+        for (const auto& i : guide.instances())
+            if (i.name == instance)
+                guide.instance(i.id)->options["ik_orient"] = Value(orient);
+        return guide;
+    };
+    for (const auto& [sample, instance] : {std::pair{"biped", "leg"}, std::pair{"quadruped", "hind_leg"}}) {
+        PosedRig world(withOrient(sample, instance, "world")), joint(withOrient(sample, instance, "joint"));
+        for (const char* side : {".L", ".R"}) {
+            const std::string ik = std::string(instance) + side + "::ctrls.ik";
+            ASSERT_GT(maxAbsDifference(Mat4(restRotation(joint, ik)), Mat4(restRotation(world, ik))), 0.1) << ik;
+            const auto expected = worldCurve(world, ik), actual = worldCurve(joint, ik);
+            ASSERT_EQ(actual.size(), expected.size());
+            double largest = 0.0;
+            for (std::size_t k = 0; k < actual.size(); ++k)
+                largest = std::max(largest, glm::length(actual[k] - expected[k]));
+            EXPECT_LT(largest, 1e-9) << sample << " " << ik << ": drawn as with ik_orient world";
+        }
+    }
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // The robot sample (resources/samples/robot.yml), checked the way an animator
 // would on the built and evaluated rig: rigid limbs (no twist or blend joints,
-// no stretch), level feet, a claw and a pincer that close on each other in a
+// no stretch), level feet riding the cog without foot roll, wrists that yaw
+// about the up axis, a claw and a pincer that close on each other in a
 // fist, antennas that turn as mirror images, a hose that is skin joints only,
 // and a skin skeleton of its own.
 #include "EvalTestSupport.h"
@@ -72,6 +73,73 @@ TEST(Robot, TheFeetAreLevel)
     for (const char* side : {"L", "R"}) {
         const Vec3 up = axisAt(r, std::string("leg.") + side + "::blend.2", 1);
         EXPECT_GT(std::abs(up.y), 1.0 - 1e-9) << side << ": the ankle's Y axis is vertical (effector_plane ground)";
+    }
+}
+
+// The mech's feet: no foot roll (reverse_lock off: the IK control carries the
+// ankle, no roll channels), the IK control in the ankle's levelled frame
+// (ik_orient joint with effector_plane ground: X along the foot, Y up) drawn
+// as a foot along the foot, riding the cog (ik_space) with the knee following
+// the foot (pv_space ik).
+TEST(Robot, TheIkFeetRideTheCogWithTheirKneesAndAreLevelFootPlatesWithoutRoll)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    for (const char* side : {"L", "R"}) {
+        const std::string leg = std::string("leg.") + side + "::";
+        const auto& ik = r.rig.nodes[r.index(leg + "ctrls.ik")];
+        EXPECT_FALSE(r.rig.findPath(leg + "rfoot.heel")) << "reverse_lock off";
+        EXPECT_FALSE(r.program->channels().find(r.index(leg + "ctrls.ik"), "roll").has_value()) << side;
+        const Vec3 toes = glm::normalize(r.restPosition(leg + "blend.ball") - r.restPosition(leg + "blend.2"));
+        const Vec3 forward = glm::normalize(Vec3(toes.x, 0.0, toes.z));
+        EXPECT_LT(glm::length(glm::normalize(Vec3(ik.worldMatrix[1])) - Vec3(0, 1, 0)), 1e-9) << side << ": Y up";
+        EXPECT_GT(std::abs(glm::dot(glm::normalize(Vec3(ik.worldMatrix[0])), forward)), 1.0 - 1e-9) << side << ": X along the foot";
+        // The foot shape lies flat along the foot (heel to toe), not across it.
+        Vec3 low(1e9), high(-1e9);
+        for (const auto& curve : ik.curves)
+            for (const Vec3& p : curve.points) {
+                const Vec3 w(ik.worldMatrix * Vec4(p, 1.0));
+                low = glm::min(low, w);
+                high = glm::max(high, w);
+            }
+        EXPECT_GT(high.z - low.z, 2.0 * (high.x - low.x)) << side << ": along the foot";
+        EXPECT_LT(high.y - low.y, 1e-6) << side << ": flat";
+    }
+    Pose pose = r.defaults();
+    EXPECT_EQ(pose[r.channel("leg.L::ctrls.ik", "space")], 2.0) << "cog";
+    EXPECT_EQ(pose[r.channel("leg.L::ctrls.pole", "space")], 1.0) << "ik";
+    pose[r.channel("spine::ctrls.cog", "ty")] = 0.3;
+    r.evaluate(pose);
+    for (const char* id : {"leg.L::blend.2", "leg.L::ctrls.pole", "leg.R::blend.2"})
+        EXPECT_LT(glm::length(r.position(id) - r.restPosition(id) - Vec3(0, 0.3, 0)), 1e-9) << id << " rides the cog";
+    // Turning the foot turns the knee with it: the pole follows the IK control.
+    pose = test::turned(r, r.defaults(), "leg.L::ctrls.ik", Vec3(0, 1, 0), 30.0);
+    r.evaluate(pose);
+    const Vec3 ankle = r.restPosition("leg.L::ctrls.ik");
+    const Vec3 pole = r.restPosition("leg.L::ctrls.pole") - ankle, turnedPole = r.position("leg.L::ctrls.pole") - ankle;
+    EXPECT_NEAR(glm::dot(glm::normalize(Vec3(pole.x, 0, pole.z)), glm::normalize(Vec3(turnedPole.x, 0, turnedPole.z))),
+                std::cos(glm::radians(30.0)), 1e-9);
+}
+
+// The FK arms: the wrist's Y turned up (effector_plane y), so the FK wrist and
+// the IK hand (ik_orient joint) yaw about the world's up; both the FK and the
+// IK controls stay shown whatever the blend (ik_fk_visibility off).
+TEST(Robot, TheWristsTurnAboutTheUpAxisAndTheArmsShowIkAndFkAtOnce)
+{
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    for (const char* side : {"L", "R"})
+        for (const char* id : {"::blend.2", "::ctrls.fk.2", "::ctrls.ik"}) {
+            const std::string node = std::string("arm.") + side + id;
+            const Vec3 y = glm::normalize(Vec3(r.rig.nodes[r.index(node)].worldMatrix[1]));
+            EXPECT_GT(std::abs(y.y), 1.0 - 1e-9) << node << ": Y vertical";
+        }
+    for (double blend : {0.0, 1.0}) {
+        Pose pose = r.defaults();
+        pose[r.channel("arm.L::ctrls.switch", "ik_blend")] = blend;
+        const auto& state = r.evaluate(pose);
+        for (const char* id : {"arm.L::ctrls.fk.0", "arm.L::ctrls.fk.2", "arm.L::ctrls.ik", "arm.L::ctrls.pole"})
+            EXPECT_TRUE(state.isVisible(r.index(id))) << id << " at ik_blend " << blend;
     }
 }
 

@@ -66,16 +66,10 @@ const std::map<std::string, std::string>& allowList()
         {"arm.limb.soft_ik", "the biped's arm stands 3.3 mm short of full reach (0.5433 m of bone, 0.54 m shoulder to "
                              "wrist), so any soft IK above that moves its rest pose"},
         {"arm.limb.space_switch", "off fixes each space; the biped's arm needs its switches (chest/world)"},
-        {"arm.limb.effector_plane", kBipedFixture}, // LimbRig.EffectorPlaneGroundLevelsTheFeetAndYTurnsTheHandsUp...
-        {"arm.limb.ik_fk_visibility", kBipedFixture}, // Limb.IkFkVisibilityFollowsTheBlend, Mods.APlugMod...
         {"leg.limb.soft_ik", "the biped's legs stand 0.95 mm and the quadruped's front legs 1.4 mm short of full reach, "
                              "so any soft IK above that moves their rest pose"},
         {"leg.limb.ik_blend", "legs plant their feet: IK by default; FK by default is the arms' (the robot's)"},
-        {"leg.limb.ik_space", kBipedFixture},      // LimbRig.TheQuadrupedFrontLegHangsFromTheChestAndItsIkCanFollowIt
-        {"leg.limb.pv_space", kBipedFixture},      // Limb.ThePoleSpaceSwitchOffers..., Limb.TwistJointsShare...
         {"leg.limb.space_switch", "off fixes each space; a front leg in chest space must switch to world to plant"},
-        {"leg.limb.ik_orient", kBipedFixture},     // Limb.TheIkControlIsWorldOrientedByDefault...
-        {"leg.limb.reverse_lock", kBipedFixture},  // LimbRig.FootRollAndBankKeepThePlantedPivotFixedInWorldSpace
         {"quad.leg.ik_blend", "legs plant their feet: IK by default; FK by default is the arms' (the robot's)"},
         {"quad.leg.stretch", "the quadruped's hind leg stretches with volume; off is the limbs' shared IK stage, which "
                              "the robot's arms and the face set"},

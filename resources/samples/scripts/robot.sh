@@ -14,9 +14,11 @@ $C add $G spine.torso --under world --name spine --set isolate_skin=on
 $C add $G neck.head --under spine --name neck --set spline=off --set space_switch=off --set orient_neck=off \
   --set isolate_skin=on
 $C add $G arm.limb --under spine --name arm --set clavicle=off --set twist_upper=0 --set twist_lower=0 \
-  --set blend_joints=off --set stretch=off --set ik_orient=joint --set ik_blend=0 --set isolate_skin=on
+  --set blend_joints=off --set stretch=off --set ik_orient=joint --set effector_plane=y --set ik_fk_visibility=off \
+  --set ik_blend=0 --set isolate_skin=on
 $C add $G leg.limb --under spine:hips --name leg --set pelvis=on --set twist_upper=0 --set twist_lower=0 \
-  --set blend_joints=off --set stretch=off --set non_rolling=off --set effector_plane=ground --set isolate_skin=on
+  --set blend_joints=off --set stretch=off --set non_rolling=off --set effector_plane=ground --set ik_orient=joint \
+  --set ik_space=cog --set pv_space=ik --set reverse_lock=off --set isolate_skin=on
 $C add $G digit.hand --under arm:hand --name hand --set isolate_skin=on
 $C add $G digit.finger --under hand --name claw --at 0.01,-0.025,0 --set base=off --set number=3 --set length=0.08 \
   --set fist=25 --set parent_scale=on --set flip_orient=on --set add_nodes=[inf] --set isolate_skin=on
