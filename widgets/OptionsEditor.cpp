@@ -197,7 +197,7 @@ void OptionsEditor::addNames(QVBoxLayout* layout, const model::TemplateInstance&
 
 void OptionsEditor::addParameter(QFormLayout* form, const templates::Parameter& parameter, const Value& value)
 {
-    const bool changed = value != parameter.value;
+    const bool changed = !sameValue(value, parameter.value);
     auto* label = new QLabel(text(parameter.name), m_body);
     label->setToolTip(text(parameter.help));
     if (changed)

@@ -271,16 +271,17 @@ Status setOption(History& history, InstanceId id, const std::string& option, con
     const TemplateInstance* instance = history.document().instance(id);
     if (!instance)
         return noInstance(id);
-    if (typeOf(value) != typeOf(defaultValue))
+    const bool intForFloat = typeOf(value) == ValueType::Int && typeOf(defaultValue) == ValueType::Float;
+    if (typeOf(value) != typeOf(defaultValue) && !intForFloat)
         return refusedFor(id, "option '" + option + "' takes a " + typeName(typeOf(defaultValue)) + ", not a " +
                                   typeName(typeOf(value)));
     std::optional<Value> before;
     if (auto it = instance->options.find(option); it != instance->options.end())
         before = it->second;
     std::optional<Value> after;
-    if (value != defaultValue)
-        after = value;
-    if (before == after)
+    if (!sameValue(value, defaultValue))
+        after = intForFloat ? Value(double(std::get<long long>(value))) : value;
+    if (before == after || (before && after && sameValue(*before, *after)))
         return {};
     history.push(std::make_unique<SetOption>(id, option, before, after));
     return {};

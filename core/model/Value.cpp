@@ -1,6 +1,7 @@
 #include "model/Value.h"
 
 #include <charconv>
+#include <optional>
 
 namespace rs {
 
@@ -19,6 +20,19 @@ const char* typeName(ValueType type)
     case ValueType::Vec3: return "vec3";
     }
     return "?";
+}
+
+bool sameValue(const Value& a, const Value& b)
+{
+    auto number = [](const Value& v) -> std::optional<double> {
+        if (const auto* i = std::get_if<long long>(&v))
+            return double(*i);
+        if (const auto* d = std::get_if<double>(&v))
+            return *d;
+        return std::nullopt;
+    };
+    const auto x = number(a), y = number(b);
+    return x && y ? *x == *y : a == b;
 }
 
 std::string formatNumber(double value)

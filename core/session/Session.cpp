@@ -328,7 +328,7 @@ Status Session::setOption(model::InstanceId id, const std::string& name, const V
     if (!guide)
         return edit::setOption(m_history, id, name, value, option->value);
     auto options = instance->options;
-    if (value == option->value)
+    if (sameValue(value, option->value))
         options.erase(name);
     else
         options[name] = value;

@@ -89,6 +89,24 @@ TEST(GuideEdits, SettingTheDefaultValueRemovesTheStoredOption)
     EXPECT_EQ(doc.instance(spine)->options.at("number"), Value(4LL));
 }
 
+TEST(GuideEdits, AFloatOptionGivenAsAWholeNumberIsStoredAsAFloatAndItsDefaultUnsetsIt)
+{
+    // A float option's 0.0 is written "0" and reads back as an int (the robot's arms' ik_blend): the same number
+    // is the same value, so giving the default as a whole number unsets it, and a whole number is kept as a float.
+    model::GuideDocument doc = test::loadSample("robot");
+    edit::History history(doc);
+    const model::InstanceId arm = doc.instanceNamed("arm")->id;
+    ASSERT_TRUE(doc.instance(arm)->options.count("ik_blend"));
+    EXPECT_TRUE(sameValue(doc.instance(arm)->options.at("ik_blend"), Value(0.0)));
+    EXPECT_TRUE(test::succeeded(edit::setOption(history, arm, "ik_blend", Value(0.0), Value(1.0))));
+    EXPECT_EQ(history.size(), 0u) << "0 and 0.0 are the same blend: nothing to undo";
+    EXPECT_TRUE(test::succeeded(edit::setOption(history, arm, "ik_blend", Value(1LL), Value(1.0))));
+    EXPECT_FALSE(doc.instance(arm)->options.count("ik_blend")) << "1 is the default 1.0";
+    EXPECT_TRUE(test::succeeded(edit::setOption(history, arm, "ik_blend", Value(0LL), Value(1.0))));
+    EXPECT_EQ(doc.instance(arm)->options.at("ik_blend"), Value(0.0)) << "stored as the option's kind";
+    EXPECT_FALSE(sameValue(Value(1LL), Value(true))) << "a number is not a switch";
+}
+
 TEST(GuideEdits, NewInstancesGetFreshIdsAUniqueNameAndDefaultJoints)
 {
     model::GuideDocument doc = test::loadSample("biped");

@@ -126,7 +126,7 @@ std::set<std::string> optionsTheSamplesSet()
                 continue;
             }
             for (const auto& [name, value] : instance.options)
-                if (const auto* option = manifest->findOpt(name); option && !(option->value == value))
+                if (const auto* option = manifest->findOpt(name); option && !sameValue(option->value, value))
                     used.insert(optionKey(*manifest, *option));
         }
     }
