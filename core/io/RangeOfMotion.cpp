@@ -24,6 +24,7 @@ constexpr int kBisections = 12;
 constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
 constexpr int kPathSteps = 8;              // samples of the way to a peak, looking for a flip
 constexpr double kFlipDegrees = 90.0;      // a deform joint turning more than this in one step flips
+constexpr double kFoldShare = 0.5;         // of a joint's rest distance ahead of its parent: closer, the chain folds
 
 // What the planner evaluates with: the rig, its program, a scratch state.
 struct Planner {
@@ -35,6 +36,13 @@ struct Planner {
     StretchGauge gauge;
     std::vector<model::RigNodeIndex> deform; // the deform joints' rig nodes
     double size = 1.0;                       // the skeleton's bounding box diagonal, metres
+    // A deform joint's offset from its skin parent at rest, in the parent's frame (offsets over 1 mm).
+    struct Offset {
+        model::RigNodeIndex node, parent;
+        Vec3 restDirection;
+        double restLength;
+    };
+    std::vector<Offset> offsets;
 
     Planner(const model::Rig& r, const eval::RigProgram& p)
         : rig(r), program(p), posing(r, p), switches(switchesOf(r, p.channels())), driving(drivingChannels(r, p.channels())),
@@ -50,10 +58,32 @@ struct Planner {
                 }
             if (!deform.empty())
                 size = std::max(glm::length(high - low), 1e-3);
+            for (const auto& j : skeleton->joints) {
+                const Vec3 rest = translationOf(j.bindLocal);
+                if (j.parent >= 0 && j.node != model::kNoNode && glm::length(rest) > 1e-3 &&
+                    skeleton->joints[std::size_t(j.parent)].node != model::kNoNode)
+                    offsets.push_back({j.node, skeleton->joints[std::size_t(j.parent)].node, glm::normalize(rest), glm::length(rest)});
+            }
         }
     }
 
     double stretch(const eval::Pose& pose) { return gauge.measure(pose, posing.evaluate(pose)); }
+
+    // How many deform joints, in `state`, lie less than kFoldShare of their
+    // rest distance ahead of their skin parent along the rest direction, in
+    // the parent's frame: a chain folded back on itself (a spline path pulled
+    // past a cusp, where the joints sliding on it collapse and turn over).
+    int folds(const eval::EvalState& state) const
+    {
+        int folded = 0;
+        for (const auto& o : offsets) {
+            const eval::Affine& parent = state.world[o.parent];
+            const Vec3 local = glm::inverse(parent.linear) * (state.world[o.node].translation - parent.translation);
+            if (glm::dot(local, o.restDirection) < kFoldShare * o.restLength)
+                ++folded;
+        }
+        return folded;
+    }
 
     std::vector<eval::Affine> deformPositions(const eval::Pose& pose)
     {
@@ -153,13 +183,16 @@ struct Planner {
     }
 
     // The share (0..1) of `offset` on `channel` from `base` that stretches
-    // nothing more than allowed and flips no joint on the way.
+    // nothing more than allowed, folds no chain and flips no joint on the way.
     double allowedShare(const eval::Pose& base, int channel, double offset, double limit)
     {
+        const int folded = folds(posing.evaluate(base));
         auto fits = [&](double share) {
             eval::Pose p = base;
             p[std::size_t(channel)] = program.channels().clamp(channel, base[std::size_t(channel)] + share * offset);
-            return stretch(p) <= limit && !flipsOnTheWay(base, channel, p[std::size_t(channel)]);
+            const auto& state = posing.evaluate(p);
+            return gauge.measure(p, state) <= limit && folds(state) <= folded &&
+                   !flipsOnTheWay(base, channel, p[std::size_t(channel)]);
         };
         if (fits(1.0))
             return 1.0;

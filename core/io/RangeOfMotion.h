@@ -24,6 +24,12 @@
 //    exercised with the chain switched to FK (FK snapped onto the IK pose
 //    first, so the switch moves nothing) and switched back after; IK controls
 //    (the nodes an IK or spline constraint reads) with the chain in IK;
+//  - a peak is also cut back until no deform joint comes closer than half its
+//    rest distance to its skin parent along the rest direction, in the
+//    parent's frame (a chain folded back on itself: a tweaker or spline
+//    controller pulling a curve past its neighbours, the vehicle shutter's
+//    track folding with its slats turned over), unless the start pose already
+//    has it so;
 //  - a peak is also cut back until no deform joint flips on the way to it
 //    (turns more than 90 degrees in an eighth of the way: a solver's twist or
 //    up vector giving way, e.g. the quadruped's spline tail half turned);
