@@ -92,14 +92,6 @@ const std::map<std::string, std::string>& allowList()
         // shares of the jaw wait for a sample with a muzzle or a beak.)
         {"face.mouth.lip_low_jaw", kToDo},
         {"face.mouth.corner_jaw", kToDo},
-        {"rig.slide.stretch", kToDo},
-        // (Not the vehicle's shutter: its range of motion moves a tweaker past its 15 cm neighbours, which folds
-        // the track and flips the slats within one frame, off the frame grid: RangeOfMotion.)
-        {"rig.slide.tweakers", kToDo},
-        {"rig.slide.do_scale", kToDo},
-        {"rig.spline.orient", kToDo},
-        {"rig.spline.aim_axis", kToDo},
-        {"rig.spline.up_axis", kToDo},
         // (Not on the vehicle's wheels: they are the rolling the VehicleTemplates tests measure, the move control
         // rolling them (hook ground) and steps of up to 1.7 m rolling (roll_jump 0: one circumference, 2.2 m), and
         // path is what a vehicle that turns wants. A second wheeled sample (a trailer; a cart on rails, axis) would
