@@ -22,7 +22,7 @@ constexpr double kMovesJoint = 1e-4;       // metres a motion must move some def
 constexpr double kKeptShare = 0.1;         // a translation cut below this share of its nominal is left out
 constexpr int kBisections = 12;
 constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
-constexpr int kPathSteps = 8;              // samples of the way to a peak, looking for a flip
+constexpr int kPathSteps = 10;             // samples of the way to a peak (a frame each at 30 fps), looking for a flip or a fold
 constexpr double kFlipDegrees = 90.0;      // a deform joint turning more than this in one step flips
 constexpr double kFoldShare = 0.5;         // of a joint's rest distance ahead of its parent: closer, the chain folds
 
@@ -162,8 +162,9 @@ struct Planner {
     // Whether some deform joint flips on the way from `base` to `base` with
     // `value` on `channel` (turns more than kFlipDegrees in one of kPathSteps
     // steps: a solver's twist or up vector giving way, not a motion to keep:
-    // no interpolation between keys can follow it).
-    bool flipsOnTheWay(const eval::Pose& base, int channel, double value)
+    // no interpolation between keys can follow it), or a chain folds on the
+    // way (more joints than `folded`) and unfolds before the peak.
+    bool flipsOnTheWay(const eval::Pose& base, int channel, double value, int folded)
     {
         const double from = base[std::size_t(channel)];
         const double cosFlip = std::cos(glm::radians(kFlipDegrees));
@@ -172,6 +173,8 @@ struct Planner {
         for (int step = 1; step <= kPathSteps; ++step) {
             p[std::size_t(channel)] = from + (value - from) * double(step) / double(kPathSteps);
             std::vector<Mat3> current = deformRotations(p);
+            if (folds(posing.state()) > folded)
+                return true;
             for (std::size_t j = 0; j < current.size(); ++j) {
                 const Mat3 turn = glm::transpose(previous[j]) * current[j];
                 if (0.5 * (turn[0][0] + turn[1][1] + turn[2][2] - 1.0) < cosFlip)
@@ -192,7 +195,7 @@ struct Planner {
             p[std::size_t(channel)] = program.channels().clamp(channel, base[std::size_t(channel)] + share * offset);
             const auto& state = posing.evaluate(p);
             return gauge.measure(p, state) <= limit && folds(state) <= folded &&
-                   !flipsOnTheWay(base, channel, p[std::size_t(channel)]);
+                   !flipsOnTheWay(base, channel, p[std::size_t(channel)], folded);
         };
         if (fits(1.0))
             return 1.0;
