@@ -22,8 +22,9 @@ constexpr double kMovesJoint = 1e-4;       // metres a motion must move some def
 constexpr double kKeptShare = 0.1;         // a translation cut below this share of its nominal is left out
 constexpr int kBisections = 12;
 constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
-constexpr int kPathSteps = 8;              // samples of the way to a peak, looking for a flip
+constexpr int kPathSteps = 10;             // samples of the way to a peak (a frame each at 30 fps), looking for a flip or a fold
 constexpr double kFlipDegrees = 90.0;      // a deform joint turning more than this in one step flips
+constexpr double kFoldShare = 0.5;         // of a joint's rest distance ahead of its parent: closer, the chain folds
 
 // What the planner evaluates with: the rig, its program, a scratch state.
 struct Planner {
@@ -35,6 +36,13 @@ struct Planner {
     StretchGauge gauge;
     std::vector<model::RigNodeIndex> deform; // the deform joints' rig nodes
     double size = 1.0;                       // the skeleton's bounding box diagonal, metres
+    // A deform joint's offset from its skin parent at rest, in the parent's frame (offsets over 1 mm).
+    struct Offset {
+        model::RigNodeIndex node, parent;
+        Vec3 restDirection;
+        double restLength;
+    };
+    std::vector<Offset> offsets;
 
     Planner(const model::Rig& r, const eval::RigProgram& p)
         : rig(r), program(p), posing(r, p), switches(switchesOf(r, p.channels())), driving(drivingChannels(r, p.channels())),
@@ -50,10 +58,32 @@ struct Planner {
                 }
             if (!deform.empty())
                 size = std::max(glm::length(high - low), 1e-3);
+            for (const auto& j : skeleton->joints) {
+                const Vec3 rest = translationOf(j.bindLocal);
+                if (j.parent >= 0 && j.node != model::kNoNode && glm::length(rest) > 1e-3 &&
+                    skeleton->joints[std::size_t(j.parent)].node != model::kNoNode)
+                    offsets.push_back({j.node, skeleton->joints[std::size_t(j.parent)].node, glm::normalize(rest), glm::length(rest)});
+            }
         }
     }
 
     double stretch(const eval::Pose& pose) { return gauge.measure(pose, posing.evaluate(pose)); }
+
+    // How many deform joints, in `state`, lie less than kFoldShare of their
+    // rest distance ahead of their skin parent along the rest direction, in
+    // the parent's frame: a chain folded back on itself (a spline path pulled
+    // past a cusp, where the joints sliding on it collapse and turn over).
+    int folds(const eval::EvalState& state) const
+    {
+        int folded = 0;
+        for (const auto& o : offsets) {
+            const eval::Affine& parent = state.world[o.parent];
+            const Vec3 local = glm::inverse(parent.linear) * (state.world[o.node].translation - parent.translation);
+            if (glm::dot(local, o.restDirection) < kFoldShare * o.restLength)
+                ++folded;
+        }
+        return folded;
+    }
 
     std::vector<eval::Affine> deformPositions(const eval::Pose& pose)
     {
@@ -132,8 +162,9 @@ struct Planner {
     // Whether some deform joint flips on the way from `base` to `base` with
     // `value` on `channel` (turns more than kFlipDegrees in one of kPathSteps
     // steps: a solver's twist or up vector giving way, not a motion to keep:
-    // no interpolation between keys can follow it).
-    bool flipsOnTheWay(const eval::Pose& base, int channel, double value)
+    // no interpolation between keys can follow it), or a chain folds on the
+    // way (more joints than `folded`) and unfolds before the peak.
+    bool flipsOnTheWay(const eval::Pose& base, int channel, double value, int folded)
     {
         const double from = base[std::size_t(channel)];
         const double cosFlip = std::cos(glm::radians(kFlipDegrees));
@@ -142,6 +173,8 @@ struct Planner {
         for (int step = 1; step <= kPathSteps; ++step) {
             p[std::size_t(channel)] = from + (value - from) * double(step) / double(kPathSteps);
             std::vector<Mat3> current = deformRotations(p);
+            if (folds(posing.state()) > folded)
+                return true;
             for (std::size_t j = 0; j < current.size(); ++j) {
                 const Mat3 turn = glm::transpose(previous[j]) * current[j];
                 if (0.5 * (turn[0][0] + turn[1][1] + turn[2][2] - 1.0) < cosFlip)
@@ -153,13 +186,16 @@ struct Planner {
     }
 
     // The share (0..1) of `offset` on `channel` from `base` that stretches
-    // nothing more than allowed and flips no joint on the way.
+    // nothing more than allowed, folds no chain and flips no joint on the way.
     double allowedShare(const eval::Pose& base, int channel, double offset, double limit)
     {
+        const int folded = folds(posing.evaluate(base));
         auto fits = [&](double share) {
             eval::Pose p = base;
             p[std::size_t(channel)] = program.channels().clamp(channel, base[std::size_t(channel)] + share * offset);
-            return stretch(p) <= limit && !flipsOnTheWay(base, channel, p[std::size_t(channel)]);
+            const auto& state = posing.evaluate(p);
+            return gauge.measure(p, state) <= limit && folds(state) <= folded &&
+                   !flipsOnTheWay(base, channel, p[std::size_t(channel)], folded);
         };
         if (fits(1.0))
             return 1.0;

@@ -24,9 +24,18 @@
 //    exercised with the chain switched to FK (FK snapped onto the IK pose
 //    first, so the switch moves nothing) and switched back after; IK controls
 //    (the nodes an IK or spline constraint reads) with the chain in IK;
+//  - a peak is also cut back until no deform joint comes closer than half its
+//    rest distance to its skin parent along the rest direction, in the
+//    parent's frame, at the peak or on the way to it (a chain folded back on
+//    itself: a tweaker or spline controller pulling a curve past its
+//    neighbours, the vehicle shutter's track folding with its slats turned
+//    over, the antenna's tip folding behind the joint before it and out
+//    again; this also keeps a body control from driving its joint through
+//    the root joint below it), unless the start pose already has it so;
 //  - a peak is also cut back until no deform joint flips on the way to it
-//    (turns more than 90 degrees in an eighth of the way: a solver's twist or
-//    up vector giving way, e.g. the quadruped's spline tail half turned);
+//    (turns more than 90 degrees in a tenth of the way, a frame at 30 fps: a
+//    solver's twist or up vector giving way, e.g. the quadruped's spline tail
+//    half turned);
 //  - a motion that moves no deform joint is left out (no dead segments).
 // Keys sit `framesPerKey` frames apart on a grid of `framesPerSecond`; every
 // peak is a key (peak, opposite peak, start), and a channel that would turn

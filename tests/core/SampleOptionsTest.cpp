@@ -79,14 +79,6 @@ const std::map<std::string, std::string>& allowList()
         // digit.finger: aim_axis only counts with orient auto (the biped's thumb, the robot's pincer).
         {"digit.finger.aim_axis", "every joint of the samples aims X down its bone (limbs, spine, fingers); another "
                                   "aim axis is another pipeline's convention"},
-        {"rig.slide.stretch", kToDo},
-        // (Not the vehicle's shutter: its range of motion moves a tweaker past its 15 cm neighbours, which folds
-        // the track and flips the slats within one frame, off the frame grid: RangeOfMotion.)
-        {"rig.slide.tweakers", kToDo},
-        {"rig.slide.do_scale", kToDo},
-        {"rig.spline.orient", kToDo},
-        {"rig.spline.aim_axis", kToDo},
-        {"rig.spline.up_axis", kToDo},
         // (Not +Y on the prop's antenna: Blender's FBX importer would connect its translating joints, BoneInference.)
     };
     return list;
