@@ -12,6 +12,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace rs {
 namespace {
 
@@ -140,6 +143,36 @@ TEST(Robot, TheWristsTurnAboutTheUpAxisAndTheArmsShowIkAndFkAtOnce)
         const auto& state = r.evaluate(pose);
         for (const char* id : {"arm.L::ctrls.fk.0", "arm.L::ctrls.fk.2", "arm.L::ctrls.ik", "arm.L::ctrls.pole"})
             EXPECT_TRUE(state.isVisible(r.index(id))) << id << " at ik_blend " << blend;
+    }
+}
+
+TEST(Robot, TheRigidUpperArmRollsWholeWithItsBoneAndHasNoElbowPin)
+{
+    // A rigid arm plate turns with its bone (non_rolling off): rolled 40 degrees about the bone, the upper arm skin
+    // joint rolls the same 40 degrees, keeping its rest offset to the FK control. And no elbow pin (pin off): the
+    // arm has no pin control and the IK control no pin attribute.
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    for (const char* side : {"L", "R"}) {
+        const std::string arm = std::string("arm.") + side;
+        Pose pose = r.defaults();
+        r.evaluate(pose);
+        auto rotation = [&](const std::string& id) { return Mat3(r.state().world[r.index(arm + id)].rotation()); };
+        const Mat3 restSkin = rotation("::skin.limb.0");
+        const Mat3 offset = glm::transpose(rotation("::ctrls.fk.0")) * restSkin;
+        const Vec3 bone = glm::normalize(r.position(arm + "::skin.limb.1") - r.position(arm + "::skin.limb.0"));
+        const Vec3 across = glm::normalize(glm::cross(bone, Vec3(0, 1, 0)));
+        r.evaluate(test::turned(r, pose, arm + "::ctrls.fk.0", bone, 40.0));
+        const Mat3 skin = rotation("::skin.limb.0");
+        const Mat3 now = glm::transpose(rotation("::ctrls.fk.0")) * skin;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_LT(glm::length(now[c] - offset[c]), 1e-9) << arm << ": the skin joint rides its control rigidly";
+        const Vec3 turnedAcross = skin * (glm::transpose(restSkin) * across);
+        EXPECT_NEAR(glm::degrees(std::acos(std::clamp(glm::dot(turnedAcross, across), -1.0, 1.0))), 40.0, 1e-6)
+            << arm << ": rolled with the bone";
+        EXPECT_NEAR(glm::dot(turnedAcross, bone), 0.0, 1e-9) << arm << ": about the bone";
+        EXPECT_FALSE(r.rig.findPath(arm + "::ctrls.pin").has_value()) << arm;
+        EXPECT_FALSE(r.program->channels().find(r.index(arm + "::ctrls.ik"), "pin").has_value()) << arm;
     }
 }
 

@@ -57,12 +57,6 @@ const std::map<std::string, std::string>& allowList()
         // To do: not in a sample yet (issue 22 item 7).
         // The biped and the quadruped are the fixtures of the limb tests, which check the defaults on them
         // (names, counts, spaces): an option set on them below fails the test named, to do with its fixture.
-        // (Not non_rolling off on the robot's arms: with its clavicle off and FK by default, Blender plays its
-        // range of motion's glTF and FBX 0.66 m apart at the pincer while the IK arm is exercised,
-        // Export.robot.BlenderMidKeys; three.js agrees with both. To look into.)
-        {"arm.limb.non_rolling", "off is a candy-wrapper upper arm no sample's character wants (the robot's arms: "
-                                 "see above)"},
-        {"arm.limb.pin", "off: the biped's elbow pin is wanted (elbow on a table); the robot's arms would (other sample)"},
         {"arm.limb.soft_ik", "the biped's arm stands 3.3 mm short of full reach (0.5433 m of bone, 0.54 m shoulder to "
                              "wrist), so any soft IK above that moves its rest pose"},
         {"arm.limb.space_switch", "off fixes each space; the biped's arm needs its switches (chest/world)"},

@@ -15,7 +15,7 @@ $C add $G neck.head --under spine --name neck --set spline=off --set space_switc
   --set isolate_skin=on
 $C add $G arm.limb --under spine --name arm --set clavicle=off --set twist_upper=0 --set twist_lower=0 \
   --set blend_joints=off --set stretch=off --set ik_orient=joint --set effector_plane=y --set ik_fk_visibility=off \
-  --set ik_blend=0 --set isolate_skin=on
+  --set ik_blend=0 --set isolate_skin=on --set non_rolling=off --set pin=off
 $C add $G leg.limb --under spine:hips --name leg --set pelvis=on --set twist_upper=0 --set twist_lower=0 \
   --set blend_joints=off --set stretch=off --set non_rolling=off --set effector_plane=ground --set ik_orient=joint \
   --set ik_space=cog --set pv_space=ik --set reverse_lock=off --set isolate_skin=on
