@@ -182,6 +182,29 @@ TEST(LimbRig, SoftIkMovesTheElbowSmoothlyThroughFullReachWhereHardIkPops)
     }
 }
 
+TEST(LimbRig, TheClawsSoftIkKeepsItsBentRestPoseAndEasesTheElbowThroughFullReach)
+{
+    // The claw's forelimbs are guided with the elbow bent 23 mm short of full reach, so their 2 cm soft zone
+    // (soft_ik 0.02, the IK control's default) leaves the rest pose where it is and still eases the reach.
+    PosedRig r("claw");
+    ASSERT_TRUE(r.ok());
+    for (const std::string limb : {"arm.L", "arm.R"}) {
+        Pose pose = r.defaults();
+        EXPECT_EQ(pose[r.channel(limb + "::ctrls.ik", "soft_ik")], 0.02) << "the option sets the attribute's default";
+        pose[r.channel(limb + "::ctrls.switch", "ik_blend")] = 1.0;
+        r.evaluate(pose);
+        for (const char* joint : {"::ik.1", "::ik.2"})
+            EXPECT_LT(glm::length(r.position(limb + joint) - r.restPosition(limb + joint)), 1e-9) << limb << joint << " at rest";
+        pose[r.channel(limb + "::ctrls.ik", "stretch")] = 0.0;
+        const double soft = largestElbowStep(r, pose, limb);
+        pose[r.channel(limb + "::ctrls.ik", "soft_ik")] = 0.0;
+        const double hard = largestElbowStep(r, pose, limb);
+        EXPECT_GT(hard, 6.0) << limb << ": hard IK pops the elbow (the test can tell)";
+        EXPECT_LT(soft, 3.0) << limb << ": with its 2 cm soft zone the elbow moves at most 3 mm per mm of the control"
+                             << " (10 without)";
+    }
+}
+
 TEST(LimbRig, StretchReachesAGoalBeyondReachAndVolumeScalesAcrossByOneOverRootStretch)
 {
     PosedRig r(sampleWith("biped", "arm", "volume", true));
