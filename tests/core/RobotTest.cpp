@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace rs {
 namespace {
@@ -190,6 +191,29 @@ TEST(Robot, AFistClosesTheClawAndThePincerOnEachOther)
     EXPECT_GT(pincerFist.y, pincer.y + 0.01) << "the pincer closes up, onto it";
     EXPECT_GT(glm::length(claw - pincer), 0.03) << "open at rest";
     EXPECT_LT(glm::length(clawFist - pincerFist), 0.002) << "the jaws meet in a full fist (fist 25 degrees a phalanx on each)";
+}
+
+TEST(Robot, ThePincersPhalangesAimYDownTheBoneAndCurlAboutX)
+{
+    // The pincer is set up in Blender's convention (aim_axis y, up_axis x): each phalanx's Y points at the next
+    // joint, and a fist turns them about their X, which stays where it was.
+    PosedRig r("robot");
+    ASSERT_TRUE(r.ok());
+    for (const char* side : {"L", "R"}) {
+        const std::string pincer = std::string("pincer.") + side + "::skin.";
+        Pose pose = r.defaults();
+        r.evaluate(pose);
+        std::vector<Vec3> restX;
+        const Vec3 bone = glm::normalize(r.position(pincer + "1") - r.position(pincer + "0"));
+        EXPECT_GT(glm::dot(axisAt(r, pincer + "0", 1), bone), 1.0 - 1e-9) << pincer << "0: Y down the bone";
+        for (int i = 0; i < 2; ++i)
+            restX.push_back(axisAt(r, pincer + std::to_string(i), 0));
+        pose[r.channel(std::string("hand.") + side + "::ctrls.hand", "fist")] = 1.0;
+        r.evaluate(pose);
+        for (int i = 0; i < 2; ++i)
+            EXPECT_GT(std::abs(glm::dot(axisAt(r, pincer + std::to_string(i), 0), restX[i])), 1.0 - 1e-9)
+                << pincer << i << ": the curl turns about X";
+    }
 }
 
 TEST(Robot, TheSameValuesTurnBothAntennasAsMirrorImages)

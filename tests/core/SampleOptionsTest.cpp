@@ -68,9 +68,6 @@ const std::map<std::string, std::string>& allowList()
         {"quad.leg.blend_joints", "off is a mechanical limb's (the robot's arms); no sample has a mechanical hind leg"},
         {"quad.leg.non_rolling", "off is a candy-wrapper thigh no sample's character wants"},
         {"quad.leg.reverse_lock", kBipedFixture},  // LimbRig.FootRollAndBankKeepThePlantedPivotFixedInWorldSpace
-        // digit.finger: aim_axis only counts with orient auto (the biped's thumb, the robot's pincer).
-        {"digit.finger.aim_axis", "every joint of the samples aims X down its bone (limbs, spine, fingers); another "
-                                  "aim axis is another pipeline's convention"},
         // (Not +Y on the prop's antenna: Blender's FBX importer would connect its translating joints, BoneInference.)
     };
     return list;
