@@ -71,11 +71,6 @@ const std::map<std::string, std::string>& allowList()
         {"leg.limb.ik_blend", "legs plant their feet: IK by default; FK by default is the arms' (the robot's)"},
         {"leg.limb.space_switch", "off fixes each space; a front leg in chest space must switch to world to plant"},
         {"quad.leg.ik_blend", "legs plant their feet: IK by default; FK by default is the arms' (the robot's)"},
-        {"quad.leg.stretch", "the quadruped's hind leg stretches with volume; off is the limbs' shared IK stage, which "
-                             "the robot's arms and the face set"},
-        {"quad.leg.blend_joints", "off is a mechanical limb's (the robot's arms); no sample has a mechanical hind leg"},
-        {"quad.leg.non_rolling", "off is a candy-wrapper thigh no sample's character wants"},
-        {"quad.leg.reverse_lock", kBipedFixture},  // LimbRig.FootRollAndBankKeepThePlantedPivotFixedInWorldSpace
         // digit.finger: aim_axis only counts with orient auto (the biped's thumb, the robot's pincer).
         {"digit.finger.aim_axis", "every joint of the samples aims X down its bone (limbs, spine, fingers); another "
                                   "aim axis is another pipeline's convention"},

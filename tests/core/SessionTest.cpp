@@ -240,7 +240,7 @@ void expectLiveRigIsAFullBuild(session::Session& s, const std::string& what)
 TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
 {
     int cvDrags = 0, floatOptions = 0;
-    for (const std::string sample : {"biped", "quadruped", "prop", "face", "claw", "cart"}) {
+    for (const std::string sample : {"biped", "quadruped", "prop", "face", "claw", "cart", "strider"}) {
         session::Session s(templatesForSession());
         s.replaceDocument(test::loadSample(sample));
         s.build();
