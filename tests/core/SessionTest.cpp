@@ -349,7 +349,7 @@ TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
             s.history().redo();
         expectLiveRigIsAFullBuild(s, label + "redo all");
     }
-    EXPECT_EQ(cvDrags, 6) << "a CV drag on every sample's leaf controller";
+    EXPECT_EQ(cvDrags, 7) << "a CV drag on every sample's leaf controller";
     EXPECT_GE(floatOptions, 1);
 }
 
