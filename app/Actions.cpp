@@ -84,7 +84,7 @@ void MainWindow::createActions()
     updateUndoActions();
 
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    // File > New: an empty guide or a copy of a bundled sample (biped, quadruped, prop, face, vehicle, robot, claw, cart).
+    // File > New: an empty guide or a copy of a bundled sample (biped, quadruped, prop, face, vehicle, robot, claw, cart, strider).
     QMenu* newMenu = file->addMenu(tr("&New"));
     newMenu->setObjectName("newMenu");
     QAction* empty = makeAction(this, "new:empty", tr("&Empty guide"), QKeySequence::New);

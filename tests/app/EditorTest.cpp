@@ -186,7 +186,7 @@ TEST(Editor, FileNewListsTheSamplesAndStartsAnUntitledCopy)
     for (QAction* a : newMenu->actions())
         if (!a->isSeparator())
             entries << a->objectName();
-    EXPECT_EQ(entries.join(", ").toStdString(), "new:empty, new:biped, new:cart, new:claw, new:face, new:prop, new:quadruped, new:robot, new:vehicle");
+    EXPECT_EQ(entries.join(", ").toStdString(), "new:empty, new:biped, new:cart, new:claw, new:face, new:prop, new:quadruped, new:robot, new:strider, new:vehicle");
 
     w.action("new:quadruped")->trigger();
     EXPECT_TRUE(w.session().filePath().isEmpty()) << "a copy: saving never overwrites the sample";

@@ -225,6 +225,7 @@ BENCHMARK_CAPTURE(BM_BuildSampleRig, vehicle, std::string("vehicle"))->Unit(benc
 BENCHMARK_CAPTURE(BM_BuildSampleRig, robot, std::string("robot"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_BuildSampleRig, claw, std::string("claw"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_BuildSampleRig, cart, std::string("cart"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_BuildSampleRig, strider, std::string("strider"))->Unit(benchmark::kMicrosecond);
 
 // N bipeds side by side in one guide (fresh ids and names per copy): how the
 // build scales past the ~900 nodes of a production biped.

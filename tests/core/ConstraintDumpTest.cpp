@@ -267,7 +267,7 @@ void addAimPointScaleAndDrivenKey(model::Rig& rig)
 TEST(ConstraintDump, EveryKindReadsBackFromTheDumpWithItsTypedSettingsAndEvaluatesTheSame)
 {
     std::set<model::ConstraintKind> kinds;
-    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart"}) {
+    for (const std::string sample : {"biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart", "strider"}) {
         SCOPED_TRACE(sample);
         test::PosedRig built(sample);
         model::Rig rig = built.rig;

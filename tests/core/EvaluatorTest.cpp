@@ -62,7 +62,7 @@ TEST_P(SampleEvaluation, ASweptPoseEvaluatesAsTheGolden)
     test::expectMatchesGolden(test::worldDump(r.rig, state), "Evaluator/" + GetParam() + "/swept.yml");
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, SampleEvaluation, ::testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart"));
+INSTANTIATE_TEST_SUITE_P(Samples, SampleEvaluation, ::testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart", "strider"));
 
 TEST(Evaluator, IkReachesEveryReachableTarget)
 {

@@ -211,5 +211,5 @@ TEST_P(ExportAgreement, AssimpPlaysTheGlbAndTheFbxAlikeBetweenKeys)
                 travel, worst, where.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart"),
+INSTANTIATE_TEST_SUITE_P(Samples, ExportAgreement, testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart", "strider"),
                          [](const testing::TestParamInfo<std::string>& info) { return info.param; });

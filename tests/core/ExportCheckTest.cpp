@@ -37,7 +37,7 @@ model::Rig brokenBiped()
 
 TEST(ExportCheck, TheSamplesExportCleanly)
 {
-    for (const char* sample : {"biped", "quadruped", "prop", "face", "vehicle", "robot", "claw", "cart"}) {
+    for (const char* sample : {"biped", "quadruped", "prop", "face", "vehicle", "robot", "claw", "cart", "strider"}) {
         const model::Rig rig = sampleRig(sample);
         auto skeleton = model::extractSkeleton(rig);
         ASSERT_TRUE(skeleton.ok()) << sample;

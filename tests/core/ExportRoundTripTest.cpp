@@ -161,7 +161,7 @@ TEST_P(ExportRoundTrip, AssimpReadsTheSameSkeletonAndWeights)
 std::vector<Case> allCases()
 {
     std::vector<Case> out;
-    for (const char* sample : {"biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart"})
+    for (const char* sample : {"biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart", "strider"})
         for (const char* extension : {".glb", ".gltf", ".fbx"})
             for (auto preset : {io::ExportPreset::Gltf, io::ExportPreset::Unreal, io::ExportPreset::Unity})
                 out.emplace_back(sample, extension, preset);

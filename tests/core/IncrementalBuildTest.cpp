@@ -21,7 +21,7 @@ using test::buildAndCompare;
 
 namespace {
 
-const char* const kSamples[] = {"biped", "quadruped", "prop", "face", "vehicle", "robot", "claw", "cart"};
+const char* const kSamples[] = {"biped", "quadruped", "prop", "face", "vehicle", "robot", "claw", "cart", "strider"};
 
 // The branch copies (instance, branch) a full build makes of the instances in `ids`.
 std::size_t copiesOf(const model::GuideDocument& guide, const std::vector<model::InstanceId>& ids)

@@ -142,7 +142,7 @@ TEST(Mods, AMalformedModIsAnErrorAtItsLineAndColumn)
 
 TEST(Mods, AGuideWithoutModsIsWrittenAsBefore)
 {
-    for (const char* sample : {"biped", "quadruped", "prop", "face", "claw", "cart"}) {
+    for (const char* sample : {"biped", "quadruped", "prop", "face", "claw", "cart", "strider"}) {
         const std::string text = test::readText(test::samplePath(sample));
         auto read = io::readGuideText(text, sample);
         ASSERT_TRUE(read.ok());

@@ -101,7 +101,7 @@ bool changes(const io::ExportTrack& track, unsigned bit)
 
 TEST(RangeOfMotion, EverySampleMovesEveryExercisedControlWithoutStretchOnTheFrameGrid)
 {
-    for (const std::string name : {"biped", "quadruped", "prop", "vehicle", "robot", "cart"}) {
+    for (const std::string name : {"biped", "quadruped", "prop", "vehicle", "robot", "cart", "strider"}) {
         SCOPED_TRACE(name);
         const model::Rig& rig = sample(name);
         const io::ExportScene scene = romScene(rig);

@@ -240,7 +240,7 @@ void expectLiveRigIsAFullBuild(session::Session& s, const std::string& what)
 TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
 {
     int cvDrags = 0, floatOptions = 0;
-    for (const std::string sample : {"biped", "quadruped", "prop", "face", "claw", "cart"}) {
+    for (const std::string sample : {"biped", "quadruped", "prop", "face", "claw", "cart", "strider"}) {
         session::Session s(templatesForSession());
         s.replaceDocument(test::loadSample(sample));
         s.build();
@@ -349,7 +349,7 @@ TEST(Session, TheLiveRigEqualsAFullBuildAfterEveryKindOfEditOnEverySample)
             s.history().redo();
         expectLiveRigIsAFullBuild(s, label + "redo all");
     }
-    EXPECT_EQ(cvDrags, 6) << "a CV drag on every sample's leaf controller";
+    EXPECT_EQ(cvDrags, 7) << "a CV drag on every sample's leaf controller";
     EXPECT_GE(floatOptions, 1);
 }
 

@@ -87,7 +87,7 @@ TEST_P(SampleGolden, BuildsWithoutDiagnosticsOneSkinRootAndUniqueNames)
     test::expectMatchesGolden(io::writeRigDump(rig), "RigBuilder/" + GetParam() + "/rig.yml");
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, SampleGolden, testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart"));
+INSTANTIATE_TEST_SUITE_P(Samples, SampleGolden, testing::Values("biped", "quadruped", "prop", "vehicle", "robot", "claw", "cart", "strider"));
 
 TEST(Templates, TheBipedIsMirroredExactlyFromLeftToRight)
 {
