@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 namespace rs::io {
 
@@ -23,7 +24,7 @@ constexpr double kKeptShare = 0.1;         // a translation cut below this share
 constexpr int kBisections = 12;
 constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
 constexpr int kPathSteps = 10;             // samples of the way to a peak (a frame each at 30 fps), looking for a flip or a fold
-constexpr double kFlipDegrees = 90.0;      // a deform joint turning more than this in one step flips
+constexpr double kFlipDegrees = 45.0;      // a deform joint turning more than this in one step flips
 constexpr double kFoldShare = 0.5;         // of a joint's rest distance ahead of its parent: closer, the chain folds
 
 // What the planner evaluates with: the rig, its program, a scratch state.
@@ -35,6 +36,7 @@ struct Planner {
     std::vector<int> driving;
     StretchGauge gauge;
     std::vector<model::RigNodeIndex> deform; // the deform joints' rig nodes
+    std::vector<model::RigNodeIndex> deformParent; // each one's skin parent's rig node (kNoNode: a root)
     double size = 1.0;                       // the skeleton's bounding box diagonal, metres
     // A deform joint's offset from its skin parent at rest, in the parent's frame (offsets over 1 mm).
     struct Offset {
@@ -43,6 +45,10 @@ struct Planner {
         double restLength;
     };
     std::vector<Offset> offsets;
+    // Per rig node: for a controller carrying aim goals (an aim constraint's
+    // goal is it or hangs from it, the aimed node does not), the farthest rest
+    // distance from an aimed node to it (how far the aimed chain reaches); 0 otherwise.
+    std::vector<double> aimReach;
 
     Planner(const model::Rig& r, const eval::RigProgram& p)
         : rig(r), program(p), posing(r, p), switches(switchesOf(r, p.channels())), driving(drivingChannels(r, p.channels())),
@@ -53,6 +59,7 @@ struct Planner {
             for (const auto& j : skeleton->joints)
                 if (j.node != model::kNoNode) {
                     deform.push_back(j.node);
+                    deformParent.push_back(j.parent < 0 ? model::kNoNode : skeleton->joints[std::size_t(j.parent)].node);
                     low = glm::min(low, translationOf(j.bindWorld));
                     high = glm::max(high, translationOf(j.bindWorld));
                 }
@@ -65,6 +72,26 @@ struct Planner {
                     offsets.push_back({j.node, skeleton->joints[std::size_t(j.parent)].node, glm::normalize(rest), glm::length(rest)});
             }
         }
+        aimReach.assign(rig.nodes.size(), 0.0);
+        for (const auto& c : rig.constraints) {
+            if (!std::holds_alternative<model::AimConstraint>(c.settings) || c.targets.empty() || c.driven.empty())
+                continue;
+            model::RigNodeIndex carrier = c.targets[0];
+            while (carrier != model::kNoNode && rig.nodes[carrier].kind != model::RigNodeKind::Controller)
+                carrier = rig.nodes[carrier].parent;
+            if (carrier == model::kNoNode || descends(c.driven[0], carrier))
+                continue;
+            aimReach[carrier] = std::max(aimReach[carrier], glm::length(translationOf(rig.nodes[carrier].worldMatrix) -
+                                                                        translationOf(rig.nodes[c.driven[0]].worldMatrix)));
+        }
+    }
+
+    bool descends(model::RigNodeIndex node, model::RigNodeIndex ancestor) const
+    {
+        for (; node != model::kNoNode; node = rig.nodes[node].parent)
+            if (node == ancestor)
+                return true;
+        return false;
     }
 
     double stretch(const eval::Pose& pose) { return gauge.measure(pose, posing.evaluate(pose)); }
@@ -145,33 +172,40 @@ struct Planner {
         return base;
     }
 
-    // The deform joints' world rotations (columns normalised).
+    // The deform joints' rotations in their skin parents' frames (columns
+    // normalised): what an exported track interpolates, so what pops when it
+    // turns too far in one frame (a joint may turn little in the world while
+    // its parent turns the other way).
     std::vector<Mat3> deformRotations(const eval::Pose& pose)
     {
         const auto& state = posing.evaluate(pose);
-        std::vector<Mat3> out;
-        for (auto node : deform) {
+        auto unit = [&](model::RigNodeIndex node) {
             Mat3 m = state.world[node].linear;
             for (int c = 0; c < 3; ++c)
                 m[c] = glm::length(m[c]) > 1e-12 ? glm::normalize(m[c]) : m[c];
-            out.push_back(m);
-        }
+            return m;
+        };
+        std::vector<Mat3> out;
+        for (std::size_t j = 0; j < deform.size(); ++j)
+            out.push_back(deformParent[j] == model::kNoNode ? unit(deform[j]) : glm::transpose(unit(deformParent[j])) * unit(deform[j]));
         return out;
     }
 
-    // Whether some deform joint flips on the way from `base` to `base` with
-    // `value` on `channel` (turns more than kFlipDegrees in one of kPathSteps
-    // steps: a solver's twist or up vector giving way, not a motion to keep:
-    // no interpolation between keys can follow it), or a chain folds on the
-    // way (more joints than `folded`) and unfolds before the peak.
-    bool flipsOnTheWay(const eval::Pose& base, int channel, double value, int folded)
+    // Whether some deform joint flips on the way from `from` to `to` (all
+    // channels linear, as the export samples them: turns more than
+    // kFlipDegrees in one of kPathSteps steps: a solver's twist or up vector
+    // giving way, not a motion to keep: no interpolation between keys can
+    // follow it), or a chain folds on the way (more joints than `folded`)
+    // and unfolds before the end.
+    bool flipsBetween(const eval::Pose& from, const eval::Pose& to, int folded)
     {
-        const double from = base[std::size_t(channel)];
         const double cosFlip = std::cos(glm::radians(kFlipDegrees));
-        eval::Pose p = base;
+        eval::Pose p = from;
         std::vector<Mat3> previous = deformRotations(p);
         for (int step = 1; step <= kPathSteps; ++step) {
-            p[std::size_t(channel)] = from + (value - from) * double(step) / double(kPathSteps);
+            for (std::size_t c = 0; c < p.size(); ++c)
+                if (program.channels()[c].transform != eval::kRotateOrderChannel && !program.channels()[c].isEnum())
+                    p[c] = from[c] + (to[c] - from[c]) * double(step) / double(kPathSteps);
             std::vector<Mat3> current = deformRotations(p);
             if (folds(posing.state()) > folded)
                 return true;
@@ -183,6 +217,12 @@ struct Planner {
             previous = std::move(current);
         }
         return false;
+    }
+    bool flipsOnTheWay(const eval::Pose& base, int channel, double value, int folded)
+    {
+        eval::Pose to = base;
+        to[std::size_t(channel)] = value;
+        return flipsBetween(base, to, folded);
     }
 
     // The share (0..1) of `offset` on `channel` from `base` that stretches
@@ -239,8 +279,10 @@ struct Planner {
             const double degrees = hingeDegrees(control, c.transform - 3);
             return {degrees, -degrees};
         }
-        if (c.transform >= 0 && c.transform < 3)
-            return {kTranslateShare * size, -kTranslateShare * size};
+        if (c.transform >= 0 && c.transform < 3) {
+            const double reach = aimReach[control] > 0.0 ? aimReach[control] : kTranslateShare * size;
+            return {reach, -reach};
+        }
         return {};
     }
 
@@ -296,14 +338,16 @@ struct Planner {
     }
 
     // The peaks, then back to `base`: through it between two peaks more than
-    // kWidestStep apart, so interpolation never takes a rotation the short way round.
-    void appendPeaks(std::vector<eval::Pose>& keys, std::vector<eval::Pose> found, const eval::Pose& base, int channel) const
+    // kWidestStep apart, so interpolation never takes a rotation the short
+    // way round, or whose way from one to the other flips a joint or folds a
+    // chain (twice as fast as the way from `base` to each, which was checked).
+    void appendPeaks(std::vector<eval::Pose>& keys, std::vector<eval::Pose> found, const eval::Pose& base, int channel)
     {
         const bool angle = program.channels()[std::size_t(channel)].transform < 0 ||
                            program.channels()[std::size_t(channel)].transform >= 3;
         for (std::size_t i = 0; i < found.size(); ++i) {
-            if (i > 0 && angle &&
-                std::abs(found[i][std::size_t(channel)] - keys.back()[std::size_t(channel)]) > kWidestStep)
+            if (i > 0 && ((angle && std::abs(found[i][std::size_t(channel)] - keys.back()[std::size_t(channel)]) > kWidestStep) ||
+                          flipsBetween(keys.back(), found[i], folds(posing.evaluate(base)))))
                 keys.push_back(base);
             keys.push_back(std::move(found[i]));
         }
