@@ -1,15 +1,14 @@
 #include "io/RangeOfMotion.h"
 
 #include "eval/PoseTools.h"
+#include "io/JointWatch.h"
 #include "io/RigSwitches.h"
 #include "io/StretchGauge.h"
-#include "model/Skeleton.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <variant>
 
 namespace rs::io {
 
@@ -35,91 +34,20 @@ struct Planner {
     std::vector<FkIkSwitch> switches;
     std::vector<int> driving;
     StretchGauge gauge;
-    std::vector<model::RigNodeIndex> deform; // the deform joints' rig nodes
-    std::vector<model::RigNodeIndex> deformParent; // each one's skin parent's rig node (kNoNode: a root)
-    double size = 1.0;                       // the skeleton's bounding box diagonal, metres
-    // A deform joint's offset from its skin parent at rest, in the parent's frame (offsets over 1 mm).
-    struct Offset {
-        model::RigNodeIndex node, parent;
-        Vec3 restDirection;
-        double restLength;
-    };
-    std::vector<Offset> offsets;
-    // Per rig node: for a controller carrying aim goals (an aim constraint's
-    // goal is it or hangs from it, the aimed node does not), the farthest rest
-    // distance from an aimed node to it (how far the aimed chain reaches); 0 otherwise.
-    std::vector<double> aimReach;
+    JointWatch watch;
+    std::vector<double> aimReach; // io/JointWatch.h's aimReaches
+    double size = 1.0;            // the skeleton's bounding box diagonal, metres
 
     Planner(const model::Rig& r, const eval::RigProgram& p)
         : rig(r), program(p), posing(r, p), switches(switchesOf(r, p.channels())), driving(drivingChannels(r, p.channels())),
-          gauge(r, p)
+          gauge(r, p), watch(r), aimReach(aimReaches(r)), size(watch.size())
     {
-        if (auto skeleton = model::extractSkeleton(rig)) {
-            Vec3 low(1e300), high(-1e300);
-            for (const auto& j : skeleton->joints)
-                if (j.node != model::kNoNode) {
-                    deform.push_back(j.node);
-                    deformParent.push_back(j.parent < 0 ? model::kNoNode : skeleton->joints[std::size_t(j.parent)].node);
-                    low = glm::min(low, translationOf(j.bindWorld));
-                    high = glm::max(high, translationOf(j.bindWorld));
-                }
-            if (!deform.empty())
-                size = std::max(glm::length(high - low), 1e-3);
-            for (const auto& j : skeleton->joints) {
-                const Vec3 rest = translationOf(j.bindLocal);
-                if (j.parent >= 0 && j.node != model::kNoNode && glm::length(rest) > 1e-3 &&
-                    skeleton->joints[std::size_t(j.parent)].node != model::kNoNode)
-                    offsets.push_back({j.node, skeleton->joints[std::size_t(j.parent)].node, glm::normalize(rest), glm::length(rest)});
-            }
-        }
-        aimReach.assign(rig.nodes.size(), 0.0);
-        for (const auto& c : rig.constraints) {
-            if (!std::holds_alternative<model::AimConstraint>(c.settings) || c.targets.empty() || c.driven.empty())
-                continue;
-            model::RigNodeIndex carrier = c.targets[0];
-            while (carrier != model::kNoNode && rig.nodes[carrier].kind != model::RigNodeKind::Controller)
-                carrier = rig.nodes[carrier].parent;
-            if (carrier == model::kNoNode || descends(c.driven[0], carrier))
-                continue;
-            aimReach[carrier] = std::max(aimReach[carrier], glm::length(translationOf(rig.nodes[carrier].worldMatrix) -
-                                                                        translationOf(rig.nodes[c.driven[0]].worldMatrix)));
-        }
-    }
-
-    bool descends(model::RigNodeIndex node, model::RigNodeIndex ancestor) const
-    {
-        for (; node != model::kNoNode; node = rig.nodes[node].parent)
-            if (node == ancestor)
-                return true;
-        return false;
     }
 
     double stretch(const eval::Pose& pose) { return gauge.measure(pose, posing.evaluate(pose)); }
 
-    // How many deform joints, in `state`, lie less than kFoldShare of their
-    // rest distance ahead of their skin parent along the rest direction, in
-    // the parent's frame: a chain folded back on itself (a spline path pulled
-    // past a cusp, where the joints sliding on it collapse and turn over).
-    int folds(const eval::EvalState& state) const
-    {
-        int folded = 0;
-        for (const auto& o : offsets) {
-            const eval::Affine& parent = state.world[o.parent];
-            const Vec3 local = glm::inverse(parent.linear) * (state.world[o.node].translation - parent.translation);
-            if (glm::dot(local, o.restDirection) < kFoldShare * o.restLength)
-                ++folded;
-        }
-        return folded;
-    }
-
-    std::vector<eval::Affine> deformPositions(const eval::Pose& pose)
-    {
-        const auto& state = posing.evaluate(pose);
-        std::vector<eval::Affine> out;
-        for (auto node : deform)
-            out.push_back(state.world[node]);
-        return out;
-    }
+    int folds(const eval::EvalState& state) const { return watch.folds(state, kFoldShare); }
+    std::vector<eval::Affine> deformPositions(const eval::Pose& pose) { return watch.positions(posing.evaluate(pose)); }
     // Whether `pose` moves or turns some deform joint from where `from` has it.
     bool movesAJoint(const std::vector<eval::Affine>& from, const eval::Pose& pose)
     {
@@ -172,24 +100,7 @@ struct Planner {
         return base;
     }
 
-    // The deform joints' rotations in their skin parents' frames (columns
-    // normalised): what an exported track interpolates, so what pops when it
-    // turns too far in one frame (a joint may turn little in the world while
-    // its parent turns the other way).
-    std::vector<Mat3> deformRotations(const eval::Pose& pose)
-    {
-        const auto& state = posing.evaluate(pose);
-        auto unit = [&](model::RigNodeIndex node) {
-            Mat3 m = state.world[node].linear;
-            for (int c = 0; c < 3; ++c)
-                m[c] = glm::length(m[c]) > 1e-12 ? glm::normalize(m[c]) : m[c];
-            return m;
-        };
-        std::vector<Mat3> out;
-        for (std::size_t j = 0; j < deform.size(); ++j)
-            out.push_back(deformParent[j] == model::kNoNode ? unit(deform[j]) : glm::transpose(unit(deformParent[j])) * unit(deform[j]));
-        return out;
-    }
+    std::vector<Mat3> deformRotations(const eval::Pose& pose) { return watch.rotations(posing.evaluate(pose)); }
 
     // Whether some deform joint flips on the way from `from` to `to` (all
     // channels linear, as the export samples them: turns more than
