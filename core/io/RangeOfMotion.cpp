@@ -1,9 +1,9 @@
 #include "io/RangeOfMotion.h"
 
 #include "eval/PoseTools.h"
+#include "io/JointWatch.h"
 #include "io/RigSwitches.h"
 #include "io/StretchGauge.h"
-#include "model/Skeleton.h"
 
 #include <glm/geometric.hpp>
 
@@ -23,7 +23,7 @@ constexpr double kKeptShare = 0.1;         // a translation cut below this share
 constexpr int kBisections = 12;
 constexpr double kWidestStep = 120.0;      // degrees one key may turn a channel from the one before
 constexpr int kPathSteps = 10;             // samples of the way to a peak (a frame each at 30 fps), looking for a flip or a fold
-constexpr double kFlipDegrees = 90.0;      // a deform joint turning more than this in one step flips
+constexpr double kFlipDegrees = 45.0;      // a deform joint turning more than this in one step flips
 constexpr double kFoldShare = 0.5;         // of a joint's rest distance ahead of its parent: closer, the chain folds
 
 // What the planner evaluates with: the rig, its program, a scratch state.
@@ -34,65 +34,20 @@ struct Planner {
     std::vector<FkIkSwitch> switches;
     std::vector<int> driving;
     StretchGauge gauge;
-    std::vector<model::RigNodeIndex> deform; // the deform joints' rig nodes
-    double size = 1.0;                       // the skeleton's bounding box diagonal, metres
-    // A deform joint's offset from its skin parent at rest, in the parent's frame (offsets over 1 mm).
-    struct Offset {
-        model::RigNodeIndex node, parent;
-        Vec3 restDirection;
-        double restLength;
-    };
-    std::vector<Offset> offsets;
+    JointWatch watch;
+    std::vector<double> aimReach; // io/JointWatch.h's aimReaches
+    double size = 1.0;            // the skeleton's bounding box diagonal, metres
 
     Planner(const model::Rig& r, const eval::RigProgram& p)
         : rig(r), program(p), posing(r, p), switches(switchesOf(r, p.channels())), driving(drivingChannels(r, p.channels())),
-          gauge(r, p)
+          gauge(r, p), watch(r), aimReach(aimReaches(r)), size(watch.size())
     {
-        if (auto skeleton = model::extractSkeleton(rig)) {
-            Vec3 low(1e300), high(-1e300);
-            for (const auto& j : skeleton->joints)
-                if (j.node != model::kNoNode) {
-                    deform.push_back(j.node);
-                    low = glm::min(low, translationOf(j.bindWorld));
-                    high = glm::max(high, translationOf(j.bindWorld));
-                }
-            if (!deform.empty())
-                size = std::max(glm::length(high - low), 1e-3);
-            for (const auto& j : skeleton->joints) {
-                const Vec3 rest = translationOf(j.bindLocal);
-                if (j.parent >= 0 && j.node != model::kNoNode && glm::length(rest) > 1e-3 &&
-                    skeleton->joints[std::size_t(j.parent)].node != model::kNoNode)
-                    offsets.push_back({j.node, skeleton->joints[std::size_t(j.parent)].node, glm::normalize(rest), glm::length(rest)});
-            }
-        }
     }
 
     double stretch(const eval::Pose& pose) { return gauge.measure(pose, posing.evaluate(pose)); }
 
-    // How many deform joints, in `state`, lie less than kFoldShare of their
-    // rest distance ahead of their skin parent along the rest direction, in
-    // the parent's frame: a chain folded back on itself (a spline path pulled
-    // past a cusp, where the joints sliding on it collapse and turn over).
-    int folds(const eval::EvalState& state) const
-    {
-        int folded = 0;
-        for (const auto& o : offsets) {
-            const eval::Affine& parent = state.world[o.parent];
-            const Vec3 local = glm::inverse(parent.linear) * (state.world[o.node].translation - parent.translation);
-            if (glm::dot(local, o.restDirection) < kFoldShare * o.restLength)
-                ++folded;
-        }
-        return folded;
-    }
-
-    std::vector<eval::Affine> deformPositions(const eval::Pose& pose)
-    {
-        const auto& state = posing.evaluate(pose);
-        std::vector<eval::Affine> out;
-        for (auto node : deform)
-            out.push_back(state.world[node]);
-        return out;
-    }
+    int folds(const eval::EvalState& state) const { return watch.folds(state, kFoldShare); }
+    std::vector<eval::Affine> deformPositions(const eval::Pose& pose) { return watch.positions(posing.evaluate(pose)); }
     // Whether `pose` moves or turns some deform joint from where `from` has it.
     bool movesAJoint(const std::vector<eval::Affine>& from, const eval::Pose& pose)
     {
@@ -145,33 +100,23 @@ struct Planner {
         return base;
     }
 
-    // The deform joints' world rotations (columns normalised).
-    std::vector<Mat3> deformRotations(const eval::Pose& pose)
-    {
-        const auto& state = posing.evaluate(pose);
-        std::vector<Mat3> out;
-        for (auto node : deform) {
-            Mat3 m = state.world[node].linear;
-            for (int c = 0; c < 3; ++c)
-                m[c] = glm::length(m[c]) > 1e-12 ? glm::normalize(m[c]) : m[c];
-            out.push_back(m);
-        }
-        return out;
-    }
+    std::vector<Mat3> deformRotations(const eval::Pose& pose) { return watch.rotations(posing.evaluate(pose)); }
 
-    // Whether some deform joint flips on the way from `base` to `base` with
-    // `value` on `channel` (turns more than kFlipDegrees in one of kPathSteps
-    // steps: a solver's twist or up vector giving way, not a motion to keep:
-    // no interpolation between keys can follow it), or a chain folds on the
-    // way (more joints than `folded`) and unfolds before the peak.
-    bool flipsOnTheWay(const eval::Pose& base, int channel, double value, int folded)
+    // Whether some deform joint flips on the way from `from` to `to` (all
+    // channels linear, as the export samples them: turns more than
+    // kFlipDegrees in one of kPathSteps steps: a solver's twist or up vector
+    // giving way, not a motion to keep: no interpolation between keys can
+    // follow it), or a chain folds on the way (more joints than `folded`)
+    // and unfolds before the end.
+    bool flipsBetween(const eval::Pose& from, const eval::Pose& to, int folded)
     {
-        const double from = base[std::size_t(channel)];
         const double cosFlip = std::cos(glm::radians(kFlipDegrees));
-        eval::Pose p = base;
+        eval::Pose p = from;
         std::vector<Mat3> previous = deformRotations(p);
         for (int step = 1; step <= kPathSteps; ++step) {
-            p[std::size_t(channel)] = from + (value - from) * double(step) / double(kPathSteps);
+            for (std::size_t c = 0; c < p.size(); ++c)
+                if (program.channels()[c].transform != eval::kRotateOrderChannel && !program.channels()[c].isEnum())
+                    p[c] = from[c] + (to[c] - from[c]) * double(step) / double(kPathSteps);
             std::vector<Mat3> current = deformRotations(p);
             if (folds(posing.state()) > folded)
                 return true;
@@ -183,6 +128,12 @@ struct Planner {
             previous = std::move(current);
         }
         return false;
+    }
+    bool flipsOnTheWay(const eval::Pose& base, int channel, double value, int folded)
+    {
+        eval::Pose to = base;
+        to[std::size_t(channel)] = value;
+        return flipsBetween(base, to, folded);
     }
 
     // The share (0..1) of `offset` on `channel` from `base` that stretches
@@ -239,8 +190,10 @@ struct Planner {
             const double degrees = hingeDegrees(control, c.transform - 3);
             return {degrees, -degrees};
         }
-        if (c.transform >= 0 && c.transform < 3)
-            return {kTranslateShare * size, -kTranslateShare * size};
+        if (c.transform >= 0 && c.transform < 3) {
+            const double reach = aimReach[control] > 0.0 ? aimReach[control] : kTranslateShare * size;
+            return {reach, -reach};
+        }
         return {};
     }
 
@@ -296,14 +249,16 @@ struct Planner {
     }
 
     // The peaks, then back to `base`: through it between two peaks more than
-    // kWidestStep apart, so interpolation never takes a rotation the short way round.
-    void appendPeaks(std::vector<eval::Pose>& keys, std::vector<eval::Pose> found, const eval::Pose& base, int channel) const
+    // kWidestStep apart, so interpolation never takes a rotation the short
+    // way round, or whose way from one to the other flips a joint or folds a
+    // chain (twice as fast as the way from `base` to each, which was checked).
+    void appendPeaks(std::vector<eval::Pose>& keys, std::vector<eval::Pose> found, const eval::Pose& base, int channel)
     {
         const bool angle = program.channels()[std::size_t(channel)].transform < 0 ||
                            program.channels()[std::size_t(channel)].transform >= 3;
         for (std::size_t i = 0; i < found.size(); ++i) {
-            if (i > 0 && angle &&
-                std::abs(found[i][std::size_t(channel)] - keys.back()[std::size_t(channel)]) > kWidestStep)
+            if (i > 0 && ((angle && std::abs(found[i][std::size_t(channel)] - keys.back()[std::size_t(channel)]) > kWidestStep) ||
+                          flipsBetween(keys.back(), found[i], folds(posing.evaluate(base)))))
                 keys.push_back(base);
             keys.push_back(std::move(found[i]));
         }

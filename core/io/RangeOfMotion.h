@@ -13,7 +13,12 @@
 //  - an unlimited rotation goes +-90 degrees about a limb's hinge axis (the FK
 //    control's local axis nearest the IK chain's bend normal), +-30 degrees
 //    about any other axis; scale channels are not exercised;
-//  - an unlimited translation goes a quarter of the skeleton's size each way;
+//  - an unlimited translation goes a quarter of the skeleton's size each way,
+//    or, for a control carrying aim goals (a finger's or an eye's target:
+//    an aim constraint's goal is the control or hangs from it, the aimed node
+//    does not), as far as the aimed chain reaches (the farthest rest distance
+//    from an aimed node to the control): a talon's target goes 11 cm, not
+//    half a metre that would pull its goals through the phalanges;
 //  - every peak is cut back (bisection) until no deform joint lies more than
 //    0.5% farther from its parent than at rest and every IK goal stays within
 //    the chain's reach, so IK goals stay reachable and root or fly moves never
@@ -33,15 +38,18 @@
 //    again; this also keeps a body control from driving its joint through
 //    the root joint below it), unless the start pose already has it so;
 //  - a peak is also cut back until no deform joint flips on the way to it
-//    (turns more than 90 degrees in a tenth of the way, a frame at 30 fps: a
-//    solver's twist or up vector giving way, e.g. the quadruped's spline tail
-//    half turned);
+//    (turns more than 45 degrees, in its skin parent's frame as its exported
+//    track has it, in a tenth of the way, a frame at 30 fps: a solver's twist,
+//    up vector or aim giving way, e.g. the quadruped's spline tail half
+//    turned, a world-held aim target with the hand swept past it);
 //  - a motion that moves no deform joint is left out (no dead segments).
 // Keys sit `framesPerKey` frames apart on a grid of `framesPerSecond`; every
 // peak is a key (peak, opposite peak, start), and a channel that would turn
 // more than 120 degrees from one key to the next goes through the start
 // between its peaks (peak, start, opposite peak, start), so interpolating
-// the joints' rotations never takes the wrong way round.
+// the joints' rotations never takes the wrong way round; so does a channel
+// whose way from one peak straight to the other (twice as fast as the way
+// from the start to each) flips a joint or folds a chain.
 #include "eval/RigProgram.h"
 #include "model/Rig.h"
 
