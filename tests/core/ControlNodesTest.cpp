@@ -124,6 +124,33 @@ TEST(CoreTemplates, RotateOrderSetsTheControllersEulerOrder)
     EXPECT_GT(maxAbsDifference(Mat4(turned), Mat4(otherOrder)), 0.05) << "the order matters for these angles";
 }
 
+TEST(CoreTemplates, RotateOrderAutoTwistsFirstSwingsNextAndBendsLast)
+{
+    // auto: aim_axis first, the third axis next, up_axis (the bend) last, whichever axes the chain aims.
+    const std::pair<std::pair<const char*, const char*>, model::RotateOrder> cases[] = {
+        {{"x", "z"}, model::RotateOrder::Xyz}, {{"y", "x"}, model::RotateOrder::Yzx}, {{"-z", "y"}, model::RotateOrder::Zxy},
+        {{"x", "-y"}, model::RotateOrder::Xzy}};
+    for (const auto& [axes, expected] : cases) {
+        const auto doc = chain("core.joints", {{"orient", Value(std::string("auto"))},
+                                               {"aim_axis", Value(std::string(axes.first))},
+                                               {"up_axis", Value(std::string(axes.second))},
+                                               {"rotate_order", Value(std::string("auto"))}});
+        const model::Rig rig = rigging::buildRig(doc, test::builtinTemplates());
+        ASSERT_FALSE(hasErrors(rig.diagnostics)) << formatAll(rig.diagnostics);
+        for (const char* ctrl : {"ctrls.0", "ctrls.1"})
+            EXPECT_EQ(test::node(rig, pathOf(doc, ctrl)).channels.rotateOrder, expected) << axes.first << " " << axes.second;
+    }
+    // Bent 90 degrees about its up axis (z, last) a control still twists and swings apart: no gimbal lock.
+    const auto doc = chain("core.joints", {{"orient", Value(std::string("auto"))}, {"aim_axis", Value(std::string("x"))},
+                                           {"up_axis", Value(std::string("z"))}, {"rotate_order", Value(std::string("auto"))}});
+    const auto order = test::node(rigging::buildRig(doc, test::builtinTemplates()), pathOf(doc, "ctrls.1")).channels.rotateOrder;
+    const Mat3 twist = eval::eulerRotation({10.0, 0.0, 90.0}, order), swing = eval::eulerRotation({0.0, 10.0, 90.0}, order);
+    EXPECT_GT(maxAbsDifference(Mat4(twist), Mat4(swing)), 0.1);
+    const Mat3 lockedTwist = eval::eulerRotation({10.0, 0.0, 90.0}, model::RotateOrder::Xzy),
+               lockedSwing = eval::eulerRotation({0.0, 10.0, 90.0}, model::RotateOrder::Xzy);
+    EXPECT_LT(maxAbsDifference(Mat4(lockedTwist), Mat4(lockedSwing)), 1e-9) << "with the bend in the middle they lock (the test can tell)";
+}
+
 TEST(CoreTemplates, FlipOrientMakesTheSameValuesMoveBothSidesAsMirrorImages)
 {
     Mat4 mirror(1.0);

@@ -196,7 +196,7 @@ TEST(Robot, AFistClosesTheClawAndThePincerOnEachOther)
 TEST(Robot, ThePincersPhalangesAimYDownTheBoneAndCurlAboutX)
 {
     // The pincer is set up in Blender's convention (aim_axis y, up_axis x): each phalanx's Y points at the next
-    // joint, and a fist turns them about their X, which stays where it was.
+    // joint, a fist turns them about their X, which stays where it was, and their rotate order follows (auto).
     PosedRig r("robot");
     ASSERT_TRUE(r.ok());
     for (const char* side : {"L", "R"}) {
@@ -204,6 +204,9 @@ TEST(Robot, ThePincersPhalangesAimYDownTheBoneAndCurlAboutX)
         Pose pose = r.defaults();
         r.evaluate(pose);
         std::vector<Vec3> restX;
+        const std::string ctrls = std::string("pincer.") + side + "::ctrls.fk.";
+        for (const char* i : {"0", "1"}) // rotate_order auto: the twist (Y) first, the swing (Z), the curl (X) last
+            EXPECT_EQ(r.rig.nodes[r.index(ctrls + i)].channels.rotateOrder, model::RotateOrder::Yzx) << ctrls << i;
         const Vec3 bone = glm::normalize(r.position(pincer + "1") - r.position(pincer + "0"));
         EXPECT_GT(glm::dot(axisAt(r, pincer + "0", 1), bone), 1.0 - 1e-9) << pincer << "0: Y down the bone";
         for (int i = 0; i < 2; ++i)

@@ -11,6 +11,27 @@ namespace {
 
 bool declares(const BuildContext& ctx, const char* name) { return ctx.manifest().findOpt(name) != nullptr; }
 
+// rotate_order auto, for a chain whose joints aim aim_axis down it and bend
+// about up_axis (a curl, a bend towards up_dir): the twist turns first, the
+// side swing next and the bend last, outermost, so the chain bends all the way
+// without gimbal lock (only the seldom-used swing sits in the middle). From
+// the template's aim_axis / up_axis (x / z where it has none); signs do not matter.
+std::string autoRotateOrder(const BuildContext& ctx)
+{
+    auto letter = [&](const char* option, char fallback) {
+        if (!declares(ctx, option))
+            return fallback;
+        const std::string axis = ctx.optionString(option);
+        return axis.empty() ? fallback : axis.back();
+    };
+    const char aim = letter("aim_axis", 'x'), up = letter("up_axis", 'z');
+    std::string order{aim};
+    for (const char third : {'x', 'y', 'z'})
+        if (third != aim && third != up)
+            order += third;
+    return order + up;
+}
+
 // The add_nodes list split at `c`; false (reported) when a name is bad.
 bool readAddNodes(const BuildContext& ctx, ControlNodeOptions& o)
 {
@@ -56,10 +77,10 @@ std::optional<ControlNodeOptions> readControlNodes(const BuildContext& ctx)
         o.flipOrient = ctx.optionBool("flip_orient");
     if (declares(ctx, "rotate_order")) {
         const std::string text = ctx.optionString("rotate_order");
-        if (const auto order = model::parseRotateOrder(text)) {
+        if (const auto order = model::parseRotateOrder(text == "auto" ? autoRotateOrder(ctx) : text)) {
             o.rotateOrder = *order;
         } else {
-            ctx.error("'" + text + "' is no rotate order (xyz, yzx, zxy, xzy, yxz, zyx)", "rotate_order");
+            ctx.error("'" + text + "' is no rotate order (xyz, yzx, zxy, xzy, yxz, zyx, auto)", "rotate_order");
             ok = false;
         }
     }

@@ -23,7 +23,7 @@ $C add $G digit.hand --under arm:hand --name hand --set isolate_skin=on
 $C add $G digit.finger --under hand --name claw --at 0.01,-0.025,0 --set base=off --set number=3 --set length=0.08 \
   --set fist=25 --set parent_scale=on --set flip_orient=on --set add_nodes=[inf] --set isolate_skin=on
 $C add $G digit.finger --under hand --name pincer --at 0.01,-0.065,0 --set base=off --set number=3 --set length=0.08 \
-  --set fist=25 --set orient=auto --set aim_axis=y --set up_axis=x --set up_auto=on --set rotate_order=yzx --set isolate_skin=on
+  --set fist=25 --set orient=auto --set aim_axis=y --set up_axis=x --set up_auto=on --set rotate_order=auto --set isolate_skin=on
 $C add $G core.joints --under neck --name antenna --at 0.08,0.2,-0.03 --set "branches=[L, R]" --set number=3 \
   --set length=0.08 --set orient=auto --set up_auto=on --set "up_dir=[1, 0, 0]" --set flip_orient=on --set isolate_skin=on
 $C add $G core.joints --under spine --name hose --at 0,-0.05,-0.15 --set number=4 --set length=0.1 --set orient=auto \
