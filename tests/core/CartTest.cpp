@@ -7,7 +7,7 @@
 // axle the path it takes (roll path), with a roll_jump of 1.5 m that a
 // runaway cart's step of a frame stays under and a snap along the track does not.
 // Where a test shows what an option changes, it builds the cart with that
-// option at its default beside it (cartWith).
+// option at its default beside it (test::sampleWith).
 #include "EvalTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -54,19 +54,6 @@ void push(PosedRig& r, Pose& pose, const std::string& control, const std::string
     }
 }
 
-// The cart sample with `option` set to `value` on the instances `names`.
-model::GuideDocument cartWith(std::initializer_list<const char*> names, const std::string& option, Value value)
-{
-    model::GuideDocument guide = test::loadSample("cart");
-    for (const char* name : names) {
-        const model::TemplateInstance* instance = guide.instanceNamed(name);
-        EXPECT_TRUE(instance) << name;
-        if (instance)
-            guide.instance(instance->id)->options[option] = value;
-    }
-    return guide;
-}
-
 TEST(Cart, PushingTheCartOneMetreAlongItsRailsRollsEachWheelOneOverItsRadius)
 {
     PosedRig r("cart");
@@ -102,7 +89,7 @@ TEST(Cart, TheMoveControlPlacesTheCartOnTheTrackWithoutRollingItsWheelsAndTheCha
     for (const std::string wheel : kWheels)
         EXPECT_LT(turnError(rollOf(r, wheel), 0.5 / kRadius), 1e-9) << wheel << " rolled " << rollOf(r, wheel);
 
-    PosedRig ground(cartWith({"wheel_front", "wheel_back"}, "hook", Value(std::string("ground"))));
+    PosedRig ground(test::sampleWith("cart", {"wheel_front", "wheel_back"}, "hook", Value(std::string("ground"))));
     ASSERT_TRUE(ground.ok());
     Pose groundPose = ground.defaults();
     push(ground, groundPose, kMove, "tz", 0.5, 10);
@@ -134,7 +121,7 @@ TEST(Cart, ARunawayCartsStepOfAFrameRollsTheBackWheelsAndASnapAlongTheTrackDoesN
         EXPECT_LT(turnError(rollOf(r, wheel), 1.5 / kRadius), 1e-9) << wheel << " rolled " << rollOf(r, wheel);
 
     // At the default roll_jump (one circumference) the runaway step is a jump.
-    PosedRig circumference(cartWith({"wheel_back"}, "roll_jump", Value(0.0)));
+    PosedRig circumference(test::sampleWith("cart", {"wheel_back"}, "roll_jump", Value(0.0)));
     ASSERT_TRUE(circumference.ok());
     Pose defaultPose = circumference.defaults();
     push(circumference, defaultPose, kChassis, "tz", 0.1, 2);
@@ -174,7 +161,7 @@ TEST(Cart, AGamePropAtAFixedScaleHasNoScaleControl)
     }
     EXPECT_EQ(scaled, 12) << "the four banks flatten their tyres";
 
-    PosedRig scaling(cartWith({"world"}, "do_scale", Value(true)));
+    PosedRig scaling(test::sampleWith("cart", {"world"}, "do_scale", Value(true)));
     ASSERT_TRUE(scaling.ok());
     const auto scale = scaling.rig.findPath("world::ctrls.scale");
     ASSERT_TRUE(scale) << "world.prop's default has one";

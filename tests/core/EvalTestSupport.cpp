@@ -22,6 +22,19 @@ model::GuideDocument bipedLimbsWith(const std::map<std::string, Value>& options)
     return guide;
 }
 
+model::GuideDocument sampleWith(const std::string& sample, std::initializer_list<const char*> instances,
+                                const std::string& option, Value value)
+{
+    model::GuideDocument guide = loadSample(sample);
+    for (const char* name : instances) {
+        const model::TemplateInstance* instance = guide.instanceNamed(name);
+        EXPECT_TRUE(instance) << sample << " has no instance " << name;
+        if (instance)
+            guide.instance(instance->id)->options[option] = value;
+    }
+    return guide;
+}
+
 model::TemplateInstance addInstance(model::GuideDocument& doc, const std::string& templateId, model::JointId under,
                                     const std::map<std::string, Value>& options)
 {

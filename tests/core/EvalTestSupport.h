@@ -21,6 +21,11 @@ model::TemplateInstance addInstance(model::GuideDocument& doc, const std::string
 // sides: the L/R branches are one instance each).
 model::GuideDocument bipedLimbsWith(const std::map<std::string, Value>& options);
 
+// The sample `sample` with `option` set to `value` on the instances named `instances` (a missing name fails the
+// test that asks for it).
+model::GuideDocument sampleWith(const std::string& sample, std::initializer_list<const char*> instances,
+                                const std::string& option, Value value);
+
 class PosedRig {
 public:
     explicit PosedRig(const std::string& sample);

@@ -17,15 +17,6 @@ namespace {
 using eval::Pose;
 using test::PosedRig;
 
-model::GuideDocument sampleWith(const std::string& sample, const std::string& instance, const std::string& option, Value value)
-{
-    model::GuideDocument guide = test::loadSample(sample);
-    for (const auto& i : guide.instances())
-        if (i.name == instance)
-            guide.instance(i.id)->options[option] = value;
-    return guide;
-}
-
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 // Every skin and blend joint of a limb: what the animator sees move.
@@ -207,7 +198,7 @@ TEST(LimbRig, TheClawsSoftIkKeepsItsBentRestPoseAndEasesTheElbowThroughFullReach
 
 TEST(LimbRig, StretchReachesAGoalBeyondReachAndVolumeScalesAcrossByOneOverRootStretch)
 {
-    PosedRig r(sampleWith("biped", "arm", "volume", true));
+    PosedRig r(test::sampleWith("biped", {"arm"}, "volume", true));
     for (const std::string limb : {"arm.L", "arm.R"}) {
         const std::string ik = limb + "::ctrls.ik";
         EXPECT_EQ(r.defaults()[r.channel(ik, "volume")], 1.0) << "the option sets the attribute's default";
@@ -298,7 +289,7 @@ TEST(LimbRig, FootRollAndBankKeepThePlantedPivotFixedInWorldSpace)
 
 TEST(LimbRig, AutoClavicleFollowsTheIkArmsRaiseByItsShareOnlyInIk)
 {
-    PosedRig r(sampleWith("biped", "arm", "auto_clavicle", 0.5));
+    PosedRig r(test::sampleWith("biped", {"arm"}, "auto_clavicle", 0.5));
     for (const std::string arm : {"arm.L", "arm.R"}) {
         const std::string clavicle = arm + "::ctrls.clavicle", ik = arm + "::ctrls.ik";
         EXPECT_EQ(r.defaults()[r.channel(clavicle, "auto_clavicle")], 0.5) << "the option sets the default";

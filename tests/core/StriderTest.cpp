@@ -6,7 +6,7 @@
 // attributes), no blend joints at the bends, no twist joints and no twist
 // flesh (non_rolling off: the thigh's skin joint turns with the thigh). Where a
 // test shows what an option changes, it builds the strider with that option at
-// its default beside it (striderWith).
+// its default beside it (test::sampleWith).
 #include "EvalTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -22,21 +22,7 @@ namespace {
 using eval::Pose;
 using test::PosedRig;
 
-constexpr const char* kLegInstances[] = {"front_leg", "hind_leg"};
 const std::string kLegs[] = {"front_leg.L", "front_leg.R", "hind_leg.L", "hind_leg.R"};
-
-// The strider sample with `option` set to `value` on both leg instances.
-model::GuideDocument striderWith(const std::string& option, Value value)
-{
-    model::GuideDocument guide = test::loadSample("strider");
-    for (const char* name : kLegInstances) {
-        const model::TemplateInstance* instance = guide.instanceNamed(name);
-        EXPECT_TRUE(instance) << name;
-        if (instance)
-            guide.instance(instance->id)->options[option] = value;
-    }
-    return guide;
-}
 
 std::size_t countPrefixed(const model::Rig& rig, const std::string& prefix)
 {
@@ -115,7 +101,7 @@ TEST(Strider, TheToeTipsStandOnTheGroundWithTheLegsBentShortOfReach)
 // the strider with stretch on lengthens them.
 TEST(Strider, ALegPulledPastReachKeepsEachSegmentItsRestLength)
 {
-    PosedRig r("strider"), stretchy(striderWith("stretch", Value(true)));
+    PosedRig r("strider"), stretchy(test::sampleWith("strider", {"front_leg", "hind_leg"}, "stretch", Value(true)));
     ASSERT_TRUE(r.ok());
     ASSERT_TRUE(stretchy.ok());
     for (const std::string& leg : kLegs) {
@@ -153,7 +139,7 @@ TEST(Strider, ALegPulledPastReachKeepsEachSegmentItsRestLength)
 // it. With reverse_lock on the same control carries the foot's roll attributes.
 TEST(Strider, TheLegEndsOnItsIkControlWithNoFootToRoll)
 {
-    PosedRig r("strider"), footed(striderWith("reverse_lock", Value(true)));
+    PosedRig r("strider"), footed(test::sampleWith("strider", {"front_leg", "hind_leg"}, "reverse_lock", Value(true)));
     ASSERT_TRUE(r.ok());
     ASSERT_TRUE(footed.ok());
     for (const std::string& leg : kLegs) {
@@ -187,7 +173,7 @@ TEST(Strider, TheLegEndsOnItsIkControlWithNoFootToRoll)
 // blend_joints on the same legs get them.
 TEST(Strider, TheSkinHasOneJointPerSegmentAndNoBlendOrTwistJoints)
 {
-    PosedRig r("strider"), blended(striderWith("blend_joints", Value(true)));
+    PosedRig r("strider"), blended(test::sampleWith("strider", {"front_leg", "hind_leg"}, "blend_joints", Value(true)));
     ASSERT_TRUE(r.ok());
     ASSERT_TRUE(blended.ok());
     for (const std::string& leg : kLegs) {
@@ -204,7 +190,7 @@ TEST(Strider, TheSkinHasOneJointPerSegmentAndNoBlendOrTwistJoints)
 // would hold the thigh's skin joint back.
 TEST(Strider, TheThighSkinJointRollsWithTheThigh)
 {
-    PosedRig r("strider"), flesh(striderWith("non_rolling", Value(true)));
+    PosedRig r("strider"), flesh(test::sampleWith("strider", {"front_leg", "hind_leg"}, "non_rolling", Value(true)));
     ASSERT_TRUE(r.ok());
     ASSERT_TRUE(flesh.ok());
     for (PosedRig* rig : {&r, &flesh}) {

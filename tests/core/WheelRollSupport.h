@@ -49,10 +49,7 @@ inline void drive(PosedRig& r, Pose& pose, const std::string& channel, double to
 
 inline model::GuideDocument vehicleWith(const std::string& option, Value value)
 {
-    model::GuideDocument guide = test::loadSample("vehicle");
-    for (const char* name : {"wheel_front", "wheel_back"})
-        guide.instance(guide.instanceNamed(name)->id)->options[option] = value;
-    return guide;
+    return test::sampleWith("vehicle", {"wheel_front", "wheel_back"}, option, value);
 }
 
 } // namespace rs::test::wheelroll
