@@ -63,15 +63,19 @@ TEST(SplineControlNodes, PoseGroupAndAddedNodesSitAroundEachControlAndChangeNoMo
     // The fk control's skin joint hangs under its last group.
     EXPECT_EQ(rig.nodes[test::node(rig, at("skin.3")).parent].key, test::node(rig, at("nodes.dyn.fk.3")).key);
     // The same tail at rest and posed.
-    for (const model::RigNode& node : plain.rig.nodes)
-        if (node.key.tag.rfind("skin.", 0) == 0)
+    for (const model::RigNode& node : plain.rig.nodes) {
+        if (node.key.tag.rfind("skin.", 0) == 0) {
             EXPECT_LT(maxAbsDifference(node.worldMatrix, test::node(rig, node.path).worldMatrix), 1e-12) << node.path;
+        }
+    }
     plain.evaluate(posed(plain));
     stacked.evaluate(posed(stacked));
-    for (const model::RigNode& node : plain.rig.nodes)
-        if (node.key.tag.rfind("skin.", 0) == 0 || node.key.tag.rfind("ctrls.", 0) == 0)
+    for (const model::RigNode& node : plain.rig.nodes) {
+        if (node.key.tag.rfind("skin.", 0) == 0 || node.key.tag.rfind("ctrls.", 0) == 0) {
             EXPECT_LT(maxAbsDifference(plain.state().worldMatrix(plain.index(node.path)),
                                        stacked.state().worldMatrix(stacked.index(node.path))), 1e-9) << node.path;
+        }
+    }
 }
 
 // flip_orient: the curve follows a group with the mirror frame under each

@@ -22,6 +22,7 @@ namespace {
 using eval::Pose;
 using test::PosedRig;
 
+constexpr const char* kLegInstances[] = {"front_leg", "hind_leg"};
 const std::string kLegs[] = {"front_leg.L", "front_leg.R", "hind_leg.L", "hind_leg.R"};
 
 std::size_t countPrefixed(const model::Rig& rig, const std::string& prefix)
