@@ -7,6 +7,7 @@
 
 #include <QDialog>
 #include <QFile>
+#include <QRegularExpression>
 #include <QTextBrowser>
 #include <QTextDocument>
 #include <QToolButton>
@@ -67,6 +68,30 @@ TEST(TemplateHelp, EveryTemplateHasAPageWithWhatItBuildsAPictureAndItsHooks)
         for (const auto& opt : manifest->opts)
             EXPECT_TRUE(page.markdown.contains("`" + QString::fromStdString(opt.name) + "`")) << opt.name;
         page.picture.save(QString::fromStdString(outputPath("template-" + manifest->id + ".png")));
+    }
+}
+
+// The page's option table comes from the manifest; its "What it builds" text is written by hand. Every option
+// must be named there (`name` or `name: value`), in the common options, or in the section of a template the
+// text refers to by id ("as on `arm.limb`"), so a rigger reading the page learns what each option does.
+TEST(TemplateHelp, EveryOptionIsNamedInItsReadmeSectionOrOneItRefersTo)
+{
+    Editor e;
+    const auto& registry = e.window.session().templates();
+    const QString readme = templatesReadme();
+    const QString common = app::readmeSection(readme, "Common options");
+    ASSERT_FALSE(common.isEmpty());
+    for (const templates::TemplateManifest* manifest : registry.all()) {
+        SCOPED_TRACE(manifest->id);
+        const QString own = app::readmeSection(readme, manifest->id);
+        QString text = own + "\n" + common;
+        for (const templates::TemplateManifest* other : registry.all())
+            if (other != manifest && own.contains(QString::fromStdString(other->id)))
+                text += "\n" + app::readmeSection(readme, other->id);
+        for (const templates::Parameter& opt : manifest->opts) {
+            const QRegularExpression named("`" + QRegularExpression::escape(QString::fromStdString(opt.name)) + "[`:]");
+            EXPECT_TRUE(text.contains(named)) << "templates/README.md does not say what `" << opt.name << "` does";
+        }
     }
 }
 
