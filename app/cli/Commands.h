@@ -13,6 +13,7 @@ int runCheckTemplates(const std::vector<std::string>& args);
 int runDescribeTemplate(const std::vector<std::string>& args);
 int runNew(const std::vector<std::string>& args);
 int runAdd(const std::vector<std::string>& args);
+int runJoint(const std::vector<std::string>& args);
 int runShapeIcons(const std::vector<std::string>& args);
 int runSkin(const std::vector<std::string>& args);
 // skin export / import / transfer / info (args[0] is the sub-command).

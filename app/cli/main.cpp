@@ -24,6 +24,8 @@ int main(int argc, char** argv)
         return rs::cli::runNew(args);
     if (command == "add")
         return rs::cli::runAdd(args);
+    if (command == "joint")
+        return rs::cli::runJoint(args);
     if (command == "shape-icons")
         return rs::cli::runShapeIcons(args);
     if (command == "skin")

@@ -61,9 +61,10 @@ TEST(Strider, SampleBuildsWithoutDiagnostics)
     EXPECT_TRUE(r.rig.diagnostics.empty()) << formatAll(r.rig.diagnostics);
 }
 
-// At rest the toe tips touch the ground and the legs are bent, short of full
-// reach: the default pose is the rest pose (nothing pops), and raising the hull
-// 3 cm still leaves every leg's end on its planted IK control.
+// At rest the toe tips touch the ground and the legs are bent like a
+// mechanical walker's (stifle forward, hock back), at most 85% of full reach:
+// the default pose is the rest pose (nothing pops), and raising the hull 10 cm
+// still leaves every leg's end on its planted IK control, the hip risen with it.
 TEST(Strider, TheToeTipsStandOnTheGroundWithTheLegsBentShortOfReach)
 {
     const model::GuideDocument guide = test::loadSample("strider");
@@ -86,13 +87,19 @@ TEST(Strider, TheToeTipsStandOnTheGroundWithTheLegsBentShortOfReach)
         const Vec3 fetlock = r.restPosition(leg + "::blend.3");
         const double reach = glm::length(stifle - hip) + glm::length(fetlock - stifle);
         EXPECT_LT(glm::length(fetlock - hip), reach - 0.03) << leg << ": bent at rest";
+        EXPECT_LE(glm::length(fetlock - hip) / reach, 0.85) << leg << ": the hip to the fetlock over full reach";
+        // The zig-zag: the stifle in front of the hip-to-fetlock line, the hock behind it.
+        const Vec3 hock = r.restPosition(leg + "::blend.2");
+        EXPECT_GT(stifle.z, hip.z + 0.15) << leg;
+        EXPECT_LT(hock.z, stifle.z - 0.15) << leg;
+        EXPECT_LT(hock.z, fetlock.z - 0.02) << leg;
     }
     Pose raised = rest;
-    raised[r.channel("hull::ctrls.xform", "ty")] += 0.03;
+    raised[r.channel("hull::ctrls.xform", "ty")] += 0.10;
     r.evaluate(raised);
     for (const std::string& leg : kLegs) {
         EXPECT_LT(glm::length(r.position(leg + "::blend.3") - r.restPosition(leg + "::blend.3")), 1e-6) << leg << " stays planted";
-        EXPECT_NEAR(r.position(leg + "::blend.0").y - r.restPosition(leg + "::blend.0").y, 0.03, 1e-9) << leg;
+        EXPECT_NEAR(r.position(leg + "::blend.0").y - r.restPosition(leg + "::blend.0").y, 0.10, 1e-9) << leg;
     }
 }
 
