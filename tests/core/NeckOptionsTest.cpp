@@ -137,7 +137,7 @@ Pose headBent(PosedRig& r, double degrees)
 {
     Pose pose = r.defaults();
     const Mat3 rest = worldRotation(r, "neck::ctrls.head");
-    pose[r.channel("neck::ctrls.head", "rz")] = degrees;
+    pose[r.channel("neck::ctrls.head", "rx")] = degrees; // nods (head_orient world: about the side axis, X)
     r.evaluate(pose);
     const Mat3 turn = worldRotation(r, "neck::ctrls.head") * glm::transpose(rest);
     const Vec3 base = r.restPosition("neck::drv.0"), head = r.restPosition("neck::ctrls.head");
@@ -170,9 +170,9 @@ TEST(NeckRig, RigidityAtTheHeadBendsTheNeckUpToTheHeadOrNot)
     EXPECT_EQ(r.defaults()[r.channel("neck::ctrls.head", "rigidity_dn")], 1.0);
     const int up = r.channel("neck::ctrls.head", "rigidity_up");
     EXPECT_EQ(r.defaults()[up], 0.0) << "Mikan's default: free at the head";
-    // The head only turns: a free end ignores it, a rigid one bends the neck to it.
+    // The head only nods: a free end ignores it, a rigid one bends the neck to it.
     Pose pose = r.defaults();
-    pose[r.channel("neck::ctrls.head", "rz")] = 40.0;
+    pose[r.channel("neck::ctrls.head", "rx")] = 40.0;
     r.evaluate(pose);
     EXPECT_LT(glm::length(r.position(skin(1)) - r.restPosition(skin(1))), 1e-9);
     pose[up] = 1.0;

@@ -30,6 +30,22 @@ Mat4 axisTurn(const ChainOrient& axes)
 
 const std::vector<std::string> kHeadSpaces = {"neck", "chest", "cog", "world"};
 
+// head_orient: the head controller's frame at the head joint. `world` is
+// axis-aligned (ry turns the head left and right, as on the COG and the
+// chest), `joint` the head joint's own frame, `copy` the head guide's
+// orientation as the rigger gave it (arm.limb's ik_orient, for the head).
+Mat4 headControlFrame(const BuildContext& ctx, const Mat4& jointFrame, model::JointId headGuide)
+{
+    const std::string orient = ctx.optionString("head_orient");
+    Mat4 frame = jointFrame;
+    if (orient == "world")
+        frame = kit::uprightFrame(kit::positionOf(jointFrame));
+    else if (orient == "copy")
+        frame = rigidFrame(ctx.guideWorldMatrix(headGuide));
+    frame[3] = jointFrame[3];
+    return frame;
+}
+
 class NeckBuilder final : public TemplateBuilder {
 public:
     std::vector<GuideJointSpec> createGuide(const templates::TemplateManifest&,
@@ -85,23 +101,33 @@ public:
                                                ctx.nodeName(model::NameRole::Group, "head_point_space"), parent, frames[head], chain[head]);
         const auto spaceGroup = ctx.createNode(RigNodeKind::Group, "spaces.head", ctx.nodeName(model::NameRole::Group, "head_space"),
                                                pointGroup, frames[head], chain[head]);
-        const kit::Control headControl = kit::addControl(ctx, "head", "head", {}, spaceGroup, frames[head], chain[head]);
+        const Mat4 headFrame = headControlFrame(ctx, frames[head], chain[head]);
+        const kit::Control headControl = kit::addControl(ctx, "head", "head", {}, spaceGroup, headFrame, chain[head]);
         // The head turns on the neck; on a spline neck it also goes where the
         // animator puts it (the neck bends and stretches to follow).
         kit::animate(ctx, headControl, spline ? kit::kTranslate | kit::kRotate : kit::kRotate);
-        const auto headCtrl = headControl.ctrl;
+        // What the head controller drives keeps the head joint's frame: with
+        // head_orient other than `joint`, a group in that frame under the
+        // controller carries the head joint, the spline's end (whose axis
+        // rigidity reads), the hooks and the head space, so only the
+        // controller's channels change.
+        const RigNodeIndex headCtrl = headControl.ctrl;
+        RigNodeIndex headDriver = headCtrl;
+        if (headFrame != frames[head])
+            headDriver = ctx.createNode(RigNodeKind::Group, "mch.follow.head", ctx.markedName("follow", "head"), headCtrl, frames[head],
+                                        chain[head]);
         if (spline) {
             // The spline reads its base's axes: with aim_axis / up_axis it
             // follows a group in the neck's own frame under the first control.
             RigNodeIndex base = fk.front();
             if (orient && turn != Mat4(1.0))
                 base = ctx.createNode(RigNodeKind::Group, "mch.follow.fk.0", ctx.markedName("follow", "", 1), base, frames[0], chain[0]);
-            addSplineNeck(ctx, chain, points, frames, side, {base, headCtrl});
+            addSplineNeck(ctx, chain, points, frames, side, headCtrl, {base, headDriver});
         }
-        kit::addSkin(ctx, "head", "head", {}, headCtrl, frames[head], chain[head]);
-        ctx.setHook(chain[head], headCtrl);
-        ctx.setHook(chain.back(), headCtrl);
-        ctx.defineSpace("head", headCtrl);
+        kit::addSkin(ctx, "head", "head", {}, headDriver, frames[head], chain[head]);
+        ctx.setHook(chain[head], headDriver);
+        ctx.setHook(chain.back(), headDriver);
+        ctx.defineSpace("head", headDriver);
     }
 
     void configure(BuildContext& ctx) const override
@@ -119,17 +145,18 @@ public:
     }
 
 private:
-    // The spline from the neck's base control to the head (targets) carries
+    // The spline from the neck's base control to the head (targets: the head
+    // controller or the group in the head joint's frame under it) carries
     // the neck joints: the neck bends and stretches to wherever the head goes
     // (the other neck controls carry the head in neck space). Its stretch,
-    // stretch mode and end rigidities are the head control's attributes and
-    // the instance's options; with `bones` the skin joints ride on a chain of
-    // their own along it, spread by bones_length.
+    // stretch mode and end rigidities are attributes of `headCtrl` (the head
+    // controller) and the instance's options; with `bones` the skin joints
+    // ride on a chain of their own along it, spread by bones_length.
     static void addSplineNeck(BuildContext& ctx, const std::vector<model::JointId>& chain, const std::vector<Vec3>& points,
-                              const std::vector<Mat4>& frames, const Vec3& side, const std::vector<RigNodeIndex>& targets)
+                              const std::vector<Mat4>& frames, const Vec3& side, RigNodeIndex headCtrl,
+                              const std::vector<RigNodeIndex>& targets)
     {
         const std::size_t head = chain.size() - 2;
-        const RigNodeIndex headCtrl = targets.back();
         const auto bones = static_cast<std::size_t>(std::max(0LL, ctx.optionInt("bones")));
         model::SplineConstraint settings{.stretch = ctx.addAttribute(headCtrl, "stretch", ctx.optionBool("default_stretch") ? 1.0 : 0.0, 0.0, 1.0)};
         settings.scaleStretch = ctx.optionString("stretch_mode") == "scale";

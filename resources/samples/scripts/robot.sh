@@ -12,7 +12,7 @@ $C new $G --name robot
 $C add $G world.character --name world --set isolate_skin=on
 $C add $G spine.torso --under world --name spine --set isolate_skin=on
 $C add $G neck.head --under spine --name neck --set spline=off --set space_switch=off --set orient_neck=off \
-  --set isolate_skin=on
+  --set head_orient=joint --set isolate_skin=on
 $C add $G arm.limb --under spine --name arm --set clavicle=off --set twist_upper=0 --set twist_lower=0 \
   --set blend_joints=off --set stretch=off --set ik_orient=joint --set effector_plane=y --set ik_fk_visibility=off \
   --set ik_blend=0 --set isolate_skin=on --set non_rolling=off --set pin=off
