@@ -1,8 +1,10 @@
 // Space menus as an animator reads them (issue 22): a limb's IK control, pole
 // and first FK control offer only the spaces the rig has. On the strider (a
-// core.xform hull, no spine) the legs' menus leave out the cog, hips and chest,
-// each left-out space warned once per leg naming the instance, the option and
-// the control, instead of offering entries that silently followed the world.
+// core.xform hull, no spine) the legs' menus leave out the cog, hips and chest
+// instead of offering entries that silently followed the world; the sample
+// builds clean, since a space a template merely offers is not the rigger's
+// choice. A space the option picks and the rig lacks is warned, naming the
+// instance, the option and the control.
 // The biped, which has every space, keeps its full menus.
 #include "TestSupport.h"
 
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 namespace rs {
@@ -61,25 +64,19 @@ const Switch kStriderSwitches[] = {
     {"ctrls.fk.0", "fk_space", {"hips", "chest", "cog"}, {"parent", "world", "root"}},
 };
 
-TEST(LimbSpaceMenu, TheStridersLegsOfferOnlyItsSpacesAndWarnOncePerSpaceLeftOut)
+TEST(LimbSpaceMenu, TheStridersLegsOfferOnlyItsSpacesAndBuildClean)
 {
     const model::Rig rig = rigging::buildRig(test::loadSample("strider"), test::builtinTemplates());
-    std::size_t expected = 0;
     for (const std::string& leg : kStriderLegs)
         for (const Switch& s : kStriderSwitches) {
             const std::string id = leg + "::" + s.control;
             EXPECT_EQ(menuOf(rig, id), s.offered) << id;
             EXPECT_EQ(defaultOf(rig, id), 0.0) << id << ": the option's default space exists and stays the default";
-            for (const std::string& space : s.missing) {
-                const std::vector<std::string> parts = {"instance '" + leg + "' (quad.leg)", "'" + space + "' is not a space of this rig",
-                                                        "menu of " + test::node(rig, id).name, std::string("(option '") + s.option + "')"};
-                EXPECT_EQ(countMentioning(rig, parts), 1) << id << " " << space << "\n" << formatAll(rig.diagnostics);
-                ++expected;
-            }
+            for (const std::string& space : s.missing)
+                EXPECT_EQ(std::count(s.offered.begin(), s.offered.end(), space), 0) << id << " offers " << space;
         }
-    EXPECT_EQ(rig.diagnostics.size(), expected) << formatAll(rig.diagnostics);
-    for (const auto& d : rig.diagnostics)
-        EXPECT_EQ(d.severity, Severity::Warning) << d.message;
+    // Spaces the template offers and the rig lacks are not the rigger's choice: no warning.
+    EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     // The space constraint has one target per entry offered, so each entry follows what it names.
     for (const auto& c : rig.constraints)
         if (c.key.tag == "cns.ik_space")
@@ -98,6 +95,8 @@ TEST(LimbSpaceMenu, AMissingDefaultSpaceIsWarnedOnceAndTheMenuDefaultsToItsFirst
         EXPECT_EQ(menuOf(rig, id), (std::vector<std::string>{"world", "root"})) << id;
         EXPECT_EQ(defaultOf(rig, id), 0.0) << id << ": world, the first entry";
         EXPECT_EQ(countMentioning(rig, {"instance '" + leg + "'", "'chest'", "(option 'ik_space')"}), 1) << formatAll(rig.diagnostics);
+        EXPECT_EQ(countMentioning(rig, {"instance '" + leg + "'", "(option 'ik_space')"}), 1)
+            << "only the chosen space is warned\n" << formatAll(rig.diagnostics);
         EXPECT_EQ(countMentioning(rig, {"instance '" + leg + "'", "the default space 'chest' is not a space of this rig",
                                         "follows 'world' by default"}),
                   1)
@@ -139,10 +138,8 @@ TEST(LimbSpaceMenu, TheClawsArmsLeaveOutTheHeadItDoesNotHave)
     const model::Rig rig = rigging::buildRig(test::loadSample("claw"), test::builtinTemplates());
     for (const char* arm : {"arm.L", "arm.R"}) {
         EXPECT_EQ(menuOf(rig, std::string(arm) + "::ctrls.ik"), (std::vector<std::string>{"world", "root", "cog", "chest"})) << arm;
-        EXPECT_EQ(countMentioning(rig, {"instance '" + std::string(arm) + "'", "'head' is not a space of this rig"}), 1)
-            << formatAll(rig.diagnostics);
     }
-    EXPECT_EQ(rig.diagnostics.size(), 2u) << formatAll(rig.diagnostics);
+    EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
 }
 
 } // namespace

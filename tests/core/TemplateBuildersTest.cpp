@@ -63,8 +63,7 @@ class BuilderGolden : public testing::TestWithParam<std::string> {};
 TEST_P(BuilderGolden, BuildsTheDefaultGuideAsTheGoldenDump)
 {
     const model::Rig rig = rigging::buildRig(test::loadGuide("Builders/" + GetParam() + "/guide.yml"), test::builtinTemplates());
-    // Alone, a limb or a head lacks the spine's and the head's spaces: its menus leave them out, warned (kept in the golden).
-    EXPECT_TRUE(test::withoutMissingSpaceWarnings(rig.diagnostics).empty()) << formatAll(rig.diagnostics);
+    EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     EXPECT_LE(rig.virtualRoots("skin").size(), 1u);
     test::expectMatchesGolden(io::writeRigDump(rig), "Builders/" + GetParam() + "/rig.yml");
 }
@@ -76,10 +75,7 @@ class SampleGolden : public testing::TestWithParam<std::string> {};
 TEST_P(SampleGolden, BuildsWithoutDiagnosticsOneSkinRootAndUniqueNames)
 {
     const model::Rig rig = rigging::buildRig(test::loadSample(GetParam()), test::builtinTemplates());
-    // The claw (no head) and the strider (no spine) warn that their limbs' space menus leave those spaces out.
-    const bool lacksSpaces = GetParam() == "claw" || GetParam() == "strider";
-    EXPECT_TRUE((lacksSpaces ? test::withoutMissingSpaceWarnings(rig.diagnostics) : rig.diagnostics).empty())
-        << formatAll(rig.diagnostics);
+    EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     auto skeleton = model::extractSkeleton(rig);
     ASSERT_TRUE(skeleton.ok()) << formatAll(skeleton.diagnostics());
     std::set<std::string> names;

@@ -109,19 +109,4 @@ bool runWithFileSizeLimit(std::size_t limitBytes, const std::function<bool()>& w
     return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-bool isMissingSpaceWarning(const Diagnostic& d)
-{
-    return d.severity == Severity::Warning && d.message.find("is not a space of this rig, so the '") != std::string::npos &&
-           d.message.find("' menu of ") != std::string::npos;
-}
-
-Diagnostics withoutMissingSpaceWarnings(const Diagnostics& diagnostics)
-{
-    Diagnostics kept;
-    for (const Diagnostic& d : diagnostics)
-        if (!isMissingSpaceWarning(d))
-            kept.push_back(d);
-    return kept;
-}
-
 } // namespace rs::test

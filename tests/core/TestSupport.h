@@ -36,11 +36,5 @@ std::string refusal(const Status& status);
 bool runWithFileSizeLimit(std::size_t limitBytes, const std::function<bool()>& write);
 // A rig node by id; fails the test (and returns an empty node) when it is missing.
 const model::RigNode& node(const model::Rig& rig, const std::string& id);
-// `diagnostics` without the warnings that a space menu leaves out a space the
-// rig does not have (kit::addSpaceSwitch): a rig without a spine or a head
-// (the strider, the claw, a limb template built alone) reports those on purpose.
-Diagnostics withoutMissingSpaceWarnings(const Diagnostics& diagnostics);
-// Whether `d` is such a warning.
-bool isMissingSpaceWarning(const Diagnostic& d);
 
 } // namespace rs::test

@@ -237,11 +237,13 @@ void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNode
     for (std::size_t i = 0; i < spaces.size(); ++i) {
         const model::RigNodeIndex target = spaces[i].node != model::kNoNode ? spaces[i].node : ctx.space(spaces[i].name);
         if (target == model::kNoNode) {
-            ctx.warning(spaces[i].name == chosen
-                            ? "the default space '" + chosen + "' is not a space of this rig, so " + menu +
-                                  " leaves it out and the control follows '" + spaces.front().name + "' by default"
-                            : "'" + spaces[i].name + "' is not a space of this rig, so " + menu + " leaves it out",
-                        option);
+            // A space the template merely offers is left out quietly (a rig
+            // without a spine has no chest to follow); the one the option
+            // picks is the rigger's (or the template's) choice, so say so.
+            if (spaces[i].name == chosen)
+                ctx.warning("the default space '" + chosen + "' is not a space of this rig, so " + menu +
+                                " leaves it out and the control follows '" + spaces.front().name + "' by default",
+                            option);
             continue;
         }
         if (spaces[i].name == chosen)

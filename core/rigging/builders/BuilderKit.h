@@ -68,9 +68,9 @@ model::RigNodeIndex addSetup(BuildContext& ctx, model::RigNodeKind kind, const s
 // A space switch: `group` (the control's offset parent) follows one of
 // `spaces` (named spaces of the rig; entry 0 is `first`, the group's own
 // parent), chosen by an enum attribute "space" on `control` whose default is
-// the option `option`. A space missing from this rig is not offered: a
-// warning (on the option, naming the control and the space) says it is left
-// out, and when it is the option's default the switch defaults to `first`.
+// the option `option`. A space missing from this rig is not offered; when it
+// is the option's value, a warning (on the option, naming the control and the
+// space) says so and the switch defaults to `first`.
 // orientOnly keeps the position from the parent.
 // `attribute` names the enum attribute when a control has two switches.
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
