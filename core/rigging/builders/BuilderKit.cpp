@@ -227,20 +227,27 @@ void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNode
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
                     const std::string& tag, const std::vector<Space>& spaces, bool orientOnly, const std::string& attribute)
 {
+    // Only the spaces this rig has are offered: an entry that resolved to
+    // nothing would follow entry 0 while the menu said otherwise.
     const std::string chosen = ctx.optionString(option);
+    const std::string menu = "the '" + attribute + "' menu of " + ctx.node(control).name;
     std::vector<model::RigNodeIndex> targets;
     std::vector<std::string> labels;
     int index = 0;
     for (std::size_t i = 0; i < spaces.size(); ++i) {
-        model::RigNodeIndex target = spaces[i].node != model::kNoNode ? spaces[i].node : ctx.space(spaces[i].name);
+        const model::RigNodeIndex target = spaces[i].node != model::kNoNode ? spaces[i].node : ctx.space(spaces[i].name);
         if (target == model::kNoNode) {
+            // A space the template merely offers is left out quietly (a rig
+            // without a spine has no chest to follow); the one the option
+            // picks is the rigger's (or the template's) choice, so say so.
             if (spaces[i].name == chosen)
-                ctx.warning(option + " '" + chosen + "' is not a space of this rig; it follows '" + spaces.front().name + "'",
+                ctx.warning("the default space '" + chosen + "' is not a space of this rig, so " + menu +
+                                " leaves it out and the control follows '" + spaces.front().name + "' by default",
                             option);
-            target = spaces.front().node;
+            continue;
         }
         if (spaces[i].name == chosen)
-            index = int(i);
+            index = int(targets.size());
         targets.push_back(target);
         labels.push_back(spaces[i].name);
     }

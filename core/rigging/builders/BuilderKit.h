@@ -68,15 +68,17 @@ model::RigNodeIndex addSetup(BuildContext& ctx, model::RigNodeKind kind, const s
 // A space switch: `group` (the control's offset parent) follows one of
 // `spaces` (named spaces of the rig; entry 0 is `first`, the group's own
 // parent), chosen by an enum attribute "space" on `control` whose default is
-// the option `option`. A space missing from this rig falls back to `first`
-// (warned when it is the default). orientOnly keeps the position from the parent.
+// the option `option`. A space missing from this rig is not offered; when it
+// is the option's value, a warning (on the option, naming the control and the
+// space) says so and the switch defaults to `first`.
+// orientOnly keeps the position from the parent.
 // `attribute` names the enum attribute when a control has two switches.
 void addSpaceSwitch(BuildContext& ctx, model::RigNodeIndex group, model::RigNodeIndex control, const std::string& option,
                     const std::string& tag, model::RigNodeIndex first, const std::vector<std::string>& spaces, bool orientOnly,
                     const std::string& attribute = "space");
 // The same with the instance's own spaces: each entry names a space and gives
 // its node, or kNoNode for the rig's named space of that name; entry 0 must
-// have a node, and is what a space missing from the rig falls back to.
+// have a node, and is the default when the option's space is missing.
 struct Space {
     std::string name;
     model::RigNodeIndex node = model::kNoNode;

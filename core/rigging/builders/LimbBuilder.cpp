@@ -160,6 +160,14 @@ void LimbBuilder::bendOf(const BuildContext& ctx, const LimbGuide& g, Vec3& norm
         normal = -normal;
 }
 
+// Where the pole and the switch control sit, as shares of the limb's chain
+// length (limb1 to limbK). The pole: three quarters of it out from the elbow or
+// knee. The switch: beside the wrist or ankle, 0.12 m on the biped's arm
+// (0.54 m) and leg (0.84 m), as when it was fixed in metres.
+constexpr double kPoleDistance = 0.75;
+constexpr double kArmSwitchDistance = 0.22;
+constexpr double kLegSwitchDistance = 0.14;
+
 // Spaces an IK control can follow: the world first, then the rig's named spaces.
 const std::vector<std::string> kArmSpaces = {"world", "root", "cog", "chest", "head"};
 // A front leg on a quadruped's chest follows the chest.
@@ -222,7 +230,8 @@ void LimbBuilder::generate(BuildContext& ctx) const
     double chainLength = 0.0;
     for (std::size_t i = 1; i < k; ++i)
         chainLength += glm::length(g.points[i] - g.points[i - 1]);
-    const Mat4 poleFrame = kit::uprightFrame(g.points[1] + poleDirection * std::max(chainLength * 0.75, 0.05));
+    // Offsets are shares of the limb's own length, so a centimetre character's controls sit where a metre one's do.
+    const Mat4 poleFrame = kit::uprightFrame(g.points[1] + poleDirection * (chainLength * kPoleDistance));
     // The pole hangs under a space group that follows the space `pv_space` picks (configure()).
     const auto poleSpace = limb::addPoleSpaceGroups(ctx, world, limbGroup, ikCtrl, poleFrame, g.limb[1]);
     const auto poleCtrl = kit::addControl(ctx, "pole", "pole", {}, poleSpace, poleFrame, g.limb[1]).ctrl;
@@ -249,7 +258,8 @@ void LimbBuilder::generate(BuildContext& ctx) const
     }
     // The FK/IK blend lives on one switch controller, which rides on the limb's end (wrist or ankle), off the side away from the pole.
     Mat4 switchFrame = frames[k - 1];
-    switchFrame[3] = Vec4(g.points[k - 1] - poleDirection * 0.12, 1.0);
+    const double switchDistance = chainLength * (legLike() ? kLegSwitchDistance : kArmSwitchDistance);
+    switchFrame[3] = Vec4(g.points[k - 1] - poleDirection * switchDistance, 1.0);
     const auto settings = kit::addControl(ctx, "switch", "switch", {}, blend.back(), switchFrame, g.limb[k - 1]).ctrl;
     if (ctx.node(settings).kind == model::RigNodeKind::Controller)
         ctx.channels(settings).lock(0, model::ChannelSettings::kCount); // a settings holder: custom channels only

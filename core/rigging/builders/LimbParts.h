@@ -55,7 +55,8 @@ const std::vector<std::string>& fkSpaces(bool leg);
 // over `ikSpaces`, entry 0 the IK space group's parent), pole (`pv_space`) and
 // first FK control (`fk_space`, orient only: the FK chain keeps its place on
 // the clavicle or pelvis and takes its orientation from the space). Each is a
-// "space" enum on the control. With `space_switch` off none gets a switch: each
+// "space" enum on the control, offering only the spaces this rig has (the others
+// left out; kit::addSpaceSwitch). With `space_switch` off none gets a switch: each
 // follows the space its option names, fixed (nothing when that is its parent).
 void addSpaceSwitches(BuildContext& ctx, const std::vector<std::string>& ikSpaces, bool leg);
 

@@ -33,6 +33,9 @@ ReversePivots footPivots(const BuildContext& ctx, const Vec3& ankle, const Vec3&
     // Forward along the ground, side = the leg's bend axis flattened.
     Vec3 forward = toe - ankle;
     forward.y = 0.0;
+    // Untagged pivots sit by shares of the foot's length (ankle to toe, along the ground; straight when the toe is
+    // under the ankle), so they scale with the character: 5 and 4 cm on a 19 cm foot.
+    const double footLength = glm::length(forward) > 1e-9 ? glm::length(forward) : glm::length(toe - ankle);
     if (glm::length(forward) < 1e-6)
         forward = Vec3(0.0, 0.0, 1.0);
     forward = glm::normalize(forward);
@@ -51,9 +54,9 @@ ReversePivots footPivots(const BuildContext& ctx, const Vec3& ankle, const Vec3&
     p.end = ankle;
     p.ball = ball;
     p.toe = Vec3(toe.x, ground, toe.z);
-    p.heel = pivot("heel", Vec3(ankle.x, ground, ankle.z) - forward * 0.05);
-    p.bankInt = pivot("bank_int", Vec3(ball.x, ground, ball.z) - side * 0.04);
-    p.bankExt = pivot("bank_ext", Vec3(ball.x, ground, ball.z) + side * 0.04);
+    p.heel = pivot("heel", Vec3(ankle.x, ground, ankle.z) - forward * (0.26 * footLength));
+    p.bankInt = pivot("bank_int", Vec3(ball.x, ground, ball.z) - side * (0.21 * footLength));
+    p.bankExt = pivot("bank_ext", Vec3(ball.x, ground, ball.z) + side * (0.21 * footLength));
     p.forward = forward;
     p.up = Vec3(0.0, 1.0, 0.0);
     p.endJoint = ankleJoint;
