@@ -18,6 +18,7 @@
 #include "io/YamlText.h"
 
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <filesystem>
 #include <cstdio>
@@ -31,6 +32,23 @@ void print(const Diagnostics& diagnostics)
 {
     for (const auto& d : diagnostics)
         std::cerr << d.format() << '\n';
+}
+
+std::optional<Vec3> parseTriple(const std::string& command, const std::string& flag, const std::string& text, double limit,
+                                const char* unit)
+{
+    double x, y, z;
+    char tail;
+    if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3) {
+        std::cerr << "rigsmith-cli " << command << ": " << flag << " expects X,Y,Z, got '" << text << "'\n";
+        return std::nullopt;
+    }
+    if (!(std::abs(x) <= limit && std::abs(y) <= limit && std::abs(z) <= limit)) {
+        std::cerr << "rigsmith-cli " << command << ": " << flag << " wants finite values from -" << limit << " to " << limit
+                  << ' ' << unit << ", got '" << text << "'\n";
+        return std::nullopt;
+    }
+    return Vec3(x, y, z);
 }
 
 std::string usage()

@@ -2,6 +2,9 @@
 // rigsmith-cli sub-commands. Each returns the process exit code: 0 success,
 // 1 the input had errors, 2 bad usage.
 #include "base/Diagnostic.h"
+#include "base/Math.h"
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -23,6 +26,12 @@ int runSkinInfo(const std::vector<std::string>& args);
 int runSkinTransfer(const std::vector<std::string>& args);
 int runModel(const std::vector<std::string>& args);
 std::string usage();
+// Coordinates of --at / --move, in metres: finite and within a kilometre of the origin.
+constexpr double kMaxCoordinate = 1000.0;
+// "X,Y,Z" (the value of `flag` of `command`) with each number finite and
+// within +-limit, in `unit`; nullopt after printing why on stderr.
+std::optional<Vec3> parseTriple(const std::string& command, const std::string& flag, const std::string& text, double limit,
+                                const char* unit);
 // Diagnostics on stderr, one "file:line: severity: message" line each.
 void print(const Diagnostics& diagnostics);
 

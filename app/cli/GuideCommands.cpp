@@ -22,9 +22,6 @@ namespace rs::cli {
 
 namespace {
 
-// Coordinates of --at, in metres: finite and within a kilometre of the origin.
-constexpr double kMaxCoordinate = 1000.0;
-
 // "on", "3", "0.25", "[L, R]", "chest": the YAML scalar types options use.
 // Nullopt (with the reason) for a number that is not finite or does not fit.
 std::optional<Value> parseOptionValue(const std::string& text, std::string& error)
@@ -119,18 +116,9 @@ int runAdd(const std::vector<std::string>& args)
         if (a == "--under" && i + 1 < args.size()) under = args[++i];
         else if (a == "--name" && i + 1 < args.size()) { name = args[++i]; if (!isUtf8Argument("add", "--name", name)) return 2; }
         else if (a == "--at" && i + 1 < args.size()) {
-            double x, y, z;
-            char tail;
-            if (std::sscanf(args[++i].c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3) {
-                std::cerr << "rigsmith-cli add: --at expects X,Y,Z, got '" << args[i] << "'\n";
+            at = parseTriple("add", "--at", args[++i], kMaxCoordinate, "metres");
+            if (!at)
                 return 2;
-            }
-            if (!(std::abs(x) <= kMaxCoordinate && std::abs(y) <= kMaxCoordinate && std::abs(z) <= kMaxCoordinate)) {
-                std::cerr << "rigsmith-cli add: --at wants finite coordinates from -" << kMaxCoordinate << " to "
-                          << kMaxCoordinate << " metres, got '" << args[i] << "'\n";
-                return 2;
-            }
-            at = Vec3(x, y, z);
         } else if (a == "--set" && i + 1 < args.size()) {
             const std::string pair = args[++i];
             const auto eq = pair.find('=');

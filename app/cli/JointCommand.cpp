@@ -13,7 +13,6 @@
 #include "io/TemplateFolders.h"
 
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <optional>
 
@@ -21,8 +20,6 @@ namespace rs::cli {
 
 namespace {
 
-// Coordinates (metres) and their results within a kilometre of the origin, as add --at.
-constexpr double kMaxCoordinate = 1000.0;
 // Rotations in degrees, one turn either way.
 constexpr double kMaxDegrees = 360.0;
 
@@ -32,23 +29,6 @@ struct JointRequest {
     bool world = false; // --space world; parent (the guide file's local values) by default
     bool symmetric = false;
 };
-
-// "X,Y,Z" within +-limit; nullopt after printing why.
-std::optional<Vec3> parseTriple(const std::string& flag, const std::string& text, double limit, const char* unit)
-{
-    double x, y, z;
-    char tail;
-    if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3) {
-        std::cerr << "rigsmith-cli joint: " << flag << " expects X,Y,Z, got '" << text << "'\n";
-        return std::nullopt;
-    }
-    if (!(std::abs(x) <= limit && std::abs(y) <= limit && std::abs(z) <= limit)) {
-        std::cerr << "rigsmith-cli joint: " << flag << " wants finite values from -" << limit << " to " << limit << ' '
-                  << unit << ", got '" << text << "'\n";
-        return std::nullopt;
-    }
-    return Vec3(x, y, z);
-}
 
 // Nullopt (after the message) for bad usage.
 std::optional<JointRequest> parseRequest(const std::vector<std::string>& args)
@@ -60,7 +40,7 @@ std::optional<JointRequest> parseRequest(const std::vector<std::string>& args)
         const bool hasValue = i + 1 < args.size();
         std::optional<Vec3>* target = a == "--at" ? &r.at : a == "--move" ? &r.move : a == "--rotate" ? &r.rotate : nullptr;
         if (target && hasValue) {
-            *target = parseTriple(a, args[++i], a == "--rotate" ? kMaxDegrees : kMaxCoordinate,
+            *target = parseTriple("joint", a, args[++i], a == "--rotate" ? kMaxDegrees : kMaxCoordinate,
                                   a == "--rotate" ? "degrees" : "metres");
             if (!*target) return std::nullopt;
         } else if (a == "--space" && hasValue) {

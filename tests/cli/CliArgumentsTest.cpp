@@ -58,9 +58,9 @@ TEST(Cli, RefusesNonFiniteAndOutOfRangeNumbersInAdd)
         std::string message;
     };
     const std::vector<Case> cases = {
-        {{"--at", "nan,0,0"}, "--at wants finite coordinates"},
-        {{"--at", "0,inf,0"}, "--at wants finite coordinates"},
-        {{"--at", "0,0,1e300"}, "--at wants finite coordinates"},
+        {{"--at", "nan,0,0"}, "--at wants finite values"},
+        {{"--at", "0,inf,0"}, "--at wants finite values"},
+        {{"--at", "0,0,1e300"}, "--at wants finite values"},
         {{"--set", "length=nan"}, "--set length: 'nan' is not a finite number"},
         {{"--set", "length=-Infinity"}, "--set length: '-Infinity' is not a finite number"},
         {{"--set", "length=1e400"}, "--set length: '1e400' is out of range"},

@@ -78,9 +78,11 @@ TEST(LimbSpaceMenu, TheStridersLegsOfferOnlyItsSpacesAndBuildClean)
     // Spaces the template offers and the rig lacks are not the rigger's choice: no warning.
     EXPECT_TRUE(rig.diagnostics.empty()) << formatAll(rig.diagnostics);
     // The space constraint has one target per entry offered, so each entry follows what it names.
-    for (const auto& c : rig.constraints)
-        if (c.key.tag == "cns.ik_space")
+    for (const auto& c : rig.constraints) {
+        if (c.key.tag == "cns.ik_space") {
             EXPECT_EQ(c.targets.size(), 2u) << c.key.tag;
+        }
+    }
 }
 
 TEST(LimbSpaceMenu, AMissingDefaultSpaceIsWarnedOnceAndTheMenuDefaultsToItsFirstEntry)
